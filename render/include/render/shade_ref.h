@@ -1,0 +1,37 @@
+/* CPU reference of the renderer's formulas: the tests compare the GPU against these, and the
+ * ground-truth tracer (render/ref) shades with them. RENDERING.md sections 1 and 9-HDR. */
+#ifndef RENDER_SHADE_REF_H
+#define RENDER_SHADE_REF_H
+
+#include "render/render.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* max(N.H, 0)^n with pow(0, 0) = 1, n <= 0 treated as 0, finite for n up to 1e6. */
+float rd_ref_blinn_phong_power(float n_dot_h, float n);
+
+/* Direction to the light L and the factor (attenuation x spot cone) at point p. */
+void rd_ref_light_incidence(const rd_light *light, const float p[3], const float n[3], float l[3],
+                            float *factor);
+
+/* The lit colour of one surface point, section 1: max(C_emissive, C_a I_a + sum(C_d I_d N.L +
+ * C_s I_s (N.H)^n)). albedo_scale multiplies C_a and C_d (the diffuse texture), NULL = 1.
+ * n is the shading normal after the front-face flip; it need not be unit length. */
+void rd_ref_shade(const rd_material *m, const float albedo_scale[3], const float p[3],
+                  const float n[3], const float eye[3], const rd_light *lights, int light_count,
+                  const float ambient_light[3], float out[3]);
+
+/* Exposure then the tone map, giving display values in [0, 1] (before sRGB encoding). */
+void rd_ref_tonemap(const float radiance[3], float exposure_ev, rd_tonemap mode, float white,
+                    float out[3]);
+float rd_ref_srgb_encode(float linear);
+/* radiance -> the 8-bit sRGB bytes the GPU path writes. */
+void rd_ref_display_rgb8(const float radiance[3], float exposure_ev, rd_tonemap mode, float white,
+                         unsigned char out[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

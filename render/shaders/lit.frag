@@ -1,0 +1,91 @@
+// Direct light: ambient + Lambert diffuse + Blinn-Phong specular, combined with the emissive
+// colour by a per-channel max. RENDERING.md section 1, seed 002 eqs. 1-7. The CPU reference
+// render/src/shade_ref.c implements the same lines and the tests hold the two together.
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+
+uniform vec3 u_eye;
+uniform vec3 u_ambient_light; // I_a
+
+uniform int u_light_count;
+uniform int u_light_type[MAX_LIGHTS]; // 0 point, 1 spot, 2 directional
+uniform vec3 u_light_position[MAX_LIGHTS];
+uniform vec3 u_light_direction[MAX_LIGHTS]; // unit, the direction the light travels
+uniform vec3 u_light_diffuse[MAX_LIGHTS];   // I_d
+uniform vec3 u_light_specular[MAX_LIGHTS];  // I_s
+uniform vec3 u_light_attenuation[MAX_LIGHTS];
+uniform vec2 u_light_spot[MAX_LIGHTS]; // cos(inner), cos(outer)
+
+uniform vec3 u_mat_ambient;
+uniform vec3 u_mat_diffuse;
+uniform vec3 u_mat_specular;
+uniform vec3 u_mat_emissive;
+uniform float u_mat_shininess;
+#ifdef HAS_DIFFUSE_TEXTURE
+uniform sampler2D u_diffuse_texture;
+#endif
+
+out vec4 frag_color;
+
+// max(N.H, 0)^n with pow(0, 0) and n = 0 defined as 1 and n up to 1e6 finite (section 1).
+float blinn_phong_power(float n_dot_h, float n)
+{
+    if (n <= 0.0)
+        return 1.0;
+    if (n_dot_h <= 0.0)
+        return 0.0;
+    return exp2(n * log2(min(n_dot_h, 1.0)));
+}
+
+// Smooth cone falloff between the outer and the inner cosine; safe when they are equal.
+float spot_factor(float cos_angle, vec2 inner_outer)
+{
+    float t = clamp((cos_angle - inner_outer.y) / max(inner_outer.x - inner_outer.y, 1e-6), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+void main()
+{
+    vec3 V = u_eye - v_world;
+    float v_len = length(V);
+    V = v_len > 0.0 ? V / v_len : vec3(0.0, 0.0, 1.0);
+
+    // Zero-length normals face the viewer; back faces (room walls seen from inside, single
+    // sided sheets) are lit on the side we see (section 11).
+    float n_len = length(v_normal);
+    vec3 N = n_len > 1e-20 ? v_normal / n_len : V;
+    if (!gl_FrontFacing)
+        N = -N;
+
+    vec3 albedo_scale = vec3(1.0);
+#ifdef HAS_DIFFUSE_TEXTURE
+    albedo_scale = texture(u_diffuse_texture, v_uv).rgb;
+#endif
+    vec3 c_a = u_mat_ambient * albedo_scale;
+    vec3 c_d = u_mat_diffuse * albedo_scale;
+
+    vec3 lit = c_a * u_ambient_light; // eq. 1
+    for (int i = 0; i < u_light_count; i++) {
+        vec3 L;
+        float k = 1.0;
+        if (u_light_type[i] == 2) {
+            L = -u_light_direction[i];
+        } else {
+            vec3 d = u_light_position[i] - v_world;
+            float dist = length(d);
+            L = dist > 0.0 ? d / dist : N;
+            vec3 a = u_light_attenuation[i];
+            k = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-4);
+            if (u_light_type[i] == 1)
+                k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
+        }
+        float n_dot_l = dot(N, L);
+        if (n_dot_l <= 0.0)
+            continue; // no diffuse and no specular from behind the surface
+        vec3 H = normalize(L + V);
+        lit += k * c_d * u_light_diffuse[i] * n_dot_l;                                      // eq. 2
+        lit += k * u_mat_specular * u_light_specular[i] * blinn_phong_power(dot(N, H), u_mat_shininess); // eq. 3-5
+    }
+    frag_color = vec4(max(u_mat_emissive, lit), 1.0); // eq. 7
+}

@@ -1,0 +1,21 @@
+// Transforms a mesh into the world and the clip space; lighting happens per pixel in lit.frag.
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+
+uniform mat4 u_model;
+uniform mat3 u_normal_matrix; // inverse transpose of u_model's 3x3, so non-uniform scale is right
+uniform mat4 u_view_proj;
+
+out vec3 v_world;
+out vec3 v_normal;
+out vec2 v_uv;
+
+void main()
+{
+    vec4 world = u_model * vec4(a_position, 1.0);
+    v_world = world.xyz;
+    v_normal = u_normal_matrix * a_normal;
+    v_uv = a_uv;
+    gl_Position = u_view_proj * world;
+}

@@ -1,0 +1,86 @@
+/* View and projection matrices for an rd_view, with near/far fitted to the scene so that
+ * scenes from 1 mm to 10 km keep usable depth precision (RENDERING.md section 11). */
+#include "camera.h"
+#include "render_internal.h"
+
+#include <cglm/cglm.h>
+#include <math.h>
+
+static void world_bounds(const rd_context *ctx, const rd_scene_view_input *in, float lo[3],
+                         float hi[3])
+{
+    for (int k = 0; k < 3; k++) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    for (int i = 0; i < in->object_count; i++) {
+        const rd_object_desc *o = &in->objects[i];
+        const rd_mesh_slot *m = rd_mesh_lookup((rd_context *)ctx, o->mesh);
+        if (!m)
+            continue;
+        for (int c = 0; c < 8; c++) {
+            vec4 p = {c & 1 ? m->bounds_max[0] : m->bounds_min[0],
+                      c & 2 ? m->bounds_max[1] : m->bounds_min[1],
+                      c & 4 ? m->bounds_max[2] : m->bounds_min[2], 1.0f};
+            vec4 w;
+            glm_mat4_mulv((vec4 *)o->transform, p, w);
+            for (int k = 0; k < 3; k++) {
+                lo[k] = fminf(lo[k], w[k]);
+                hi[k] = fmaxf(hi[k], w[k]);
+            }
+        }
+    }
+}
+
+rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_scene_view_input *in,
+                             float view_proj[16], float inverse_view_proj[16])
+{
+    vec3 eye = {v->eye[0], v->eye[1], v->eye[2]};
+    vec3 target = {v->target[0], v->target[1], v->target[2]};
+    vec3 up = {v->up[0], v->up[1], v->up[2]};
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(eye[k]) || !isfinite(target[k]) || !isfinite(up[k]))
+            return rd_fail(RD_ERR_INVALID_ARGUMENT, "camera position, target and up must be finite");
+    vec3 dir;
+    glm_vec3_sub(target, eye, dir);
+    float dist = glm_vec3_norm(dir);
+    if (!(dist > 0.0f))
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "camera target equals its position");
+    glm_vec3_scale(dir, 1.0f / dist, dir);
+    if (glm_vec3_norm(up) == 0.0f)
+        glm_vec3_copy((vec3){0, 0, 1}, up);
+    glm_vec3_normalize(up);
+    if (fabsf(glm_vec3_dot(up, dir)) > 0.9999f) /* looking straight up or down */
+        glm_vec3_copy(fabsf(dir[1]) < 0.9f ? (vec3){0, 1, 0} : (vec3){1, 0, 0}, up);
+
+    float fov = v->fov_y_deg > 0.0f ? v->fov_y_deg : 60.0f;
+    if (!(fov > 0.5f && fov < 179.5f))
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "field of view %g is outside (0.5, 179.5) degrees",
+                       (double)fov);
+    float near_m = v->near_m, far_m = v->far_m;
+    if (!(near_m > 0.0f) || !(far_m > near_m)) {
+        float lo[3], hi[3];
+        world_bounds(ctx, in, lo, hi);
+        float reach = 0.0f;
+        if (lo[0] <= hi[0])
+            for (int c = 0; c < 8; c++) {
+                vec3 corner = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]};
+                reach = fmaxf(reach, glm_vec3_distance(eye, corner));
+            }
+        if (!(reach > 0.0f) || !isfinite(reach))
+            reach = 100.0f;
+        far_m = reach * 1.05f;
+        near_m = far_m * 1e-4f;
+    }
+    mat4 view, proj, vp;
+    glm_lookat(eye, target, up, view);
+    glm_perspective(glm_rad(fov), (float)v->width / (float)v->height, near_m, far_m, proj);
+    glm_mat4_mul(proj, view, vp);
+    memcpy(view_proj, vp, sizeof vp);
+    if (inverse_view_proj) {
+        mat4 inv;
+        glm_mat4_inv(vp, inv);
+        memcpy(inverse_view_proj, inv, sizeof inv);
+    }
+    return RD_OK;
+}

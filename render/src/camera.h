@@ -1,0 +1,14 @@
+#ifndef RENDER_CAMERA_H
+#define RENDER_CAMERA_H
+
+#include "render/render.h"
+
+typedef struct rd_scene_view_input {
+    const rd_object_desc *objects;
+    int object_count;
+} rd_scene_view_input;
+
+rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_scene_view_input *in,
+                             float view_proj[16], float inverse_view_proj[16]);
+
+#endif

@@ -1,0 +1,132 @@
+/* Compiles the embedded GLSL into program variants. A variant is chosen by material features
+ * (ARCHITECTURE.md): code a material does not need is not in its program. */
+#include "gl_funcs.h"
+#include "render_internal.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+extern const struct {
+    const char *name;
+    const char *text;
+} rd_shader_table[];
+
+static const char *shader_text(const char *name)
+{
+    for (int i = 0; rd_shader_table[i].name; i++)
+        if (!strcmp(rd_shader_table[i].name, name))
+            return rd_shader_table[i].text;
+    return NULL;
+}
+
+static GLuint compile(GLenum stage, const char *name, const char *defines)
+{
+    const char *body = shader_text(name);
+    if (!body) {
+        rd_set_error("shader %s is not embedded in this build", name);
+        return 0;
+    }
+    const char *parts[3] = {"#version 330 core\n", defines, body};
+    GLuint s = glCreateShader(stage);
+    glShaderSource(s, 3, parts, NULL);
+    glCompileShader(s);
+    GLint ok = 0;
+    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = "";
+        glGetShaderInfoLog(s, sizeof log, NULL, log);
+        rd_set_error("shader %s does not compile: %s", name, log);
+        glDeleteShader(s);
+        return 0;
+    }
+    return s;
+}
+
+static GLuint link(const char *vert, const char *frag, const char *defines)
+{
+    GLuint vs = compile(GL_VERTEX_SHADER, vert, defines);
+    if (!vs)
+        return 0;
+    GLuint fs = compile(GL_FRAGMENT_SHADER, frag, defines);
+    if (!fs) {
+        glDeleteShader(vs);
+        return 0;
+    }
+    GLuint p = glCreateProgram();
+    glAttachShader(p, vs);
+    glAttachShader(p, fs);
+    glLinkProgram(p);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[2048] = "";
+        glGetProgramInfoLog(p, sizeof log, NULL, log);
+        rd_set_error("program %s + %s does not link: %s", vert, frag, log);
+        glDeleteProgram(p);
+        return 0;
+    }
+    return p;
+}
+
+static void locate_lit(rd_program *p)
+{
+    GLuint id = p->id;
+    p->u_model = glGetUniformLocation(id, "u_model");
+    p->u_normal_matrix = glGetUniformLocation(id, "u_normal_matrix");
+    p->u_view_proj = glGetUniformLocation(id, "u_view_proj");
+    p->u_eye = glGetUniformLocation(id, "u_eye");
+    p->u_ambient_light = glGetUniformLocation(id, "u_ambient_light");
+    p->u_light_count = glGetUniformLocation(id, "u_light_count");
+    p->u_light_type = glGetUniformLocation(id, "u_light_type");
+    p->u_light_position = glGetUniformLocation(id, "u_light_position");
+    p->u_light_direction = glGetUniformLocation(id, "u_light_direction");
+    p->u_light_diffuse = glGetUniformLocation(id, "u_light_diffuse");
+    p->u_light_specular = glGetUniformLocation(id, "u_light_specular");
+    p->u_light_attenuation = glGetUniformLocation(id, "u_light_attenuation");
+    p->u_light_spot = glGetUniformLocation(id, "u_light_spot");
+    p->u_mat_ambient = glGetUniformLocation(id, "u_mat_ambient");
+    p->u_mat_diffuse = glGetUniformLocation(id, "u_mat_diffuse");
+    p->u_mat_specular = glGetUniformLocation(id, "u_mat_specular");
+    p->u_mat_emissive = glGetUniformLocation(id, "u_mat_emissive");
+    p->u_mat_shininess = glGetUniformLocation(id, "u_mat_shininess");
+    p->u_diffuse_texture = glGetUniformLocation(id, "u_diffuse_texture");
+}
+
+rd_result rd_programs_create(rd_context *ctx)
+{
+    char defines[128];
+    for (int variant = 0; variant < 2; variant++) {
+        snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s", RD_MAX_LIGHTS,
+                 variant ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "");
+        ctx->lit[variant].id = link("lit.vert", "lit.frag", defines);
+        if (!ctx->lit[variant].id)
+            return RD_ERR_SHADER;
+        locate_lit(&ctx->lit[variant]);
+    }
+    ctx->tonemap_program = link("fullscreen.vert", "tonemap.frag", "");
+    if (!ctx->tonemap_program)
+        return RD_ERR_SHADER;
+    GLuint t = ctx->tonemap_program;
+    ctx->tm_u_source = glGetUniformLocation(t, "u_source");
+    ctx->tm_u_samples = glGetUniformLocation(t, "u_samples");
+    ctx->tm_u_exposure = glGetUniformLocation(t, "u_exposure");
+    ctx->tm_u_white = glGetUniformLocation(t, "u_white");
+    ctx->tm_u_mode = glGetUniformLocation(t, "u_mode");
+    ctx->tm_u_linear_out = glGetUniformLocation(t, "u_linear_out");
+    return RD_OK;
+}
+
+void rd_programs_destroy(rd_context *ctx)
+{
+    for (int v = 0; v < 2; v++)
+        if (ctx->lit[v].id) {
+            glDeleteProgram(ctx->lit[v].id);
+            ctx->lit[v].id = 0;
+        }
+    if (ctx->tonemap_program) {
+        glDeleteProgram(ctx->tonemap_program);
+        ctx->tonemap_program = 0;
+    }
+}

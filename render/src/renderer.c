@@ -1,0 +1,319 @@
+/* Draws a view of a scene: lit pass into a float target, then exposure + tone map + sRGB into
+ * an 8-bit target (RENDERING.md sections 1 and 9-HDR). */
+#include "camera.h"
+#include "gl_funcs.h"
+#include "render_internal.h"
+#include "scene_internal.h"
+
+#include <cglm/cglm.h>
+#include <math.h>
+#include <stdlib.h>
+
+/* Radiance target format: half float is exact enough for 8-bit output after the tone map
+ * (11-bit mantissa) and halves the memory traffic of llvmpipe compared with RGBA32F. */
+#define HDR_FORMAT GL_RGBA16F
+/* The most samples (supersampled pixels) one render may hold: 2^26, a 8192x8192 image. */
+#define MAX_SAMPLES (1LL << 26)
+
+static rd_result validate_view(const rd_context *ctx, const rd_view *v, int *samples)
+{
+    if (!v)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "no view");
+    int s = v->supersample <= 0 ? 1 : v->supersample;
+    if (s > 4)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "supersampling %d is above the maximum of 4", s);
+    if (v->width <= 0 || v->height <= 0)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "image size %dx%d: both sides must be at least 1",
+                       v->width, v->height);
+    long long sw = (long long)v->width * s, sh = (long long)v->height * s;
+    if (sw > ctx->max_size || sh > ctx->max_size || sw * sh > MAX_SAMPLES)
+        return rd_fail(RD_ERR_TOO_LARGE,
+                       "image size %dx%d (x%d supersampling) is too large: at most %d per side "
+                       "and %lld samples in all",
+                       v->width, v->height, s, ctx->max_size, MAX_SAMPLES);
+    if (!(v->exposure_ev > -64.0f && v->exposure_ev < 64.0f))
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "exposure %g EV is outside (-64, 64)",
+                       (double)v->exposure_ev);
+    if (v->white < 0.0f || !isfinite(v->white))
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "tone map white %g must be >= 0",
+                       (double)v->white);
+    *samples = s;
+    return RD_OK;
+}
+
+static void set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],
+                               const float eye[3])
+{
+    int type[RD_MAX_LIGHTS];
+    float pos[RD_MAX_LIGHTS][3], dir[RD_MAX_LIGHTS][3], dif[RD_MAX_LIGHTS][3],
+        spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2];
+    int n = s->light_count;
+    for (int i = 0; i < n; i++) {
+        const rd_light *l = &s->lights[i];
+        type[i] = (int)l->type;
+        memcpy(pos[i], l->position, sizeof pos[i]);
+        memcpy(dir[i], l->direction, sizeof dir[i]);
+        memcpy(dif[i], l->diffuse, sizeof dif[i]);
+        memcpy(spec[i], l->specular, sizeof spec[i]);
+        memcpy(att[i], l->attenuation, sizeof att[i]);
+        spot[i][0] = l->spot_inner_cos;
+        spot[i][1] = l->spot_outer_cos;
+    }
+    glUseProgram(p->id);
+    glUniformMatrix4fv(p->u_view_proj, 1, GL_FALSE, vp);
+    glUniform3fv(p->u_eye, 1, eye);
+    glUniform3fv(p->u_ambient_light, 1, s->ambient);
+    glUniform1i(p->u_light_count, n);
+    if (n > 0) {
+        glUniform1iv(p->u_light_type, n, type);
+        glUniform3fv(p->u_light_position, n, &pos[0][0]);
+        glUniform3fv(p->u_light_direction, n, &dir[0][0]);
+        glUniform3fv(p->u_light_diffuse, n, &dif[0][0]);
+        glUniform3fv(p->u_light_specular, n, &spec[0][0]);
+        glUniform3fv(p->u_light_attenuation, n, &att[0][0]);
+        glUniform2fv(p->u_light_spot, n, &spot[0][0]);
+    }
+    glUniform1i(p->u_diffuse_texture, 0);
+}
+
+static void set_object_uniforms(const rd_program *p, const float model[16], const rd_material *m)
+{
+    mat3 normal;
+    glm_mat4_pick3((vec4 *)model, normal);
+    glm_mat3_inv(normal, normal);
+    glm_mat3_transpose(normal);
+    glUniformMatrix4fv(p->u_model, 1, GL_FALSE, model);
+    glUniformMatrix3fv(p->u_normal_matrix, 1, GL_FALSE, &normal[0][0]);
+    glUniform3fv(p->u_mat_ambient, 1, m->ambient);
+    glUniform3fv(p->u_mat_diffuse, 1, m->diffuse);
+    glUniform3fv(p->u_mat_specular, 1, m->specular);
+    glUniform3fv(p->u_mat_emissive, 1, m->emissive);
+    glUniform1f(p->u_mat_shininess, m->shininess);
+}
+
+typedef struct draw_item {
+    int index;
+    int background;
+    float distance;
+} draw_item;
+
+static int compare_items(const void *a, const void *b)
+{
+    const draw_item *x = a, *y = b;
+    if (x->background != y->background)
+        return x->background - y->background;
+    return (x->distance > y->distance) - (x->distance < y->distance);
+}
+
+/* Front to back, enclosing surfaces last: llvmpipe's early depth test then shades each
+ * pixel about once, which is what keeps a frame near one full-screen pass. */
+static draw_item *sorted_draw_list(rd_context *ctx, const rd_scene *s, const float eye[3])
+{
+    draw_item *items = malloc((size_t)(s->object_count ? s->object_count : 1) * sizeof *items);
+    if (!items)
+        return NULL;
+    for (int i = 0; i < s->object_count; i++) {
+        const rd_object_desc *o = &s->objects[i];
+        const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
+        vec4 c = {0, 0, 0, 1};
+        if (m)
+            for (int k = 0; k < 3; k++)
+                c[k] = 0.5f * (m->bounds_min[k] + m->bounds_max[k]);
+        vec4 w;
+        glm_mat4_mulv((vec4 *)o->transform, c, w);
+        items[i] = (draw_item){i, o->background,
+                               glm_vec3_distance((float *)eye, (float *)w)};
+    }
+    qsort(items, (size_t)s->object_count, sizeof *items, compare_items);
+    return items;
+}
+
+static void begin_hdr_pass(rd_context *ctx)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, ctx->hdr.fbo);
+    glViewport(0, 0, ctx->hdr.width, ctx->hdr.height);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+static void tonemap_pass(rd_context *ctx, const rd_view *v, int samples, unsigned fbo, int linear)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, v->width, v->height);
+    glDisable(GL_DEPTH_TEST);
+    glUseProgram(ctx->tonemap_program);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, ctx->hdr.color);
+    glUniform1i(ctx->tm_u_source, 0);
+    glUniform1i(ctx->tm_u_samples, samples);
+    glUniform1f(ctx->tm_u_exposure, exp2f(v->exposure_ev));
+    glUniform1f(ctx->tm_u_white, v->white > 0.0f ? v->white : 4.0f);
+    glUniform1i(ctx->tm_u_mode, v->tonemap == RD_TONEMAP_CLAMP ? 1 : 0);
+    glUniform1i(ctx->tm_u_linear_out, linear);
+    glBindVertexArray(ctx->empty_vao);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+static rd_result prepare(rd_context *ctx, rd_scene *scene, const rd_view *v, int *samples,
+                         float vp[16], float inv_vp[16])
+{
+    if (!ctx || !scene)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_render: context and scene are required");
+    rd_result r = validate_view(ctx, v, samples);
+    if (r != RD_OK)
+        return r;
+    rd_scene_view_input in = {scene->objects, scene->object_count};
+    r = rd_camera_matrices(ctx, v, &in, vp, inv_vp);
+    if (r != RD_OK)
+        return r;
+    if (ctx->ops)
+        ctx->ops->make_current(ctx->backend_state);
+    r = rd_target_ensure(&ctx->hdr, v->width * *samples, v->height * *samples, HDR_FORMAT, true);
+    if (r == RD_OK)
+        r = rd_target_ensure(&ctx->display, v->width, v->height, GL_RGBA8, false);
+    return r;
+}
+
+rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
+{
+    int samples;
+    float vp[16];
+    rd_result r = prepare(ctx, scene, v, &samples, vp, NULL);
+    if (r != RD_OK)
+        return r;
+    draw_item *items = sorted_draw_list(ctx, scene, v->eye);
+    if (!items)
+        return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
+
+    begin_hdr_pass(ctx);
+    int frame_uniforms_set[2] = {0, 0};
+    for (int i = 0; i < scene->object_count; i++) {
+        const rd_object_desc *o = &scene->objects[items[i].index];
+        const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
+        const rd_texture_slot *t = rd_texture_lookup(ctx, o->material.diffuse_texture);
+        if (!m)
+            continue; /* destroyed after it was added: nothing to draw */
+        int variant = t ? 1 : 0;
+        const rd_program *p = &ctx->lit[variant];
+        if (!frame_uniforms_set[variant]) {
+            set_frame_uniforms(p, scene, vp, v->eye);
+            frame_uniforms_set[variant] = 1;
+        } else {
+            glUseProgram(p->id);
+        }
+        if (t) {
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, t->name);
+        }
+        set_object_uniforms(p, o->transform, &o->material);
+        glBindVertexArray(m->vao);
+        glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
+    }
+    free(items);
+
+    tonemap_pass(ctx, v, samples, ctx->display.fbo, 0);
+    if (v->to_window && ctx->backend == RD_BACKEND_ADOPT)
+        tonemap_pass(ctx, v, samples, 0, 0);
+    glBindVertexArray(0);
+    unsigned err = rd_gl_drain_errors();
+    if (err != GL_NO_ERROR)
+        return rd_fail(err == GL_OUT_OF_MEMORY ? RD_ERR_OUT_OF_MEMORY : RD_ERR_GL,
+                       "OpenGL error 0x%x while rendering", err);
+    ctx->out_width = v->width;
+    ctx->out_height = v->height;
+    ctx->has_frame = 1;
+    ctx->frame_view = *v;
+    ctx->frame_samples = samples;
+    return RD_OK;
+}
+
+rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *v)
+{
+    int samples;
+    float vp[16], inv_vp[16];
+    rd_result r = prepare(ctx, scene, v, &samples, vp, inv_vp);
+    if (r != RD_OK)
+        return r;
+    if (!ctx->floor_quad.id) {
+        /* A quad on the clip-space plane z = 0; its model matrix (the inverse view-projection)
+         * puts it in the world right in front of the camera, covering the whole view. */
+        static const float pos[] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+        static const float nrm[] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+        static const uint32_t idx[] = {0, 1, 2, 0, 2, 3};
+        ctx->floor_quad = rd_mesh_create(
+            ctx, &(rd_mesh_desc){.positions = pos, .normals = nrm, .indices = idx,
+                                 .vertex_count = 4, .index_count = 6});
+        if (!ctx->floor_quad.id)
+            return RD_ERR_GL;
+    }
+    const rd_mesh_slot *m = rd_mesh_lookup(ctx, ctx->floor_quad);
+    begin_hdr_pass(ctx);
+    const rd_program *p = &ctx->lit[0];
+    set_frame_uniforms(p, scene, vp, v->eye);
+    rd_material grey = {.ambient = {0.5f, 0.5f, 0.5f}, .diffuse = {0.5f, 0.5f, 0.5f},
+                        .specular = {0.2f, 0.2f, 0.2f}, .shininess = 32.0f};
+    set_object_uniforms(p, inv_vp, &grey);
+    glBindVertexArray(m->vao);
+    glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
+    glBindVertexArray(0);
+    unsigned err = rd_gl_drain_errors();
+    if (err != GL_NO_ERROR)
+        return rd_fail(RD_ERR_GL, "OpenGL error 0x%x in the floor pass", err);
+    ctx->has_frame = 0; /* the floor leaves no image to read */
+    return RD_OK;
+}
+
+static void flip_rows(unsigned char *data, int height, size_t row_bytes)
+{
+    unsigned char *tmp = malloc(row_bytes);
+    if (!tmp)
+        return;
+    for (int y = 0; y < height / 2; y++) {
+        unsigned char *a = data + (size_t)y * row_bytes;
+        unsigned char *b = data + (size_t)(height - 1 - y) * row_bytes;
+        memcpy(tmp, a, row_bytes);
+        memcpy(a, b, row_bytes);
+        memcpy(b, tmp, row_bytes);
+    }
+    free(tmp);
+}
+
+rd_result rd_read_rgba8(rd_context *ctx, uint8_t *out, size_t out_size)
+{
+    if (!ctx || !ctx->has_frame)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_read_rgba8: nothing has been rendered");
+    size_t need = (size_t)ctx->out_width * (size_t)ctx->out_height * 4;
+    if (!out || out_size < need)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_read_rgba8: buffer of %zu bytes, need %zu",
+                       out_size, need);
+    glBindFramebuffer(GL_FRAMEBUFFER, ctx->display.fbo);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, ctx->out_width, ctx->out_height, GL_RGBA, GL_UNSIGNED_BYTE, out);
+    flip_rows(out, ctx->out_height, (size_t)ctx->out_width * 4);
+    return rd_gl_drain_errors() == GL_NO_ERROR ? RD_OK
+                                               : rd_fail(RD_ERR_GL, "rd_read_rgba8: read failed");
+}
+
+rd_result rd_read_linear(rd_context *ctx, float *out, size_t out_count)
+{
+    if (!ctx || !ctx->has_frame)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_read_linear: nothing has been rendered");
+    size_t need = (size_t)ctx->out_width * (size_t)ctx->out_height * 4;
+    if (!out || out_count < need)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_read_linear: buffer of %zu floats, need %zu",
+                       out_count, need);
+    rd_result r = rd_target_ensure(&ctx->linear, ctx->out_width, ctx->out_height, GL_RGBA32F, false);
+    if (r != RD_OK)
+        return r;
+    tonemap_pass(ctx, &ctx->frame_view, ctx->frame_samples, ctx->linear.fbo, 1);
+    glBindVertexArray(0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, ctx->out_width, ctx->out_height, GL_RGBA, GL_FLOAT, out);
+    flip_rows((unsigned char *)out, ctx->out_height, (size_t)ctx->out_width * 4 * sizeof(float));
+    return rd_gl_drain_errors() == GL_NO_ERROR ? RD_OK
+                                               : rd_fail(RD_ERR_GL, "rd_read_linear: read failed");
+}

@@ -1,0 +1,95 @@
+#include "render_internal.h"
+#include "scene_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+rd_scene *rd_scene_create(rd_context *ctx)
+{
+    if (!ctx) {
+        rd_set_error("rd_scene_create: no context");
+        return NULL;
+    }
+    rd_scene *s = calloc(1, sizeof *s);
+    if (!s) {
+        rd_set_error("rd_scene_create: out of memory");
+        return NULL;
+    }
+    s->ctx = ctx;
+    return s;
+}
+
+void rd_scene_destroy(rd_scene *s)
+{
+    if (!s)
+        return;
+    free(s->objects);
+    free(s);
+}
+
+static int is_zero_matrix(const float m[16])
+{
+    for (int i = 0; i < 16; i++)
+        if (m[i] != 0.0f)
+            return 0;
+    return 1;
+}
+
+rd_result rd_scene_add_object(rd_scene *s, const rd_object_desc *desc)
+{
+    if (!s || !desc)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_add_object: scene and desc are required");
+    if (!rd_mesh_lookup(s->ctx, desc->mesh))
+        return rd_fail(RD_ERR_STALE_HANDLE, "rd_scene_add_object: mesh %u is not a live mesh",
+                       desc->mesh.id);
+    if (desc->material.diffuse_texture.id && !rd_texture_lookup(s->ctx, desc->material.diffuse_texture))
+        return rd_fail(RD_ERR_STALE_HANDLE, "rd_scene_add_object: texture %u is not live",
+                       desc->material.diffuse_texture.id);
+    for (int i = 0; i < 16; i++)
+        if (!isfinite(desc->transform[i]))
+            return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_add_object: transform is not finite");
+    if (s->object_count == s->object_capacity) {
+        int cap = s->object_capacity ? s->object_capacity * 2 : 32;
+        rd_object_desc *p = realloc(s->objects, (size_t)cap * sizeof *p);
+        if (!p)
+            return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_scene_add_object: out of memory");
+        s->objects = p;
+        s->object_capacity = cap;
+    }
+    rd_object_desc *o = &s->objects[s->object_count++];
+    *o = *desc;
+    if (is_zero_matrix(o->transform))
+        for (int i = 0; i < 4; i++)
+            o->transform[i * 5] = 1.0f;
+    return RD_OK;
+}
+
+rd_result rd_scene_add_light(rd_scene *s, const rd_light *light)
+{
+    if (!s || !light)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_add_light: scene and light are required");
+    if (s->light_count >= RD_MAX_LIGHTS)
+        return rd_fail(RD_ERR_TOO_LARGE, "a scene holds at most %d lights", RD_MAX_LIGHTS);
+    rd_light l = *light;
+    if (l.type != RD_LIGHT_POINT) {
+        float len = sqrtf(l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] +
+                          l.direction[2] * l.direction[2]);
+        if (!(len > 0.0f) || !isfinite(len))
+            return rd_fail(RD_ERR_INVALID_ARGUMENT, "a spot or directional light needs a direction");
+        for (int k = 0; k < 3; k++)
+            l.direction[k] /= len;
+    }
+    s->lights[s->light_count++] = l;
+    return RD_OK;
+}
+
+void rd_scene_set_ambient(rd_scene *s, const float intensity[3])
+{
+    if (s && intensity)
+        memcpy(s->ambient, intensity, sizeof s->ambient);
+}
+
+int rd_scene_object_count(const rd_scene *s)
+{
+    return s ? s->object_count : 0;
+}
