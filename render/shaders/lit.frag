@@ -24,6 +24,7 @@ uniform vec3 u_mat_emissive;
 uniform float u_mat_shininess;
 #ifdef HAS_DIFFUSE_TEXTURE
 uniform sampler2D u_diffuse_texture;
+uniform vec2 u_uv_scale;
 #endif
 
 out vec4 frag_color;
@@ -60,7 +61,7 @@ void main()
 
     vec3 albedo_scale = vec3(1.0);
 #ifdef HAS_DIFFUSE_TEXTURE
-    albedo_scale = texture(u_diffuse_texture, v_uv).rgb;
+    albedo_scale = texture(u_diffuse_texture, v_uv * u_uv_scale).rgb;
 #endif
     vec3 c_a = u_mat_ambient * albedo_scale;
     vec3 c_d = u_mat_diffuse * albedo_scale;

@@ -69,8 +69,11 @@ rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_s
             }
         if (!(reach > 0.0f) || !isfinite(reach))
             reach = 100.0f;
+        /* near = far / 1000 keeps 24-bit depth steps under 0.2 mm at 3 m in a 4 m room, so a
+         * tile band 4 mm proud of its wall does not fight it; nothing in a planner's view sits
+         * closer to the eye than a thousandth of the scene. */
         far_m = reach * 1.05f;
-        near_m = far_m * 1e-4f;
+        near_m = far_m * 1e-3f;
     }
     mat4 view, proj, vp;
     glm_lookat(eye, target, up, view);

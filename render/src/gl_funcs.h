@@ -52,6 +52,7 @@
     X(PFNGLUNIFORM1IPROC, glUniform1i)                                                             \
     X(PFNGLUNIFORM1FPROC, glUniform1f)                                                             \
     X(PFNGLUNIFORM2IPROC, glUniform2i)                                                             \
+    X(PFNGLUNIFORM2FPROC, glUniform2f)                                                             \
     X(PFNGLUNIFORM3FVPROC, glUniform3fv)                                                           \
     X(PFNGLUNIFORM1IVPROC, glUniform1iv)                                                           \
     X(PFNGLUNIFORM1FVPROC, glUniform1fv)                                                           \
@@ -129,6 +130,7 @@ RD_GL_FUNCTIONS(RD_GL_DECLARE)
 #define glUniform1i rd_glUniform1i
 #define glUniform1f rd_glUniform1f
 #define glUniform2i rd_glUniform2i
+#define glUniform2f rd_glUniform2f
 #define glUniform3fv rd_glUniform3fv
 #define glUniform1iv rd_glUniform1iv
 #define glUniform1fv rd_glUniform1fv

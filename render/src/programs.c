@@ -92,6 +92,7 @@ static void locate_lit(rd_program *p)
     p->u_mat_emissive = glGetUniformLocation(id, "u_mat_emissive");
     p->u_mat_shininess = glGetUniformLocation(id, "u_mat_shininess");
     p->u_diffuse_texture = glGetUniformLocation(id, "u_diffuse_texture");
+    p->u_uv_scale = glGetUniformLocation(id, "u_uv_scale");
 }
 
 rd_result rd_programs_create(rd_context *ctx)

@@ -50,7 +50,7 @@ typedef struct rd_program {
     int u_light_type, u_light_position, u_light_direction, u_light_diffuse, u_light_specular,
         u_light_attenuation, u_light_spot;
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
-    int u_diffuse_texture;
+    int u_diffuse_texture, u_uv_scale;
 } rd_program;
 
 struct rd_context {

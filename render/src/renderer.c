@@ -89,6 +89,9 @@ static void set_object_uniforms(const rd_program *p, const float model[16], cons
     glUniform3fv(p->u_mat_specular, 1, m->specular);
     glUniform3fv(p->u_mat_emissive, 1, m->emissive);
     glUniform1f(p->u_mat_shininess, m->shininess);
+    if (p->u_uv_scale >= 0)
+        glUniform2f(p->u_uv_scale, m->uv_scale[0] > 0.0f ? m->uv_scale[0] : 1.0f,
+                    m->uv_scale[1] > 0.0f ? m->uv_scale[1] : 1.0f);
 }
 
 typedef struct draw_item {

@@ -101,6 +101,7 @@ typedef struct rd_material {
     float emissive[3]; /* C_emissive, combined by per-channel max (seed 002 eq. 7) */
     float shininess;   /* n, 0 .. 1e6 */
     rd_texture diffuse_texture;
+    float uv_scale[2]; /* texture repeats per unit of the mesh's UVs; 0 = 1 */
 } rd_material;
 
 typedef enum rd_light_type {

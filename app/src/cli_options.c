@@ -1,0 +1,109 @@
+#include "cli_options.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+double cli_now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
+
+int cli_parse_size(const char *text, int *w, int *h)
+{
+    char *end;
+    errno = 0;
+    long a = strtol(text, &end, 10);
+    if (end == text || (*end != 'x' && *end != 'X') || errno)
+        return 0;
+    const char *second = end + 1;
+    long b = strtol(second, &end, 10);
+    if (end == second || *end || errno)
+        return 0;
+    if (a < 1 || b < 1 || a > 1000000 || b > 1000000)
+        return 0;
+    *w = (int)a;
+    *h = (int)b;
+    return 1;
+}
+
+static int parse_int(const char *text, int lo, int hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(text, &end, 10);
+    if (end == text || *end || errno || v < lo || v > hi)
+        return 0;
+    *out = (int)v;
+    return 1;
+}
+
+static int allowed_option(const char *allowed, const char *name)
+{
+    size_t n = strlen(name);
+    for (const char *p = allowed; (p = strstr(p, name)); p += n)
+        if ((p == allowed || p[-1] == ' ') && (p[n] == ' ' || p[n] == 0))
+            return 1;
+    return 0;
+}
+
+int cli_parse(int argc, char **argv, int first, const char *command, const char *allowed,
+              cli_options *o)
+{
+    for (int i = first; i < argc; i++) {
+        const char *a = argv[i];
+        const char *name = NULL;
+        if (!strcmp(a, "-o"))
+            name = "output";
+        else if (!strncmp(a, "--", 2))
+            name = a + 2;
+        if (!name) {
+            if (o->project) {
+                fprintf(stderr, "tessera %s: unexpected argument \"%s\"\n", command, a);
+                return CLI_USAGE;
+            }
+            o->project = a;
+            continue;
+        }
+        if (!allowed_option(allowed, name)) {
+            fprintf(stderr, "tessera %s: unknown option \"%s\"\n", command, a);
+            return CLI_USAGE;
+        }
+        if (i + 1 >= argc) {
+            fprintf(stderr, "tessera %s: option %s needs a value\n", command, a);
+            return CLI_USAGE;
+        }
+        const char *v = argv[++i];
+        int ok = 1;
+        if (!strcmp(name, "output"))
+            o->output = v;
+        else if (!strcmp(name, "camera"))
+            o->camera = v;
+        else if (!strcmp(name, "csv"))
+            o->csv = v;
+        else if (!strcmp(name, "size"))
+            ok = cli_parse_size(v, &o->width, &o->height);
+        else if (!strcmp(name, "supersample"))
+            ok = parse_int(v, 1, 4, &o->supersample);
+        else if (!strcmp(name, "frames"))
+            ok = parse_int(v, 1, 100000, &o->frames);
+        else if (!strcmp(name, "warmup"))
+            ok = parse_int(v, 0, 100000, &o->warmup);
+        else if (!strcmp(name, "backend"))
+            ok = rd_backend_parse(v, &o->backend) == RD_OK && o->backend != RD_BACKEND_ADOPT;
+        if (!ok) {
+            fprintf(stderr, "tessera %s: bad value \"%s\" for --%s%s\n", command, v, name,
+                    !strcmp(name, "size")          ? " (expected WIDTHxHEIGHT, e.g. 1280x720)"
+                    : !strcmp(name, "backend")     ? " (expected egl or osmesa)"
+                    : !strcmp(name, "supersample") ? " (expected 1 to 4)"
+                                                   : "");
+            return CLI_USAGE;
+        }
+    }
+    return CLI_OK;
+}

@@ -1,0 +1,49 @@
+#ifndef APP_CLI_OPTIONS_H
+#define APP_CLI_OPTIONS_H
+
+#include "app/project.h"
+#include "app/scene_build.h"
+#include "render/render.h"
+
+enum { CLI_OK = 0, CLI_FAILED = 1, CLI_USAGE = 2 };
+
+/* Options shared by the sub-commands that render; zero = not given. */
+typedef struct cli_options {
+    const char *project;
+    const char *output;
+    const char *camera;
+    const char *csv;
+    int width, height;
+    int supersample;
+    int frames, warmup;
+    rd_backend backend;
+} cli_options;
+
+/* Parses argv[first..]; prints the problem and returns CLI_USAGE on a bad option. `allowed`
+ * lists the long options this sub-command takes, e.g. "camera size backend". */
+int cli_parse(int argc, char **argv, int first, const char *command, const char *allowed,
+              cli_options *o);
+
+/* "1280x720" -> 1280, 720; each side 1..65535 (larger sizes fail later with the limit named). */
+int cli_parse_size(const char *text, int *w, int *h);
+
+/* Everything a render needs, opened from the options; cli_session_close undoes it. */
+typedef struct cli_session {
+    app_project project;
+    rd_context *ctx;
+    app_scene scene;
+} cli_session;
+
+int cli_session_open(const cli_options *o, cli_session *s);
+void cli_session_close(cli_session *s);
+
+/* Renders one view and writes it to `path` (PNG/JPEG/TIFF as 8-bit sRGB, EXR linear). */
+int cli_render_to_file(cli_session *s, const rd_view *view, const char *path);
+
+/* Fails early, before any rendering, when `path` has an unknown extension or its folder
+ * cannot be written. */
+int cli_check_output_path(const char *path);
+
+double cli_now_ms(void);
+
+#endif

@@ -1,0 +1,200 @@
+#include "scene_build_internal.h"
+
+#include "render/image_io.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+app_result app_scene_track_mesh(app_scene *s, rd_mesh mesh)
+{
+    if (s->mesh_count == s->mesh_capacity) {
+        int cap = s->mesh_capacity ? s->mesh_capacity * 2 : 32;
+        rd_mesh *m = realloc(s->meshes, (size_t)cap * sizeof *m);
+        if (!m)
+            return APP_ERR_OUT_OF_MEMORY;
+        s->meshes = m;
+        s->mesh_capacity = cap;
+    }
+    s->meshes[s->mesh_count++] = mesh;
+    return APP_OK;
+}
+
+/* RGBA float texels from any channel count (grey -> RGB, missing alpha -> 1). */
+static float *rgba_from_image(const rd_image *img)
+{
+    size_t n = (size_t)img->width * (size_t)img->height;
+    float *out = malloc(n * 4 * sizeof *out);
+    if (!out)
+        return NULL;
+    for (size_t i = 0; i < n; i++) {
+        const float *src = &img->pixels[i * (size_t)img->channels];
+        int c = img->channels;
+        out[i * 4 + 0] = src[0];
+        out[i * 4 + 1] = c >= 3 ? src[1] : src[0];
+        out[i * 4 + 2] = c >= 3 ? src[2] : src[0];
+        out[i * 4 + 3] = c == 4 ? src[3] : c == 2 ? src[1] : 1.0f;
+    }
+    return out;
+}
+
+static app_result load_texture(rd_context *ctx, app_scene *s, const char *path, rd_texture *out,
+                               char *err, size_t err_size)
+{
+    for (int i = 0; i < s->texture_count; i++)
+        if (!strcmp(s->texture_paths[i], path)) {
+            *out = s->textures[i];
+            return APP_OK;
+        }
+    if (s->texture_count == s->texture_capacity) {
+        int cap = s->texture_capacity ? s->texture_capacity * 2 : 8;
+        rd_texture *t = realloc(s->textures, (size_t)cap * sizeof *t);
+        if (!t)
+            return APP_ERR_OUT_OF_MEMORY;
+        s->textures = t;
+        char(*paths)[1024] = realloc(s->texture_paths, (size_t)cap * sizeof *paths);
+        if (!paths)
+            return APP_ERR_OUT_OF_MEMORY;
+        s->texture_paths = paths;
+        s->texture_capacity = cap;
+    }
+    rd_image img = {0};
+    int nonfinite = 0;
+    char ierr[512];
+    if (rd_image_read(path, &img, &nonfinite, ierr, sizeof ierr) != RD_IMAGE_OK) {
+        snprintf(err, err_size, "%s", ierr);
+        return APP_ERR_IO;
+    }
+    if (nonfinite)
+        fprintf(stderr, "tessera: warning: %s: %d NaN or infinite texel values were set to 0\n",
+                path, nonfinite);
+    float *rgba = rgba_from_image(&img);
+    if (!rgba) {
+        rd_image_free(&img);
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    rd_texture tex = rd_texture_create(ctx, &(rd_texture_desc){.width = img.width,
+                                                               .height = img.height,
+                                                               .rgba = rgba,
+                                                               .srgb_encoded = img.srgb_encoded});
+    free(rgba);
+    rd_image_free(&img);
+    if (!tex.id) {
+        snprintf(err, err_size, "%s: %s", path, rd_last_error());
+        return APP_ERR_IO;
+    }
+    s->textures[s->texture_count] = tex;
+    snprintf(s->texture_paths[s->texture_count], sizeof s->texture_paths[0], "%s", path);
+    s->texture_count++;
+    *out = tex;
+    return APP_OK;
+}
+
+app_result app_scene_material(rd_context *ctx, const app_project *p, app_scene *s, int mi,
+                              rd_material *out, char *err, size_t err_size)
+{
+    const app_material *am = &p->materials[mi];
+    rd_material m = {.shininess = am->shininess};
+    memcpy(m.ambient, am->ambient, sizeof m.ambient);
+    memcpy(m.diffuse, am->diffuse, sizeof m.diffuse);
+    memcpy(m.specular, am->specular, sizeof m.specular);
+    memcpy(m.emissive, am->emissive, sizeof m.emissive);
+    if (am->texture[0]) {
+        app_result r = load_texture(ctx, s, am->texture, &m.diffuse_texture, err, err_size);
+        if (r != APP_OK) {
+            char inner[768];
+            snprintf(inner, sizeof inner, "%s", err);
+            snprintf(err, err_size, "%s: material \"%s\": %s", p->path, am->name, inner);
+            return r;
+        }
+    }
+    *out = m;
+    return APP_OK;
+}
+
+static void add_light(const app_light *l, rd_light *out)
+{
+    rd_light r = {.type = l->type == APP_LIGHT_SPOT          ? RD_LIGHT_SPOT
+                          : l->type == APP_LIGHT_DIRECTIONAL ? RD_LIGHT_DIRECTIONAL
+                                                             : RD_LIGHT_POINT};
+    for (int k = 0; k < 3; k++) {
+        r.position[k] = (float)(l->position_mm[k] * 1e-3);
+        r.direction[k] = (float)l->direction[k];
+        r.diffuse[k] = l->color[k] * l->intensity;
+        r.specular[k] = l->specular[k] * l->intensity;
+        r.attenuation[k] = l->attenuation[k];
+    }
+    const double deg = 3.14159265358979323846 / 180.0;
+    r.spot_inner_cos = (float)cos(l->inner_deg * deg);
+    r.spot_outer_cos = (float)cos(l->outer_deg * deg);
+    *out = r;
+}
+
+app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out, char *err,
+                           size_t err_size)
+{
+    memset(out, 0, sizeof *out);
+    out->scene = rd_scene_create(ctx);
+    if (!out->scene) {
+        snprintf(err, err_size, "%s: %s", p->path, rd_last_error());
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    rd_scene_set_ambient(out->scene, p->render.ambient);
+    app_result r = app_scene_add_room(ctx, p, out, err, err_size);
+    if (r == APP_OK)
+        r = app_scene_add_objects(ctx, p, out, err, err_size);
+    for (int i = 0; r == APP_OK && i < p->light_count; i++) {
+        rd_light l;
+        add_light(&p->lights[i], &l);
+        if (rd_scene_add_light(out->scene, &l) != RD_OK) {
+            snprintf(err, err_size, "%s: $.lights[%d]: %s", p->path, i, rd_last_error());
+            r = APP_ERR_SCHEMA;
+        }
+    }
+    if (r != APP_OK)
+        app_scene_release(ctx, out);
+    return r;
+}
+
+void app_scene_release(rd_context *ctx, app_scene *s)
+{
+    if (!s)
+        return;
+    for (int i = 0; i < s->mesh_count; i++)
+        rd_mesh_destroy(ctx, s->meshes[i]);
+    for (int i = 0; i < s->texture_count; i++)
+        rd_texture_destroy(ctx, s->textures[i]);
+    rd_scene_destroy(s->scene);
+    free(s->meshes);
+    free(s->textures);
+    free(s->texture_paths);
+    memset(s, 0, sizeof *s);
+}
+
+app_result app_view_from_camera(const app_project *p, const char *camera, int width, int height,
+                                rd_view *out, char *err, size_t err_size)
+{
+    const app_camera *c = app_project_find_camera(p, camera);
+    if (!c) {
+        int n = 0;
+        char names[512] = "";
+        for (int i = 0; i < p->camera_count; i++)
+            n += snprintf(names + n, n < (int)sizeof names ? sizeof names - (size_t)n : 0,
+                          "%s\"%s\"", i ? ", " : "", p->cameras[i].name);
+        snprintf(err, err_size, "%s: $.cameras: no camera named \"%s\" (the project has %s)",
+                 p->path, camera ? camera : "", p->camera_count ? names : "none");
+        return APP_ERR_NOT_FOUND;
+    }
+    rd_view v = {.fov_y_deg = (float)c->fov_deg,
+                 .width = width > 0 ? width : p->render.width,
+                 .height = height > 0 ? height : p->render.height,
+                 .supersample = p->render.supersample,
+                 .exposure_ev = p->render.exposure_ev,
+                 .white = p->render.white};
+    for (int k = 0; k < 3; k++) {
+        v.eye[k] = (float)(c->position_mm[k] * 1e-3);
+        v.target[k] = (float)(c->target_mm[k] * 1e-3);
+        v.up[k] = (float)c->up[k];
+    }
+    *out = v;
+    return APP_OK;
+}

@@ -1,0 +1,167 @@
+/* Project objects -> renderer objects: primitives share one unit mesh per shape; a glTF/GLB
+ * model is loaded through the catalog and uploaded part by part. */
+#include "scene_build_internal.h"
+
+#include "catalog/model.h"
+#include "render/primitives.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+/* M = T(position) * Rz * Ry * Rx * S(scale * size), column-major, metres. */
+void app_object_transform(const app_object *o, const double size_m[3], float out[16])
+{
+    const double deg = 3.14159265358979323846 / 180.0;
+    double cx = cos(o->rotation_deg[0] * deg), sx = sin(o->rotation_deg[0] * deg);
+    double cy = cos(o->rotation_deg[1] * deg), sy = sin(o->rotation_deg[1] * deg);
+    double cz = cos(o->rotation_deg[2] * deg), sz = sin(o->rotation_deg[2] * deg);
+    double r[3][3] = {/* row-major Rz*Ry*Rx */
+                      {cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx},
+                      {sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx},
+                      {-sy, cy * sx, cy * cx}};
+    for (int col = 0; col < 3; col++) {
+        double s = o->scale[col] * size_m[col];
+        for (int row = 0; row < 3; row++)
+            out[col * 4 + row] = (float)(r[row][col] * s);
+        out[col * 4 + 3] = 0.0f;
+    }
+    for (int row = 0; row < 3; row++)
+        out[12 + row] = (float)(o->position_mm[row] * 1e-3);
+    out[15] = 1.0f;
+}
+
+static app_result unit_mesh(rd_context *ctx, app_scene *s, app_shape shape, float torus_ratio,
+                            rd_mesh *out)
+{
+    if (shape != APP_SHAPE_TORUS && s->unit_meshes[shape].id) {
+        *out = s->unit_meshes[shape];
+        return APP_OK;
+    }
+    rd_mesh_data d;
+    rd_result r;
+    switch (shape) {
+    case APP_SHAPE_BOX:
+        r = rd_mesh_data_box(&d);
+        break;
+    case APP_SHAPE_SPHERE:
+        r = rd_mesh_data_sphere(64, 32, &d);
+        break;
+    case APP_SHAPE_CYLINDER:
+        r = rd_mesh_data_cylinder(64, &d);
+        break;
+    case APP_SHAPE_PLANE:
+        r = rd_mesh_data_plane(&d);
+        break;
+    default:
+        r = rd_mesh_data_torus(torus_ratio, 64, 24, &d);
+        break;
+    }
+    if (r != RD_OK)
+        return APP_ERR_SCHEMA;
+    rd_mesh_desc desc = rd_mesh_data_desc(&d);
+    rd_mesh m = rd_mesh_create(ctx, &desc);
+    rd_mesh_data_free(&d);
+    if (!m.id || app_scene_track_mesh(s, m) != APP_OK)
+        return APP_ERR_OUT_OF_MEMORY;
+    if (shape != APP_SHAPE_TORUS)
+        s->unit_meshes[shape] = m;
+    *out = m;
+    return APP_OK;
+}
+
+static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene *s, int index,
+                                const rd_material *m, char *err, size_t err_size)
+{
+    const app_object *o = &p->objects[index];
+    double size_m[3] = {o->size_mm[0] * 1e-3, o->size_mm[1] * 1e-3, o->size_mm[2] * 1e-3};
+    float ratio = 0.0f;
+    if (o->shape == APP_SHAPE_PLANE)
+        size_m[2] = 1.0;
+    if (o->shape == APP_SHAPE_TORUS) {
+        /* The unit torus is 1 across and `ratio` thick; scale z back to the outer diameter. */
+        ratio = (float)fmin(o->size_mm[2] / o->size_mm[0], 0.5);
+        size_m[2] = size_m[0];
+    }
+    rd_mesh mesh;
+    if (unit_mesh(ctx, s, o->shape, ratio, &mesh) != APP_OK) {
+        snprintf(err, err_size, "%s: $.objects[%d] (\"%s\"): cannot make its mesh: %s", p->path,
+                 index, o->name, rd_last_error());
+        return APP_ERR_SCHEMA;
+    }
+    rd_object_desc d = {.mesh = mesh, .material = *m};
+    /* Unit-mesh UVs span the whole object: repeat the texture at its real-world size. A plane
+     * maps u, v to its x, y; the other shapes wrap u around and run v along the height. */
+    const app_material *am = &p->materials[o->material];
+    if (am->texture[0]) {
+        double u_mm = o->size_mm[0] * o->scale[0];
+        double v_mm = o->shape == APP_SHAPE_PLANE ? o->size_mm[1] * o->scale[1]
+                                                  : o->size_mm[2] * o->scale[2];
+        if (o->shape == APP_SHAPE_SPHERE || o->shape == APP_SHAPE_CYLINDER ||
+            o->shape == APP_SHAPE_TORUS)
+            u_mm *= 3.14159265358979323846;
+        d.material.uv_scale[0] = (float)(u_mm / am->texture_size_mm[0]);
+        d.material.uv_scale[1] = (float)(v_mm / am->texture_size_mm[1]);
+    }
+    app_object_transform(o, size_m, d.transform);
+    if (rd_scene_add_object(s->scene, &d) != RD_OK) {
+        snprintf(err, err_size, "%s: $.objects[%d] (\"%s\"): %s", p->path, index, o->name,
+                 rd_last_error());
+        return APP_ERR_SCHEMA;
+    }
+    return APP_OK;
+}
+
+static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s, int index,
+                            const rd_material *m, char *err, size_t err_size)
+{
+    const app_object *o = &p->objects[index];
+    cat_model model = {0};
+    char cerr[768];
+    if (cat_model_load(o->model, &model, cerr, sizeof cerr) != CAT_OK) {
+        snprintf(err, err_size, "%s: $.objects[%d].model: %s", p->path, index, cerr);
+        return APP_ERR_IO;
+    }
+    const double mm_to_m[3] = {1e-3, 1e-3, 1e-3};
+    float transform[16];
+    app_object_transform(o, mm_to_m, transform);
+    app_result r = APP_OK;
+    for (int i = 0; r == APP_OK && i < model.mesh_count; i++) {
+        const cat_mesh *cm = &model.meshes[i];
+        rd_mesh mesh = rd_mesh_create(ctx, &(rd_mesh_desc){.positions = cm->positions,
+                                                           .normals = cm->normals,
+                                                           .uvs = cm->uvs,
+                                                           .indices = cm->indices,
+                                                           .vertex_count = cm->vertex_count,
+                                                           .index_count = cm->index_count});
+        if (!mesh.id || app_scene_track_mesh(s, mesh) != APP_OK) {
+            snprintf(err, err_size, "%s: $.objects[%d].model: %s: part %d: %s", p->path, index,
+                     o->model, i, rd_last_error());
+            r = APP_ERR_IO;
+            break;
+        }
+        rd_object_desc d = {.mesh = mesh, .material = *m};
+        memcpy(d.transform, transform, sizeof transform);
+        if (rd_scene_add_object(s->scene, &d) != RD_OK) {
+            snprintf(err, err_size, "%s: $.objects[%d]: %s", p->path, index, rd_last_error());
+            r = APP_ERR_SCHEMA;
+        }
+    }
+    cat_model_free(&model);
+    return r;
+}
+
+app_result app_scene_add_objects(rd_context *ctx, const app_project *p, app_scene *s, char *err,
+                                 size_t err_size)
+{
+    for (int i = 0; i < p->object_count; i++) {
+        rd_material m;
+        app_result r = app_scene_material(ctx, p, s, p->objects[i].material, &m, err, err_size);
+        if (r == APP_OK)
+            r = p->objects[i].shape == APP_SHAPE_MODEL
+                    ? add_model(ctx, p, s, i, &m, err, err_size)
+                    : add_primitive(ctx, p, s, i, &m, err, err_size);
+        if (r != APP_OK)
+            return r;
+    }
+    return APP_OK;
+}
