@@ -25,7 +25,8 @@ int cli_check_output_path(const char *path)
         return CLI_USAGE;
     }
     if (!S_ISDIR(st.st_mode) || access(dir, W_OK | X_OK) != 0) {
-        fprintf(stderr, "tessera: %s: cannot write: folder %s is not writable\n", path, dir);
+        fprintf(stderr, "tessera: %s: cannot write: %s is %s\n", path, dir,
+                S_ISDIR(st.st_mode) ? "a folder that is not writable" : "not a folder");
         return CLI_USAGE;
     }
     struct stat target;

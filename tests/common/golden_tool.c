@@ -1,0 +1,39 @@
+/* golden_tool NAME ACTUAL.png GOLDEN.png ARTIFACT_DIR: compares a rendered image with its
+ * golden (STYLE.md tolerance), writing actual/expected/diff under ARTIFACT_DIR on failure.
+ * TESSERA_UPDATE_GOLDEN=1 rewrites the golden instead. */
+#include "golden.h"
+#include "render/image_io.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+int main(int argc, char **argv)
+{
+    if (argc != 5) {
+        fprintf(stderr, "usage: golden_tool NAME ACTUAL.png GOLDEN.png ARTIFACT_DIR\n");
+        return 2;
+    }
+    rd_image img = {0};
+    char err[1024];
+    if (rd_image_read(argv[2], &img, NULL, err, sizeof err) != RD_IMAGE_OK) {
+        fprintf(stderr, "%s\n", err);
+        return 1;
+    }
+    size_t n = (size_t)img.width * (size_t)img.height;
+    unsigned char *rgba = malloc(n * 4);
+    if (!rgba)
+        return 1;
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 4; k++) {
+            float v = k < img.channels ? img.pixels[i * (size_t)img.channels + (size_t)k] : 1.0f;
+            if (img.channels < 3 && k < 3)
+                v = img.pixels[i * (size_t)img.channels];
+            rgba[i * 4 + (size_t)k] = (unsigned char)(v * 255.0f + 0.5f);
+        }
+    int rc = golden_check(argv[1], rgba, img.width, img.height, argv[3], argv[4]);
+    free(rgba);
+    rd_image_free(&img);
+    if (rc == 0)
+        printf("golden %s: PASS\n", argv[1]);
+    return rc ? 1 : 0;
+}
