@@ -1,11 +1,11 @@
 // Exposure, photographic tone map and sRGB encoding; resolves s x s supersamples per pixel.
 // RENDERING.md section 9 (HDR). The CPU twin is rd_ref_tonemap in render/src/tonemap_ref.c.
+// Compiled per variant (programs.c): SAMPLES (s, 1..4) and LINEAR_OUT (write the averaged
+// exposed radiance instead of display values), so the loops unroll and nothing branches.
 uniform sampler2D u_source; // radiance at s times the output size
-uniform int u_samples;      // s
 uniform float u_exposure;   // 2^ev
 uniform float u_white;      // L_white
 uniform int u_mode;         // 0 photographic, 1 clamp
-uniform int u_linear_out;   // 1: write the averaged exposed radiance instead
 
 out vec4 frag_color;
 
@@ -31,13 +31,21 @@ vec3 srgb_encode(vec3 x)
 
 void main()
 {
-    ivec2 base = ivec2(gl_FragCoord.xy) * u_samples;
+    ivec2 base = ivec2(gl_FragCoord.xy) * SAMPLES;
     vec3 sum = vec3(0.0);
-    for (int y = 0; y < u_samples; y++)
-        for (int x = 0; x < u_samples; x++) {
+    for (int y = 0; y < SAMPLES; y++)
+        for (int x = 0; x < SAMPLES; x++) {
             vec3 c = texelFetch(u_source, base + ivec2(x, y), 0).rgb;
-            sum += u_linear_out == 1 ? clamp(c * u_exposure, vec3(0.0), vec3(1e30)) : tonemap(c);
+#if LINEAR_OUT
+            sum += clamp(c * u_exposure, vec3(0.0), vec3(1e30));
+#else
+            sum += tonemap(c);
+#endif
         }
-    vec3 avg = sum / float(u_samples * u_samples);
-    frag_color = u_linear_out == 1 ? vec4(avg, 1.0) : vec4(srgb_encode(avg), 1.0);
+    vec3 avg = sum / float(SAMPLES * SAMPLES);
+#if LINEAR_OUT
+    frag_color = vec4(avg, 1.0);
+#else
+    frag_color = vec4(srgb_encode(avg), 1.0);
+#endif
 }

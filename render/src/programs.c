@@ -106,17 +106,26 @@ rd_result rd_programs_create(rd_context *ctx)
             return RD_ERR_SHADER;
         locate_lit(&ctx->lit[variant]);
     }
-    ctx->tonemap_program = link("fullscreen.vert", "tonemap.frag", "");
-    if (!ctx->tonemap_program)
-        return RD_ERR_SHADER;
-    GLuint t = ctx->tonemap_program;
-    ctx->tm_u_source = glGetUniformLocation(t, "u_source");
-    ctx->tm_u_samples = glGetUniformLocation(t, "u_samples");
-    ctx->tm_u_exposure = glGetUniformLocation(t, "u_exposure");
-    ctx->tm_u_white = glGetUniformLocation(t, "u_white");
-    ctx->tm_u_mode = glGetUniformLocation(t, "u_mode");
-    ctx->tm_u_linear_out = glGetUniformLocation(t, "u_linear_out");
-    return RD_OK;
+    /* The common variant is made now, so a broken tone map shader fails context creation. */
+    return rd_tonemap_program(ctx, 1, 0) ? RD_OK : RD_ERR_SHADER;
+}
+
+const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear)
+{
+    struct rd_tonemap_program *t = &ctx->tonemap[samples - 1][linear ? 1 : 0];
+    if (t->id)
+        return t;
+    char defines[96];
+    snprintf(defines, sizeof defines, "#define SAMPLES %d\n#define LINEAR_OUT %d\n", samples,
+             linear ? 1 : 0);
+    t->id = link("fullscreen.vert", "tonemap.frag", defines);
+    if (!t->id)
+        return NULL;
+    t->u_source = glGetUniformLocation(t->id, "u_source");
+    t->u_exposure = glGetUniformLocation(t->id, "u_exposure");
+    t->u_white = glGetUniformLocation(t->id, "u_white");
+    t->u_mode = glGetUniformLocation(t->id, "u_mode");
+    return t;
 }
 
 void rd_programs_destroy(rd_context *ctx)
@@ -126,8 +135,10 @@ void rd_programs_destroy(rd_context *ctx)
             glDeleteProgram(ctx->lit[v].id);
             ctx->lit[v].id = 0;
         }
-    if (ctx->tonemap_program) {
-        glDeleteProgram(ctx->tonemap_program);
-        ctx->tonemap_program = 0;
-    }
+    for (int s = 0; s < 4; s++)
+        for (int l = 0; l < 2; l++)
+            if (ctx->tonemap[s][l].id) {
+                glDeleteProgram(ctx->tonemap[s][l].id);
+                ctx->tonemap[s][l].id = 0;
+            }
 }

@@ -67,8 +67,12 @@ struct rd_context {
 
     /* Shader variants by material feature: [0] plain, [1] with a diffuse texture. */
     rd_program lit[2];
-    unsigned tonemap_program;
-    int tm_u_source, tm_u_samples, tm_u_exposure, tm_u_white, tm_u_mode, tm_u_linear_out;
+    /* Tone map variants by samples per side (1..4) and output (display, linear); made on
+     * first use. */
+    struct rd_tonemap_program {
+        unsigned id;
+        int u_source, u_exposure, u_white, u_mode;
+    } tonemap[4][2];
     unsigned empty_vao;
 
     rd_target hdr;     /* scene radiance at supersampled size */
@@ -85,6 +89,8 @@ rd_texture_slot *rd_texture_lookup(rd_context *ctx, rd_texture tex);
 void rd_resources_destroy_all(rd_context *ctx);
 
 rd_result rd_programs_create(rd_context *ctx);
+/* The tone map program for s samples per side, display or linear output; NULL on failure. */
+const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear);
 void rd_programs_destroy(rd_context *ctx);
 
 rd_result rd_target_ensure(rd_target *t, int width, int height, unsigned internal_format,

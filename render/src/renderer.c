@@ -143,22 +143,25 @@ static void begin_hdr_pass(rd_context *ctx)
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-static void tonemap_pass(rd_context *ctx, const rd_view *v, int samples, unsigned fbo, int linear)
+static rd_result tonemap_pass(rd_context *ctx, const rd_view *v, int samples, unsigned fbo,
+                              int linear)
 {
+    const struct rd_tonemap_program *t = rd_tonemap_program(ctx, samples, linear);
+    if (!t)
+        return RD_ERR_SHADER;
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glViewport(0, 0, v->width, v->height);
     glDisable(GL_DEPTH_TEST);
-    glUseProgram(ctx->tonemap_program);
+    glUseProgram(t->id);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, ctx->hdr.color);
-    glUniform1i(ctx->tm_u_source, 0);
-    glUniform1i(ctx->tm_u_samples, samples);
-    glUniform1f(ctx->tm_u_exposure, exp2f(v->exposure_ev));
-    glUniform1f(ctx->tm_u_white, v->white > 0.0f ? v->white : 4.0f);
-    glUniform1i(ctx->tm_u_mode, v->tonemap == RD_TONEMAP_CLAMP ? 1 : 0);
-    glUniform1i(ctx->tm_u_linear_out, linear);
+    glUniform1i(t->u_source, 0);
+    glUniform1f(t->u_exposure, exp2f(v->exposure_ev));
+    glUniform1f(t->u_white, v->white > 0.0f ? v->white : 4.0f);
+    glUniform1i(t->u_mode, v->tonemap == RD_TONEMAP_CLAMP ? 1 : 0);
     glBindVertexArray(ctx->empty_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    return RD_OK;
 }
 
 static rd_result prepare(rd_context *ctx, rd_scene *scene, const rd_view *v, int *samples,
@@ -185,9 +188,9 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
 {
     int samples;
     float vp[16];
-    rd_result r = prepare(ctx, scene, v, &samples, vp, NULL);
-    if (r != RD_OK)
-        return r;
+    rd_result pr = prepare(ctx, scene, v, &samples, vp, NULL);
+    if (pr != RD_OK)
+        return pr;
     draw_item *items = sorted_draw_list(ctx, scene, v->eye);
     if (!items)
         return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
@@ -218,9 +221,12 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     }
     free(items);
 
-    tonemap_pass(ctx, v, samples, ctx->display.fbo, 0);
-    if (v->to_window && ctx->backend == RD_BACKEND_ADOPT)
-        tonemap_pass(ctx, v, samples, 0, 0);
+    rd_result r = RD_OK;
+    r = tonemap_pass(ctx, v, samples, ctx->display.fbo, 0);
+    if (r == RD_OK && v->to_window && ctx->backend == RD_BACKEND_ADOPT)
+        r = tonemap_pass(ctx, v, samples, 0, 0);
+    if (r != RD_OK)
+        return r;
     glBindVertexArray(0);
     unsigned err = rd_gl_drain_errors();
     if (err != GL_NO_ERROR)
@@ -312,7 +318,9 @@ rd_result rd_read_linear(rd_context *ctx, float *out, size_t out_count)
     rd_result r = rd_target_ensure(&ctx->linear, ctx->out_width, ctx->out_height, GL_RGBA32F, false);
     if (r != RD_OK)
         return r;
-    tonemap_pass(ctx, &ctx->frame_view, ctx->frame_samples, ctx->linear.fbo, 1);
+    r = tonemap_pass(ctx, &ctx->frame_view, ctx->frame_samples, ctx->linear.fbo, 1);
+    if (r != RD_OK)
+        return r;
     glBindVertexArray(0);
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, ctx->out_width, ctx->out_height, GL_RGBA, GL_FLOAT, out);
