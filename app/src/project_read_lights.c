@@ -1,0 +1,115 @@
+/* $.lights: point, spot and directional lights. */
+#include "project_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static const pj_range SPOT_ANGLE = {0.0, 90.0, 0, 0, 1};
+
+static app_result read_type(pj_ctx *c, const cJSON *item, app_light *l)
+{
+    const cJSON *t;
+    app_result r = pj_member(c, item, "type", cJSON_String, 0, &t);
+    if (r != APP_OK || !t)
+        return r; /* absent: a point light */
+    if (strcmp(t->valuestring, "point") == 0)
+        l->type = APP_LIGHT_POINT;
+    else if (strcmp(t->valuestring, "spot") == 0)
+        l->type = APP_LIGHT_SPOT;
+    else if (strcmp(t->valuestring, "directional") == 0)
+        l->type = APP_LIGHT_DIRECTIONAL;
+    else {
+        pj_path_key(c, "type");
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "unknown light type \"%.*s\" (expected point, spot or directional)", 64,
+                       t->valuestring);
+    }
+    return APP_OK;
+}
+
+static app_result read_direction(pj_ctx *c, const cJSON *item, app_light *l)
+{
+    app_result r = pj_get_vec(c, item, "direction", 1, 3, PJ_ANY, l->direction);
+    if (r != APP_OK)
+        return r;
+    double *d = l->direction;
+    /* Scale first so that tiny and huge (finite) vectors normalise without under/overflow. */
+    double m = fmax(fabs(d[0]), fmax(fabs(d[1]), fabs(d[2])));
+    if (m == 0) {
+        pj_path_key(c, "direction");
+        return pj_fail(c, APP_ERR_SCHEMA, "must not be the zero vector");
+    }
+    double x = d[0] / m, y = d[1] / m, z = d[2] / m;
+    double len = sqrt(x * x + y * y + z * z);
+    d[0] = x / len;
+    d[1] = y / len;
+    d[2] = z / len;
+    return APP_OK;
+}
+
+static app_result read_light(pj_ctx *c, const cJSON *item, int index, app_light *l)
+{
+    if (!cJSON_IsObject(item))
+        return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(item));
+    pj_default_light(l);
+    snprintf(l->name, sizeof l->name, "light-%d", index);
+    app_result r;
+    if ((r = pj_get_string(c, item, "name", 0, 0, l->name, sizeof l->name)) != APP_OK ||
+        (r = read_type(c, item, l)) != APP_OK)
+        return r;
+    if (l->type != APP_LIGHT_DIRECTIONAL &&
+        (r = pj_get_vec(c, item, "position", 1, 3, PJ_ANY, l->position_mm)) != APP_OK)
+        return r;
+    if (l->type != APP_LIGHT_POINT && (r = read_direction(c, item, l)) != APP_OK)
+        return r;
+    if ((r = pj_get_color(c, item, "color", 0, l->color)) != APP_OK ||
+        (r = pj_get_float(c, item, "intensity", 0, PJ_FLOAT_NONNEG, &l->intensity)) != APP_OK)
+        return r;
+    memcpy(l->specular, l->color, sizeof l->specular); /* specular defaults to color */
+    if ((r = pj_get_color(c, item, "specular", 0, l->specular)) != APP_OK ||
+        (r = pj_get_vecf(c, item, "attenuation", 0, 3, PJ_FLOAT_NONNEG, l->attenuation)) != APP_OK)
+        return r;
+    if (l->attenuation[0] == 0 && l->attenuation[1] == 0 && l->attenuation[2] == 0) {
+        pj_path_key(c, "attenuation");
+        return pj_fail(c, APP_ERR_SCHEMA, "at least one coefficient must be > 0");
+    }
+    if (l->type == APP_LIGHT_SPOT) {
+        if ((r = pj_get_float(c, item, "inner", 0, SPOT_ANGLE, &l->inner_deg)) != APP_OK ||
+            (r = pj_get_float(c, item, "outer", 0, SPOT_ANGLE, &l->outer_deg)) != APP_OK)
+            return r;
+        /* The falloff is a smoothstep between the two cones; equal edges would divide by 0. */
+        if (!(l->inner_deg < l->outer_deg)) {
+            pj_path_key(c, "inner");
+            return pj_fail(c, APP_ERR_SCHEMA, "must be < outer (%g), got %g", l->outer_deg,
+                           l->inner_deg);
+        }
+    }
+    return APP_OK;
+}
+
+app_result pj_read_lights(pj_ctx *c, const cJSON *root)
+{
+    const cJSON *list;
+    app_result r = pj_member(c, root, "lights", cJSON_Array, 0, &list);
+    if (r != APP_OK || !list)
+        return r;
+    size_t mark = pj_path_key(c, "lights");
+    int count;
+    if ((r = pj_check_count(c, list, "lights", &count)) != APP_OK)
+        return r;
+    app_project *p = c->p;
+    p->lights = pj_calloc((size_t)count, sizeof *p->lights);
+    if (!p->lights)
+        return pj_fail(c, APP_ERR_OUT_OF_MEMORY, "out of memory (%d lights)", count);
+    int i = 0;
+    for (const cJSON *item = list->child; item; item = item->next, i++) {
+        size_t l_mark = pj_path_index(c, i);
+        if ((r = read_light(c, item, i, &p->lights[i])) != APP_OK)
+            return r;
+        p->light_count = i + 1;
+        pj_path_restore(c, l_mark);
+    }
+    pj_path_restore(c, mark);
+    return APP_OK;
+}

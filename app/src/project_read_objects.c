@@ -1,0 +1,137 @@
+/* $.objects: primitives ("shape") and imported models ("model") placed in the room. */
+#include "project_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static const char *const shape_names[] = {"box", "sphere", "cylinder", "plane", "torus"};
+
+static app_result read_shape(pj_ctx *c, const cJSON *shape, app_object *o)
+{
+    size_t mark = pj_path_key(c, "shape");
+    if (!cJSON_IsString(shape))
+        return pj_fail(c, APP_ERR_SCHEMA, "expected a string, got %s", pj_type_name(shape));
+    for (int k = 0; k < (int)(sizeof shape_names / sizeof shape_names[0]); k++) {
+        if (strcmp(shape->valuestring, shape_names[k]) == 0) {
+            o->shape = (app_shape)k;
+            pj_path_restore(c, mark);
+            return APP_OK;
+        }
+    }
+    return pj_fail(c, APP_ERR_SCHEMA,
+                   "unknown shape \"%.*s\" (expected box, sphere, cylinder, plane or torus)", 64,
+                   shape->valuestring);
+}
+
+/* Primitive sizes: all > 0, except a plane's unused z (>= 0, and it may be left out). */
+static app_result read_size(pj_ctx *c, const cJSON *item, app_object *o)
+{
+    const cJSON *size;
+    app_result r = pj_member(c, item, "size", cJSON_Array, 1, &size);
+    if (r != APP_OK)
+        return r;
+    size_t mark = pj_path_key(c, "size");
+    int count = cJSON_GetArraySize(size);
+    int plane = o->shape == APP_SHAPE_PLANE;
+    if (count != 3 && !(plane && count == 2))
+        return pj_fail(c, APP_ERR_SCHEMA, "expected an array of %s numbers, got %d element%s",
+                       plane ? "2 or 3" : "3", count, count == 1 ? "" : "s");
+    double v[3] = {0, 0, 0};
+    for (int i = 0; i < count; i++) {
+        size_t e_mark = pj_path_index(c, i);
+        pj_range range = (plane && i == 2) ? (pj_range){0.0, HUGE_VAL, 0, 0, 0} : PJ_POSITIVE;
+        if ((r = pj_check_number(c, cJSON_GetArrayItem(size, i), range, &v[i])) != APP_OK)
+            return r;
+        pj_path_restore(c, e_mark);
+    }
+    if (o->shape == APP_SHAPE_TORUS && 2 * v[2] > (v[0] < v[1] ? v[0] : v[1])) {
+        pj_path_index(c, 2);
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "a torus tube (%g) cannot be thicker than half its outer diameter (%g)",
+                       v[2], v[0] < v[1] ? v[0] : v[1]);
+    }
+    memcpy(o->size_mm, v, sizeof v);
+    pj_path_restore(c, mark);
+    return APP_OK;
+}
+
+static app_result read_scale(pj_ctx *c, const cJSON *item, app_object *o)
+{
+    app_result r = pj_get_vec(c, item, "scale", 0, 3, PJ_ANY, o->scale);
+    if (r != APP_OK)
+        return r;
+    for (int i = 0; i < 3; i++) {
+        if (o->scale[i] == 0) {
+            pj_path_key(c, "scale");
+            pj_path_index(c, i);
+            return pj_fail(c, APP_ERR_SCHEMA, "must not be 0");
+        }
+    }
+    return APP_OK;
+}
+
+static app_result read_object(pj_ctx *c, const cJSON *item, int index, app_object *o)
+{
+    if (!cJSON_IsObject(item))
+        return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(item));
+    pj_default_object(o);
+    snprintf(o->name, sizeof o->name, "object-%d", index);
+    app_result r = pj_get_string(c, item, "name", 0, 0, o->name, sizeof o->name);
+    if (r != APP_OK)
+        return r;
+
+    const cJSON *shape = cJSON_GetObjectItemCaseSensitive(item, "shape");
+    const cJSON *model = cJSON_GetObjectItemCaseSensitive(item, "model");
+    if (!shape == !model)
+        return pj_fail(c, APP_ERR_SCHEMA, "%s (an object has exactly one of the two)",
+                       shape ? "has both \"shape\" and \"model\""
+                             : "needs a \"shape\" or a \"model\"");
+    if (shape) {
+        if ((r = read_shape(c, shape, o)) != APP_OK || (r = read_size(c, item, o)) != APP_OK)
+            return r;
+    } else {
+        char rel[sizeof o->model];
+        if ((r = pj_get_string(c, item, "model", 1, 0, rel, sizeof rel)) != APP_OK)
+            return r;
+        o->shape = APP_SHAPE_MODEL;
+        size_t mark = pj_path_key(c, "model");
+        if ((r = pj_resolve_file(c, rel, o->model, sizeof o->model)) != APP_OK)
+            return r;
+        pj_path_restore(c, mark);
+    }
+    if ((r = pj_get_vec(c, item, "position", 1, 3, PJ_ANY, o->position_mm)) != APP_OK ||
+        (r = pj_get_vec(c, item, "rotation", 0, 3, PJ_ANY, o->rotation_deg)) != APP_OK ||
+        (r = read_scale(c, item, o)) != APP_OK)
+        return r;
+
+    char inline_name[sizeof o->name + 16];
+    snprintf(inline_name, sizeof inline_name, "%s#material", o->name);
+    return pj_material_ref(c, item, "material", inline_name, &o->material);
+}
+
+app_result pj_read_objects(pj_ctx *c, const cJSON *root)
+{
+    const cJSON *list;
+    app_result r = pj_member(c, root, "objects", cJSON_Array, 0, &list);
+    if (r != APP_OK || !list)
+        return r;
+    size_t mark = pj_path_key(c, "objects");
+    int count;
+    if ((r = pj_check_count(c, list, "objects", &count)) != APP_OK)
+        return r;
+    app_project *p = c->p;
+    p->objects = pj_calloc((size_t)count, sizeof *p->objects);
+    if (!p->objects)
+        return pj_fail(c, APP_ERR_OUT_OF_MEMORY, "out of memory (%d objects)", count);
+    int i = 0;
+    for (const cJSON *item = list->child; item; item = item->next, i++) {
+        size_t o_mark = pj_path_index(c, i);
+        if ((r = read_object(c, item, i, &p->objects[i])) != APP_OK)
+            return r;
+        p->object_count = i + 1;
+        pj_path_restore(c, o_mark);
+    }
+    pj_path_restore(c, mark);
+    return APP_OK;
+}

@@ -1,0 +1,53 @@
+/* $.render: image size, supersampling, ambient light and tone mapping. */
+#include "project_internal.h"
+
+#include <math.h>
+
+static const pj_range EXPOSURE = {-64.0, 64.0, 0, 0, 1};
+
+app_result pj_read_render(pj_ctx *c, const cJSON *root)
+{
+    app_render_settings *out = &c->p->render;
+    pj_default_render(out);
+    const cJSON *render;
+    app_result r = pj_member(c, root, "render", cJSON_Object, 0, &render);
+    if (r != APP_OK || !render)
+        return r;
+    size_t mark = pj_path_key(c, "render");
+    if ((r = pj_get_color(c, render, "ambient", 0, out->ambient)) != APP_OK ||
+        (r = pj_get_float(c, render, "exposure", 0, EXPOSURE, &out->exposure_ev)) != APP_OK ||
+        (r = pj_get_float(c, render, "white", 0, PJ_POSITIVE, &out->white)) != APP_OK ||
+        (r = pj_get_int(c, render, "supersample", 0, 1, 4, &out->supersample)) != APP_OK)
+        return r;
+
+    const cJSON *size;
+    if ((r = pj_member(c, render, "size", cJSON_Array, 0, &size)) != APP_OK)
+        return r;
+    if (size) {
+        size_t s_mark = pj_path_key(c, "size");
+        int count = cJSON_GetArraySize(size);
+        if (count != 2)
+            return pj_fail(c, APP_ERR_SCHEMA,
+                           "expected an array of 2 integers [width, height], got %d element%s",
+                           count, count == 1 ? "" : "s");
+        int wh[2];
+        for (int i = 0; i < 2; i++) {
+            size_t e_mark = pj_path_index(c, i);
+            double v;
+            if ((r = pj_check_number(c, cJSON_GetArrayItem(size, i), PJ_ANY, &v)) != APP_OK)
+                return r;
+            if (v != floor(v))
+                return pj_fail(c, APP_ERR_SCHEMA, "expected an integer, got %g", v);
+            if (v < 1 || v > APP_PROJECT_MAX_IMAGE_SIDE)
+                return pj_fail(c, APP_ERR_SCHEMA, "must be in [1, %d], got %g",
+                               APP_PROJECT_MAX_IMAGE_SIDE, v);
+            wh[i] = (int)v;
+            pj_path_restore(c, e_mark);
+        }
+        out->width = wh[0];
+        out->height = wh[1];
+        pj_path_restore(c, s_mark);
+    }
+    pj_path_restore(c, mark);
+    return APP_OK;
+}

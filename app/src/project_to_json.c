@@ -1,0 +1,326 @@
+/* app_project -> JSON tree (format version APP_PROJECT_VERSION). Checks what the tree needs
+ * from the structure (counts, material indices, finite numbers, terminated strings); the value
+ * rules are checked afterwards by reading the text back (project_write.c). Every field is
+ * written, defaults included, so a file says everything it means. */
+#include "project_internal.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* A builder with a sticky result: after the first failure every call does nothing. */
+typedef struct jb {
+    pj_ctx *c;
+    app_result r;
+    const app_project *p;
+    const char *dest_dir; /* absolute folder the file goes to, or NULL */
+} jb;
+
+static void oom(jb *b)
+{
+    if (b->r == APP_OK)
+        b->r = pj_fail(b->c, APP_ERR_OUT_OF_MEMORY, "out of memory");
+}
+
+static void attach(jb *b, cJSON *parent, const char *key, cJSON *item)
+{
+    if (!item) {
+        oom(b);
+        return;
+    }
+    cJSON_bool ok =
+        key ? cJSON_AddItemToObject(parent, key, item) : cJSON_AddItemToArray(parent, item);
+    if (!ok) {
+        cJSON_Delete(item);
+        oom(b);
+    }
+}
+
+static cJSON *put_container(jb *b, cJSON *parent, const char *key, int array)
+{
+    if (b->r != APP_OK)
+        return NULL;
+    cJSON *item = array ? cJSON_CreateArray() : cJSON_CreateObject();
+    attach(b, parent, key, item);
+    return b->r == APP_OK ? item : NULL;
+}
+
+static int finite_or_fail(jb *b, double v)
+{
+    if (isfinite(v))
+        return 1;
+    b->r = pj_fail(b->c, APP_ERR_SCHEMA, "cannot write a non-finite number (%g)", v);
+    return 0;
+}
+
+static void put_num(jb *b, cJSON *obj, const char *key, double v, int is_float)
+{
+    if (b->r != APP_OK)
+        return;
+    size_t mark = pj_path_key(b->c, key);
+    if (!finite_or_fail(b, v))
+        return;
+    pj_path_restore(b->c, mark);
+    attach(b, obj, key, is_float ? pj_json_float((float)v) : pj_json_double(v));
+}
+
+static void put_vec(jb *b, cJSON *obj, const char *key, const double *d, const float *f, int n)
+{
+    cJSON *arr = put_container(b, obj, key, 1);
+    if (!arr)
+        return;
+    size_t mark = pj_path_key(b->c, key);
+    for (int i = 0; i < n && b->r == APP_OK; i++) {
+        size_t m = pj_path_index(b->c, i);
+        double v = d ? d[i] : (double)f[i];
+        if (!finite_or_fail(b, v))
+            return;
+        pj_path_restore(b->c, m);
+        attach(b, arr, NULL, d ? pj_json_double(v) : pj_json_float(f[i]));
+    }
+    pj_path_restore(b->c, mark);
+}
+
+/* Fixed-size name fields must hold a terminated string. */
+static void put_str(jb *b, cJSON *obj, const char *key, const char *s, size_t cap)
+{
+    if (b->r != APP_OK)
+        return;
+    if (!memchr(s, '\0', cap)) {
+        pj_path_key(b->c, key);
+        b->r = pj_fail(b->c, APP_ERR_SCHEMA, "string is not terminated within %zu bytes", cap);
+        return;
+    }
+    attach(b, obj, key, cJSON_CreateString(s));
+}
+
+/* A stored absolute path, written relative to the destination's folder when possible. */
+static void put_path(jb *b, cJSON *obj, const char *key, const char *path, size_t cap)
+{
+    if (b->r != APP_OK)
+        return;
+    if (!memchr(path, '\0', cap)) {
+        put_str(b, obj, key, path, cap); /* reports the missing terminator */
+        return;
+    }
+    if (path[0] != '/' || !b->dest_dir) {
+        put_str(b, obj, key, path, cap);
+        return;
+    }
+    char *rel = pj_relative_path(b->dest_dir, path);
+    if (!rel) {
+        oom(b);
+        return;
+    }
+    attach(b, obj, key, cJSON_CreateString(rel));
+    free(rel);
+}
+
+static const char *material_name(jb *b, int index)
+{
+    if (index < 0 || index >= b->p->material_count) {
+        b->r = pj_fail(b->c, APP_ERR_SCHEMA, "material index %d out of range (%d materials)", index,
+                       b->p->material_count);
+        return NULL;
+    }
+    const app_material *m = &b->p->materials[index];
+    if (!memchr(m->name, '\0', sizeof m->name)) {
+        b->r = pj_fail(b->c, APP_ERR_SCHEMA, "the name of material %d is not terminated", index);
+        return NULL;
+    }
+    return m->name;
+}
+
+static void put_material_ref(jb *b, cJSON *obj, const char *key, int index)
+{
+    if (b->r != APP_OK)
+        return;
+    size_t mark = pj_path_key(b->c, key);
+    const char *name = material_name(b, index);
+    if (!name)
+        return;
+    pj_path_restore(b->c, mark);
+    attach(b, obj, key, cJSON_CreateString(name));
+}
+
+static void put_materials(jb *b, cJSON *root)
+{
+    cJSON *dict = put_container(b, root, "materials", 0);
+    size_t mark = pj_path_key(b->c, "materials");
+    for (int i = 0; i < b->p->material_count && b->r == APP_OK; i++) {
+        const app_material *m = &b->p->materials[i];
+        size_t m_mark = pj_path_index(b->c, i);
+        const char *name = material_name(b, i);
+        if (!name)
+            return;
+        if (!name[0]) {
+            b->r = pj_fail(b->c, APP_ERR_SCHEMA, "a material name must not be empty");
+            return;
+        }
+        cJSON *o = put_container(b, dict, name, 0);
+        put_vec(b, o, "diffuse", NULL, m->diffuse, 3);
+        put_vec(b, o, "ambient", NULL, m->ambient, 3);
+        put_vec(b, o, "specular", NULL, m->specular, 3);
+        put_vec(b, o, "emissive", NULL, m->emissive, 3);
+        put_num(b, o, "shininess", m->shininess, 1);
+        if (m->texture[0])
+            put_path(b, o, "texture", m->texture, sizeof m->texture);
+        put_vec(b, o, "texture_size", NULL, m->texture_size_mm, 2);
+        pj_path_restore(b->c, m_mark);
+    }
+    pj_path_restore(b->c, mark);
+}
+
+static void put_room(jb *b, cJSON *root)
+{
+    const app_room *room = &b->p->room;
+    cJSON *o = put_container(b, root, "room", 0);
+    size_t mark = pj_path_key(b->c, "room");
+    put_num(b, o, "width", room->width_mm, 0);
+    put_num(b, o, "depth", room->depth_mm, 0);
+    put_num(b, o, "height", room->height_mm, 0);
+    put_material_ref(b, o, "floor", room->floor_material);
+    put_material_ref(b, o, "walls", room->wall_material);
+    put_material_ref(b, o, "ceiling", room->ceiling_material);
+    if (b->r == APP_OK)
+        pj_path_restore(b->c, mark);
+}
+
+static const char *const shape_names[] = {"box", "sphere", "cylinder", "plane", "torus"};
+
+static void put_object(jb *b, cJSON *list, const app_object *obj)
+{
+    cJSON *o = put_container(b, list, NULL, 0);
+    put_str(b, o, "name", obj->name, sizeof obj->name);
+    if (b->r != APP_OK)
+        return;
+    if (obj->shape == APP_SHAPE_MODEL) {
+        put_path(b, o, "model", obj->model, sizeof obj->model);
+    } else if ((unsigned)obj->shape < sizeof shape_names / sizeof shape_names[0]) {
+        attach(b, o, "shape", cJSON_CreateString(shape_names[obj->shape]));
+    } else {
+        pj_path_key(b->c, "shape");
+        b->r = pj_fail(b->c, APP_ERR_SCHEMA, "unknown shape %d", (int)obj->shape);
+        return;
+    }
+    put_vec(b, o, "position", obj->position_mm, NULL, 3);
+    put_vec(b, o, "rotation", obj->rotation_deg, NULL, 3);
+    put_vec(b, o, "scale", obj->scale, NULL, 3);
+    if (obj->shape != APP_SHAPE_MODEL)
+        put_vec(b, o, "size", obj->size_mm, NULL, 3);
+    put_material_ref(b, o, "material", obj->material);
+}
+
+static const char *const light_types[] = {"point", "spot", "directional"};
+
+static void put_light(jb *b, cJSON *list, const app_light *l)
+{
+    cJSON *o = put_container(b, list, NULL, 0);
+    put_str(b, o, "name", l->name, sizeof l->name);
+    if (b->r != APP_OK)
+        return;
+    if ((unsigned)l->type >= sizeof light_types / sizeof light_types[0]) {
+        pj_path_key(b->c, "type");
+        b->r = pj_fail(b->c, APP_ERR_SCHEMA, "unknown light type %d", (int)l->type);
+        return;
+    }
+    attach(b, o, "type", cJSON_CreateString(light_types[l->type]));
+    if (l->type != APP_LIGHT_DIRECTIONAL)
+        put_vec(b, o, "position", l->position_mm, NULL, 3);
+    if (l->type != APP_LIGHT_POINT)
+        put_vec(b, o, "direction", l->direction, NULL, 3);
+    put_vec(b, o, "color", NULL, l->color, 3);
+    put_num(b, o, "intensity", l->intensity, 1);
+    put_vec(b, o, "specular", NULL, l->specular, 3);
+    put_vec(b, o, "attenuation", NULL, l->attenuation, 3);
+    if (l->type == APP_LIGHT_SPOT) {
+        put_num(b, o, "inner", l->inner_deg, 1);
+        put_num(b, o, "outer", l->outer_deg, 1);
+    }
+}
+
+static void put_camera(jb *b, cJSON *list, const app_camera *cam)
+{
+    cJSON *o = put_container(b, list, NULL, 0);
+    put_str(b, o, "name", cam->name, sizeof cam->name);
+    put_vec(b, o, "position", cam->position_mm, NULL, 3);
+    put_vec(b, o, "target", cam->target_mm, NULL, 3);
+    put_vec(b, o, "up", cam->up, NULL, 3);
+    put_num(b, o, "fov", cam->fov_deg, 0);
+}
+
+static void put_render(jb *b, cJSON *root)
+{
+    const app_render_settings *r = &b->p->render;
+    cJSON *o = put_container(b, root, "render", 0);
+    size_t mark = pj_path_key(b->c, "render");
+    put_vec(b, o, "ambient", NULL, r->ambient, 3);
+    put_num(b, o, "exposure", r->exposure_ev, 1);
+    put_num(b, o, "white", r->white, 1);
+    cJSON *size = put_container(b, o, "size", 1);
+    if (size) {
+        attach(b, size, NULL, cJSON_CreateNumber(r->width));
+        attach(b, size, NULL, cJSON_CreateNumber(r->height));
+    }
+    if (b->r == APP_OK)
+        attach(b, o, "supersample", cJSON_CreateNumber(r->supersample));
+    if (b->r == APP_OK)
+        pj_path_restore(b->c, mark);
+}
+
+/* A list must have a pointer for its count, and a count the reader accepts. */
+static int check_list(jb *b, const char *key, const void *items, int count)
+{
+    if (count < 0 || count > APP_PROJECT_MAX_ITEMS || (count > 0 && !items)) {
+        pj_path_key(b->c, key);
+        b->r = pj_fail(b->c, APP_ERR_SCHEMA, "invalid list (count %d%s)", count,
+                       count > 0 && !items ? ", no items" : "");
+        return 0;
+    }
+    return 1;
+}
+
+app_result pj_project_to_json(pj_ctx *c, const app_project *p, const char *dest_dir, cJSON **out)
+{
+    *out = NULL;
+    jb b = {c, APP_OK, p, dest_dir};
+    if (!check_list(&b, "materials", p->materials, p->material_count) ||
+        !check_list(&b, "objects", p->objects, p->object_count) ||
+        !check_list(&b, "lights", p->lights, p->light_count) ||
+        !check_list(&b, "cameras", p->cameras, p->camera_count))
+        return b.r;
+    cJSON *root = cJSON_CreateObject();
+    if (!root)
+        return pj_fail(c, APP_ERR_OUT_OF_MEMORY, "out of memory");
+    attach(&b, root, "version", cJSON_CreateNumber(APP_PROJECT_VERSION));
+    put_str(&b, root, "name", p->name, sizeof p->name);
+    put_room(&b, root);
+    put_materials(&b, root);
+
+    const char *lists[] = {"objects", "lights", "cameras"};
+    int counts[] = {p->object_count, p->light_count, p->camera_count};
+    for (int k = 0; k < 3 && b.r == APP_OK; k++) {
+        cJSON *list = put_container(&b, root, lists[k], 1);
+        size_t mark = pj_path_key(c, lists[k]);
+        for (int i = 0; i < counts[k] && b.r == APP_OK; i++) {
+            size_t i_mark = pj_path_index(c, i);
+            if (k == 0)
+                put_object(&b, list, &p->objects[i]);
+            else if (k == 1)
+                put_light(&b, list, &p->lights[i]);
+            else
+                put_camera(&b, list, &p->cameras[i]);
+            if (b.r == APP_OK)
+                pj_path_restore(c, i_mark);
+        }
+        if (b.r == APP_OK)
+            pj_path_restore(c, mark);
+    }
+    put_render(&b, root);
+    if (b.r != APP_OK) {
+        cJSON_Delete(root);
+        return b.r;
+    }
+    *out = root;
+    return APP_OK;
+}
