@@ -39,9 +39,8 @@ int app_cli_demo(int argc, char **argv)
     if (rc != CLI_OK)
         return rc;
     fprintf(stderr, "tessera demo: %s, %d objects, %d lights, %d cameras, on %s (%s)\n",
-            s.project.name, s.project.object_count, s.project.light_count,
-            s.project.camera_count, rd_backend_name(rd_context_backend(s.ctx)),
-            rd_context_description(s.ctx));
+            s.project.name, s.project.object_count, s.project.light_count, s.project.camera_count,
+            rd_backend_name(rd_context_backend(s.ctx)), rd_context_description(s.ctx));
     for (int i = 0; rc == CLI_OK && i < s.project.camera_count; i++) {
         const char *cam = s.project.cameras[i].name;
         rd_view view;

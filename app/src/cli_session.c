@@ -88,14 +88,14 @@ int cli_render_to_file(cli_session *s, const rd_view *view, const char *path)
     rd_image_result ir;
     if (is_float) {
         rr = rd_read_linear(s->ctx, pixels, count);
-        ir = rr == RD_OK ? rd_image_write_float(path, view->width, view->height, 4, pixels, err,
-                                                sizeof err)
-                         : RD_IMAGE_ERR_IO;
+        ir = rr == RD_OK
+                 ? rd_image_write_float(path, view->width, view->height, 4, pixels, err, sizeof err)
+                 : RD_IMAGE_ERR_IO;
     } else {
         rr = rd_read_rgba8(s->ctx, pixels, count);
-        ir = rr == RD_OK ? rd_image_write_rgba8(path, view->width, view->height, pixels, err,
-                                                sizeof err)
-                         : RD_IMAGE_ERR_IO;
+        ir = rr == RD_OK
+                 ? rd_image_write_rgba8(path, view->width, view->height, pixels, err, sizeof err)
+                 : RD_IMAGE_ERR_IO;
     }
     free(pixels);
     if (rr != RD_OK) {

@@ -94,8 +94,8 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
     const app_material *am = &p->materials[o->material];
     if (am->texture[0]) {
         double u_mm = o->size_mm[0] * o->scale[0];
-        double v_mm = o->shape == APP_SHAPE_PLANE ? o->size_mm[1] * o->scale[1]
-                                                  : o->size_mm[2] * o->scale[2];
+        double v_mm =
+            o->shape == APP_SHAPE_PLANE ? o->size_mm[1] * o->scale[1] : o->size_mm[2] * o->scale[2];
         if (o->shape == APP_SHAPE_SPHERE || o->shape == APP_SHAPE_CYLINDER ||
             o->shape == APP_SHAPE_TORUS)
             u_mm *= 3.14159265358979323846;

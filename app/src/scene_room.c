@@ -19,7 +19,8 @@ static rd_mesh upload_quad(rd_context *ctx, const quad *q, const float tex_size_
     for (int c = 0; c < 4; c++) {
         float su = (float)(c & 1), sv = (float)(c >> 1);
         for (int k = 0; k < 3; k++) {
-            pos[c * 3 + k] = q->origin[k] + su * q->u_len * q->u_axis[k] + sv * q->v_len * q->v_axis[k];
+            pos[c * 3 + k] =
+                q->origin[k] + su * q->u_len * q->u_axis[k] + sv * q->v_len * q->v_axis[k];
             nrm[c * 3 + k] = n[k];
         }
         uv[c * 2] = su * q->u_len / tex_size_m[0];
@@ -27,8 +28,11 @@ static rd_mesh upload_quad(rd_context *ctx, const quad *q, const float tex_size_
         uv[c * 2 + 1] = -sv * q->v_len / tex_size_m[1];
     }
     static const uint32_t idx[6] = {0, 1, 3, 0, 3, 2};
-    return rd_mesh_create(ctx, &(rd_mesh_desc){.positions = pos, .normals = nrm, .uvs = uv,
-                                               .indices = idx, .vertex_count = 4,
+    return rd_mesh_create(ctx, &(rd_mesh_desc){.positions = pos,
+                                               .normals = nrm,
+                                               .uvs = uv,
+                                               .indices = idx,
+                                               .vertex_count = 4,
                                                .index_count = 6});
 }
 
@@ -38,7 +42,7 @@ app_result app_scene_add_room(rd_context *ctx, const app_project *p, app_scene *
     float w = (float)(p->room.width_mm * 1e-3), d = (float)(p->room.depth_mm * 1e-3),
           h = (float)(p->room.height_mm * 1e-3);
     const quad quads[6] = {
-        {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, w, d}, /* floor, normal +Z */
+        {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, w, d},  /* floor, normal +Z */
         {{0, d, h}, {1, 0, 0}, {0, -1, 0}, w, d}, /* ceiling, normal -Z */
         {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, h, w},  /* wall y = 0, normal +Y (u up, v along) */
         {{w, d, 0}, {0, 0, 1}, {-1, 0, 0}, h, w}, /* wall y = d, normal -Y */
@@ -46,8 +50,9 @@ app_result app_scene_add_room(rd_context *ctx, const app_project *p, app_scene *
         {{w, 0, 0}, {0, 0, 1}, {0, 1, 0}, h, d},  /* wall x = w, normal -X */
     };
     for (int i = 0; i < 6; i++) {
-        int mi = i == 0 ? p->room.floor_material
-                        : i == 1 ? p->room.ceiling_material : p->room.wall_material;
+        int mi = i == 0   ? p->room.floor_material
+                 : i == 1 ? p->room.ceiling_material
+                          : p->room.wall_material;
         const app_material *am = &p->materials[mi];
         rd_material m;
         app_result r = app_scene_material(ctx, p, s, mi, &m, err, err_size);

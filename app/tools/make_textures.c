@@ -43,7 +43,8 @@ static float noise(float u, float v, int cells_x, int cells_y, unsigned seed)
     float fx = x - (float)x0, fy = y - (float)y0;
     fx = fx * fx * (3 - 2 * fx);
     fy = fy * fy * (3 - 2 * fy);
-    float a = lattice(x0, y0, cells_x, cells_y, seed), b = lattice(x0 + 1, y0, cells_x, cells_y, seed);
+    float a = lattice(x0, y0, cells_x, cells_y, seed),
+          b = lattice(x0 + 1, y0, cells_x, cells_y, seed);
     float c = lattice(x0, y0 + 1, cells_x, cells_y, seed),
           d = lattice(x0 + 1, y0 + 1, cells_x, cells_y, seed);
     return (a + (b - a) * fx) + ((c + (d - c) * fx) - (a + (b - a) * fx)) * fy;
@@ -63,17 +64,20 @@ static int write_tile(const char *dir, const tile_style *s)
             float n = 0.6f * noise(u, v, 4, 4 * h / w, 1) + 0.4f * noise(u, v, 16, 16 * h / w, 2);
             float shade = 1.0f + s->variation * (n - 0.5f);
             if (s->veins > 0.0f) {
-                float vein = fabsf(sinf(6.0f * (u + 0.7f * v) + 5.0f * noise(u, v, 3, 3 * h / w, 3)));
+                float vein =
+                    fabsf(sinf(6.0f * (u + 0.7f * v) + 5.0f * noise(u, v, 3, 3 * h / w, 3)));
                 shade *= 1.0f - s->veins * powf(1.0f - vein, 12.0f);
             }
-            /* A soft bevel: the glaze darkens a little over the last millimetre before the joint. */
+            /* A soft bevel: the glaze darkens a little over the last millimetre before the joint.
+             */
             float bevel = fminf(fmaxf((edge - 0.5f * s->grout_mm) / 1.5f, 0.0f), 1.0f);
             float in_grout = edge < 0.5f * s->grout_mm ? 1.0f : 0.0f;
             for (int k = 0; k < 3; k++) {
                 float glaze = s->glaze[k] * shade * (0.85f + 0.15f * bevel);
                 float c = in_grout ? s->grout[k] * (0.95f + 0.1f * n) : glaze;
                 c = fminf(fmaxf(c, 0.0f), 1.0f);
-                px[((size_t)y * (size_t)w + (size_t)x) * 4 + (size_t)k] = (unsigned char)(c * 255.0f + 0.5f);
+                px[((size_t)y * (size_t)w + (size_t)x) * 4 + (size_t)k] =
+                    (unsigned char)(c * 255.0f + 0.5f);
             }
             px[((size_t)y * (size_t)w + (size_t)x) * 4 + 3] = 255;
         }
@@ -97,9 +101,36 @@ int main(int argc, char **argv)
         return 2;
     }
     const tile_style styles[] = {
-        {"wall-tile-white-300x600", 160, 320, 300, 600, 3, {0.93f, 0.93f, 0.91f}, {0.72f, 0.72f, 0.70f}, 0.06f, 0.0f},
-        {"floor-tile-stone-600x600", 256, 256, 600, 600, 3, {0.46f, 0.44f, 0.41f}, {0.30f, 0.29f, 0.28f}, 0.25f, 0.35f},
-        {"accent-tile-teal-100x100", 64, 64, 100, 100, 2, {0.16f, 0.42f, 0.45f}, {0.80f, 0.80f, 0.78f}, 0.12f, 0.0f},
+        {"wall-tile-white-300x600",
+         160,
+         320,
+         300,
+         600,
+         3,
+         {0.93f, 0.93f, 0.91f},
+         {0.72f, 0.72f, 0.70f},
+         0.06f,
+         0.0f},
+        {"floor-tile-stone-600x600",
+         256,
+         256,
+         600,
+         600,
+         3,
+         {0.46f, 0.44f, 0.41f},
+         {0.30f, 0.29f, 0.28f},
+         0.25f,
+         0.35f},
+        {"accent-tile-teal-100x100",
+         64,
+         64,
+         100,
+         100,
+         2,
+         {0.16f, 0.42f, 0.45f},
+         {0.80f, 0.80f, 0.78f},
+         0.12f,
+         0.0f},
     };
     int failures = 0;
     for (size_t i = 0; i < sizeof styles / sizeof styles[0]; i++)

@@ -40,7 +40,8 @@ rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_s
     vec3 up = {v->up[0], v->up[1], v->up[2]};
     for (int k = 0; k < 3; k++)
         if (!isfinite(eye[k]) || !isfinite(target[k]) || !isfinite(up[k]))
-            return rd_fail(RD_ERR_INVALID_ARGUMENT, "camera position, target and up must be finite");
+            return rd_fail(RD_ERR_INVALID_ARGUMENT,
+                           "camera position, target and up must be finite");
     vec3 dir;
     glm_vec3_sub(target, eye, dir);
     float dist = glm_vec3_norm(dir);

@@ -53,7 +53,8 @@ static EGLDisplay open_display(void)
         return d;
 
     PFNEGLQUERYDEVICESEXTPROC query_devices;
-    __extension__ query_devices = (PFNEGLQUERYDEVICESEXTPROC)eglGetProcAddress("eglQueryDevicesEXT");
+    __extension__ query_devices =
+        (PFNEGLQUERYDEVICESEXTPROC)eglGetProcAddress("eglQueryDevicesEXT");
     if (!query_devices)
         return EGL_NO_DISPLAY;
     EGLDeviceEXT devices[8];
@@ -68,7 +69,8 @@ static EGLDisplay open_display(void)
     return EGL_NO_DISPLAY;
 }
 
-rd_result rd_backend_egl_create(void **state, const rd_backend_ops **ops, void *(**gpa)(const char *))
+rd_result rd_backend_egl_create(void **state, const rd_backend_ops **ops,
+                                void *(**gpa)(const char *))
 {
     egl_state *st = calloc(1, sizeof *st);
     if (!st)
@@ -76,9 +78,10 @@ rd_result rd_backend_egl_create(void **state, const rd_backend_ops **ops, void *
     st->display = open_display();
     if (st->display == EGL_NO_DISPLAY) {
         free(st);
-        return rd_fail(RD_ERR_BACKEND_UNAVAILABLE,
-                       "EGL: no surfaceless or device display (EGL error 0x%x); try --backend osmesa",
-                       (unsigned)eglGetError());
+        return rd_fail(
+            RD_ERR_BACKEND_UNAVAILABLE,
+            "EGL: no surfaceless or device display (EGL error 0x%x); try --backend osmesa",
+            (unsigned)eglGetError());
     }
     if (!eglBindAPI(EGL_OPENGL_API)) {
         egl_destroy(st);
@@ -95,13 +98,14 @@ rd_result rd_backend_egl_create(void **state, const rd_backend_ops **ops, void *
                                       EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                                       EGL_NONE};
-    st->context = eglCreateContext(st->display, n > 0 ? config : EGL_NO_CONFIG_KHR,
-                                   EGL_NO_CONTEXT, context_attribs);
+    st->context = eglCreateContext(st->display, n > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
+                                   context_attribs);
     if (st->context == EGL_NO_CONTEXT) {
         EGLint e = eglGetError();
         egl_destroy(st);
         return rd_fail(RD_ERR_BACKEND_UNAVAILABLE,
-                       "EGL: cannot create an OpenGL 3.3 core context (EGL error 0x%x)", (unsigned)e);
+                       "EGL: cannot create an OpenGL 3.3 core context (EGL error 0x%x)",
+                       (unsigned)e);
     }
     if (!eglMakeCurrent(st->display, EGL_NO_SURFACE, EGL_NO_SURFACE, st->context)) {
         EGLint e = eglGetError();

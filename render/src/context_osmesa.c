@@ -55,7 +55,8 @@ rd_result rd_backend_osmesa_create(void **state, const rd_backend_ops **ops,
     st->context = OSMesaCreateContextAttribs(attribs, NULL);
     if (!st->context) {
         free(st);
-        return rd_fail(RD_ERR_BACKEND_UNAVAILABLE, "OSMesa: cannot create an OpenGL 3.3 core context");
+        return rd_fail(RD_ERR_BACKEND_UNAVAILABLE,
+                       "OSMesa: cannot create an OpenGL 3.3 core context");
     }
     if (!OSMesaMakeCurrent(st->context, st->buffer, GL_UNSIGNED_BYTE, 16, 16)) {
         osmesa_destroy(st);

@@ -54,7 +54,8 @@ rd_result rd_mesh_data_box(rd_mesh_data *m)
     if (alloc_mesh(m, 24, 36) != RD_OK)
         return RD_ERR_OUT_OF_MEMORY;
     /* Each face: normal axis, sign; u and v axes chosen so that u x v = normal. */
-    static const int faces[6][3] = {{0, 1, 2}, {0, -1, 2}, {1, 1, 2}, {1, -1, 2}, {2, 1, 0}, {2, -1, 0}};
+    static const int faces[6][3] = {{0, 1, 2},  {0, -1, 2}, {1, 1, 2},
+                                    {1, -1, 2}, {2, 1, 0},  {2, -1, 0}};
     for (int f = 0; f < 6; f++) {
         int axis = faces[f][0], sign = faces[f][1];
         int ua = (axis + 1) % 3, va = (axis + 2) % 3;
@@ -182,7 +183,10 @@ void rd_mesh_data_free(rd_mesh_data *m)
 
 rd_mesh_desc rd_mesh_data_desc(const rd_mesh_data *m)
 {
-    return (rd_mesh_desc){.positions = m->positions, .normals = m->normals, .uvs = m->uvs,
-                          .indices = m->indices, .vertex_count = m->vertex_count,
+    return (rd_mesh_desc){.positions = m->positions,
+                          .normals = m->normals,
+                          .uvs = m->uvs,
+                          .indices = m->indices,
+                          .vertex_count = m->vertex_count,
                           .index_count = m->index_count};
 }

@@ -18,7 +18,8 @@ typedef struct rd_backend_ops {
     void (*destroy)(void *state);
 } rd_backend_ops;
 
-rd_result rd_backend_egl_create(void **state, const rd_backend_ops **ops, void *(**gpa)(const char *));
+rd_result rd_backend_egl_create(void **state, const rd_backend_ops **ops,
+                                void *(**gpa)(const char *));
 rd_result rd_backend_osmesa_create(void **state, const rd_backend_ops **ops,
                                    void *(**gpa)(const char *));
 

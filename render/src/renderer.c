@@ -35,8 +35,7 @@ static rd_result validate_view(const rd_context *ctx, const rd_view *v, int *sam
         return rd_fail(RD_ERR_INVALID_ARGUMENT, "exposure %g EV is outside (-64, 64)",
                        (double)v->exposure_ev);
     if (v->white < 0.0f || !isfinite(v->white))
-        return rd_fail(RD_ERR_INVALID_ARGUMENT, "tone map white %g must be >= 0",
-                       (double)v->white);
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "tone map white %g must be >= 0", (double)v->white);
     *samples = s;
     return RD_OK;
 }
@@ -124,8 +123,7 @@ static draw_item *sorted_draw_list(rd_context *ctx, const rd_scene *s, const flo
                 c[k] = 0.5f * (m->bounds_min[k] + m->bounds_max[k]);
         vec4 w;
         glm_mat4_mulv((vec4 *)o->transform, c, w);
-        items[i] = (draw_item){i, o->background,
-                               glm_vec3_distance((float *)eye, (float *)w)};
+        items[i] = (draw_item){i, o->background, glm_vec3_distance((float *)eye, (float *)w)};
     }
     qsort(items, (size_t)s->object_count, sizeof *items, compare_items);
     return items;
@@ -253,9 +251,11 @@ rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *v)
         static const float pos[] = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
         static const float nrm[] = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
         static const uint32_t idx[] = {0, 1, 2, 0, 2, 3};
-        ctx->floor_quad = rd_mesh_create(
-            ctx, &(rd_mesh_desc){.positions = pos, .normals = nrm, .indices = idx,
-                                 .vertex_count = 4, .index_count = 6});
+        ctx->floor_quad = rd_mesh_create(ctx, &(rd_mesh_desc){.positions = pos,
+                                                              .normals = nrm,
+                                                              .indices = idx,
+                                                              .vertex_count = 4,
+                                                              .index_count = 6});
         if (!ctx->floor_quad.id)
             return RD_ERR_GL;
     }
@@ -263,8 +263,10 @@ rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *v)
     begin_hdr_pass(ctx);
     const rd_program *p = &ctx->lit[0];
     set_frame_uniforms(p, scene, vp, v->eye);
-    rd_material grey = {.ambient = {0.5f, 0.5f, 0.5f}, .diffuse = {0.5f, 0.5f, 0.5f},
-                        .specular = {0.2f, 0.2f, 0.2f}, .shininess = 32.0f};
+    rd_material grey = {.ambient = {0.5f, 0.5f, 0.5f},
+                        .diffuse = {0.5f, 0.5f, 0.5f},
+                        .specular = {0.2f, 0.2f, 0.2f},
+                        .shininess = 32.0f};
     set_object_uniforms(p, inv_vp, &grey);
     glBindVertexArray(m->vao);
     glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
@@ -315,7 +317,8 @@ rd_result rd_read_linear(rd_context *ctx, float *out, size_t out_count)
     if (!out || out_count < need)
         return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_read_linear: buffer of %zu floats, need %zu",
                        out_count, need);
-    rd_result r = rd_target_ensure(&ctx->linear, ctx->out_width, ctx->out_height, GL_RGBA32F, false);
+    rd_result r =
+        rd_target_ensure(&ctx->linear, ctx->out_width, ctx->out_height, GL_RGBA32F, false);
     if (r != RD_OK)
         return r;
     r = tonemap_pass(ctx, &ctx->frame_view, ctx->frame_samples, ctx->linear.fbo, 1);

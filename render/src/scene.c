@@ -42,7 +42,8 @@ rd_result rd_scene_add_object(rd_scene *s, const rd_object_desc *desc)
     if (!rd_mesh_lookup(s->ctx, desc->mesh))
         return rd_fail(RD_ERR_STALE_HANDLE, "rd_scene_add_object: mesh %u is not a live mesh",
                        desc->mesh.id);
-    if (desc->material.diffuse_texture.id && !rd_texture_lookup(s->ctx, desc->material.diffuse_texture))
+    if (desc->material.diffuse_texture.id &&
+        !rd_texture_lookup(s->ctx, desc->material.diffuse_texture))
         return rd_fail(RD_ERR_STALE_HANDLE, "rd_scene_add_object: texture %u is not live",
                        desc->material.diffuse_texture.id);
     for (int i = 0; i < 16; i++)
@@ -75,7 +76,8 @@ rd_result rd_scene_add_light(rd_scene *s, const rd_light *light)
         float len = sqrtf(l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] +
                           l.direction[2] * l.direction[2]);
         if (!(len > 0.0f) || !isfinite(len))
-            return rd_fail(RD_ERR_INVALID_ARGUMENT, "a spot or directional light needs a direction");
+            return rd_fail(RD_ERR_INVALID_ARGUMENT,
+                           "a spot or directional light needs a direction");
         for (int k = 0; k < 3; k++)
             l.direction[k] /= len;
     }

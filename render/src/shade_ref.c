@@ -81,7 +81,7 @@ void rd_ref_shade(const rd_material *m, const float albedo_scale[3], const float
         normalize_or(h_raw, n, h);
         float spec = rd_ref_blinn_phong_power(dot3(n, h), m->shininess);
         for (int k = 0; k < 3; k++) {
-            lit[k] += factor * c_d[k] * lights[i].diffuse[k] * n_dot_l;            /* eq. 2 */
+            lit[k] += factor * c_d[k] * lights[i].diffuse[k] * n_dot_l;       /* eq. 2 */
             lit[k] += factor * m->specular[k] * lights[i].specular[k] * spec; /* eqs. 3-5 */
         }
     }

@@ -18,15 +18,21 @@ static void *loader(const char *name)
 int main(void)
 {
     PFNEGLGETPLATFORMDISPLAYEXTPROC gpd;
-    __extension__ gpd = (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-    EGLDisplay d = gpd ? gpd(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL) : EGL_NO_DISPLAY;
+    __extension__ gpd =
+        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
+    EGLDisplay d =
+        gpd ? gpd(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL) : EGL_NO_DISPLAY;
     if (d == EGL_NO_DISPLAY || !eglInitialize(d, NULL, NULL)) {
         fprintf(stderr, "no EGL surfaceless display\n");
         return 1;
     }
     eglBindAPI(EGL_OPENGL_API);
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                              3,
+                              EGL_CONTEXT_MINOR_VERSION,
+                              3,
+                              EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
                               EGL_NONE};
     EGLContext c = eglCreateContext(d, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
     CHECK(c != EGL_NO_CONTEXT);
@@ -46,9 +52,8 @@ int main(void)
         rd_mesh m = rd_mesh_create(ctx, &desc);
         rd_mesh_data_free(&pd);
         rd_scene *s = rd_scene_create(ctx);
-        CHECK(rd_scene_add_object(s, &(rd_object_desc){.mesh = m,
-                                                       .material = {.emissive = {9, 0, 0}}}) ==
-              RD_OK);
+        CHECK(rd_scene_add_object(
+                  s, &(rd_object_desc){.mesh = m, .material = {.emissive = {9, 0, 0}}}) == RD_OK);
         rd_view v = {.eye = {0, -3, 0}, .target = {0, 0, 0}, .width = 32, .height = 32};
         CHECK(rd_render(ctx, s, &v) == RD_OK);
         unsigned char px[32 * 32 * 4];

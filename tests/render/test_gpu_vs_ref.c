@@ -83,7 +83,7 @@ static void run_case(rd_context *ctx, rd_mesh plane, rd_light_type type, float s
                      .specular = {0.5f, 0.5f, 0.5f},
                      .shininess = shininess};
     if (emissive_case) {
-        m.emissive[0] = 1.3f; /* wins in red wherever the lit red is below it */
+        m.emissive[0] = 1.3f;  /* wins in red wherever the lit red is below it */
         m.emissive[1] = 0.02f; /* loses in green: the lit green is above it everywhere */
     }
     rd_light light = make_light(type);
@@ -141,8 +141,10 @@ static void run_case(rd_context *ctx, rd_mesh plane, rd_light_type type, float s
               (int)type, (double)shininess, emissive_case, wx, wy, worst_ref[0], worst_ref[1],
               worst_ref[2], worst_gpu[0], worst_gpu[1], worst_gpu[2]);
     if (emissive_case)
-        CHECK_MSG(emissive_wins > 0 && emissive_loses == compared,
-                  "emissive must win in red somewhere (%d px) and lose in green everywhere (%d of %d px)", emissive_wins, emissive_loses, compared);
+        CHECK_MSG(
+            emissive_wins > 0 && emissive_loses == compared,
+            "emissive must win in red somewhere (%d px) and lose in green everywhere (%d of %d px)",
+            emissive_wins, emissive_loses, compared);
     printf("light %d n=%-6g emissive=%d: max difference %d/255 over %d pixels\n", (int)type,
            (double)shininess, emissive_case, worst, compared);
     rd_scene_destroy(scene);

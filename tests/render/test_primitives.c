@@ -10,7 +10,8 @@ static double signed_volume(const rd_mesh_data *m)
 {
     double v = 0.0;
     for (int t = 0; t < m->index_count; t += 3) {
-        const float *a = &m->positions[m->indices[t] * 3], *b = &m->positions[m->indices[t + 1] * 3],
+        const float *a = &m->positions[m->indices[t] * 3],
+                    *b = &m->positions[m->indices[t + 1] * 3],
                     *c = &m->positions[m->indices[t + 2] * 3];
         v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
               a[2] * (b[0] * c[1] - b[1] * c[0])) /
@@ -23,7 +24,8 @@ static double signed_volume(const rd_mesh_data *m)
 static int normals_agree(const rd_mesh_data *m)
 {
     for (int t = 0; t < m->index_count; t += 3) {
-        const float *a = &m->positions[m->indices[t] * 3], *b = &m->positions[m->indices[t + 1] * 3],
+        const float *a = &m->positions[m->indices[t] * 3],
+                    *b = &m->positions[m->indices[t + 1] * 3],
                     *c = &m->positions[m->indices[t + 2] * 3];
         float e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
         float e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};

@@ -21,8 +21,8 @@ static rd_mesh make_plane(rd_context *ctx)
 
 static rd_view view_of_plane(int w, int h)
 {
-    return (rd_view){.eye = {0, -0.01f, 3}, .target = {0, 0, 0}, .fov_y_deg = 40, .width = w,
-                     .height = h};
+    return (rd_view){
+        .eye = {0, -0.01f, 3}, .target = {0, 0, 0}, .fov_y_deg = 40, .width = w, .height = h};
 }
 
 static void test_validation(rd_context *ctx)
@@ -35,14 +35,18 @@ static void test_validation(rd_context *ctx)
 
     float pos[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0}, nrm[9] = {0, 0, 1, 0, 0, 1, 0, 0, 1};
     uint32_t bad_idx[3] = {0, 1, 7};
-    rd_mesh m = rd_mesh_create(ctx, &(rd_mesh_desc){.positions = pos, .normals = nrm,
-                                                    .indices = bad_idx, .vertex_count = 3,
+    rd_mesh m = rd_mesh_create(ctx, &(rd_mesh_desc){.positions = pos,
+                                                    .normals = nrm,
+                                                    .indices = bad_idx,
+                                                    .vertex_count = 3,
                                                     .index_count = 3});
     CHECK(m.id == 0 && strstr(rd_last_error(), "index"));
     pos[4] = NAN;
     uint32_t idx[3] = {0, 1, 2};
-    m = rd_mesh_create(ctx, &(rd_mesh_desc){.positions = pos, .normals = nrm, .indices = idx,
-                                            .vertex_count = 3, .index_count = 3});
+    m = rd_mesh_create(
+        ctx,
+        &(rd_mesh_desc){
+            .positions = pos, .normals = nrm, .indices = idx, .vertex_count = 3, .index_count = 3});
     CHECK(m.id == 0 && strstr(rd_last_error(), "finite"));
 
     /* A destroyed mesh's handle is stale, even after its slot is reused. */

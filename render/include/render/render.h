@@ -54,7 +54,8 @@ typedef struct rd_context_desc {
 rd_result rd_context_create(const rd_context_desc *desc, rd_context **out);
 void rd_context_destroy(rd_context *ctx);
 rd_backend rd_context_backend(const rd_context *ctx);
-/* GL_RENDERER and GL_VERSION as one line, e.g. "llvmpipe (LLVM 15.0.6, 256 bits); 4.5 (Core Profile) Mesa 22.3.6". */
+/* GL_RENDERER and GL_VERSION as one line, e.g. "llvmpipe (LLVM 15.0.6, 256 bits); 4.5 (Core
+ * Profile) Mesa 22.3.6". */
 const char *rd_context_description(const rd_context *ctx);
 /* The largest render target side this context can make (before supersampling). */
 int rd_context_max_size(const rd_context *ctx);
@@ -154,7 +155,7 @@ typedef struct rd_view {
     int supersample;                /* 0 or 1 = none; 2..4 = s x s samples per pixel */
     float exposure_ev;              /* scale by 2^ev before the tone map */
     rd_tonemap tonemap;
-    float white; /* L_white of the photographic operator; 0 = 4 */
+    float white;   /* L_white of the photographic operator; 0 = 4 */
     int to_window; /* RD_BACKEND_ADOPT: also draw the result into framebuffer 0 */
 } rd_view;
 
