@@ -88,7 +88,8 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
                  index, o->name, rd_last_error());
         return APP_ERR_SCHEMA;
     }
-    rd_object_desc d = {.mesh = mesh, .material = *m};
+    /* Closed shapes cull their back faces; a plane is a sheet seen from either side. */
+    rd_object_desc d = {.mesh = mesh, .material = *m, .double_sided = o->shape == APP_SHAPE_PLANE};
     /* Unit-mesh UVs span the whole object: repeat the texture at its real-world size. A plane
      * maps u, v to its x, y; the other shapes wrap u around and run v along the height. */
     const app_material *am = &p->materials[o->material];
@@ -139,7 +140,8 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
             r = APP_ERR_IO;
             break;
         }
-        rd_object_desc d = {.mesh = mesh, .material = *m};
+        /* A model may be open (glTF's doubleSided): draw both sides. */
+        rd_object_desc d = {.mesh = mesh, .material = *m, .double_sided = 1};
         memcpy(d.transform, transform, sizeof transform);
         if (rd_scene_add_object(s->scene, &d) != RD_OK) {
             snprintf(err, err_size, "%s: $.objects[%d]: %s", p->path, index, rd_last_error());

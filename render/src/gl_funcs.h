@@ -18,6 +18,7 @@
     X(PFNGLDEPTHFUNCPROC, glDepthFunc)                                                             \
     X(PFNGLDEPTHMASKPROC, glDepthMask)                                                             \
     X(PFNGLCULLFACEPROC, glCullFace)                                                               \
+    X(PFNGLFRONTFACEPROC, glFrontFace)                                                             \
     X(PFNGLFINISHPROC, glFinish)                                                                   \
     X(PFNGLREADPIXELSPROC, glReadPixels)                                                           \
     X(PFNGLPIXELSTOREIPROC, glPixelStorei)                                                         \
@@ -96,6 +97,7 @@ RD_GL_FUNCTIONS(RD_GL_DECLARE)
 #define glDepthFunc rd_glDepthFunc
 #define glDepthMask rd_glDepthMask
 #define glCullFace rd_glCullFace
+#define glFrontFace rd_glFrontFace
 #define glFinish rd_glFinish
 #define glReadPixels rd_glReadPixels
 #define glPixelStorei rd_glPixelStorei

@@ -93,6 +93,12 @@ static void set_object_uniforms(const rd_program *p, const float model[16], cons
                     m->uv_scale[1] > 0.0f ? m->uv_scale[1] : 1.0f);
 }
 
+static float determinant3(const float m[16])
+{
+    return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[4] * (m[1] * m[10] - m[2] * m[9]) +
+           m[8] * (m[1] * m[6] - m[2] * m[5]);
+}
+
 typedef struct draw_item {
     int index;
     int background;
@@ -213,6 +219,14 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
             glActiveTexture(GL_TEXTURE0);
             glBindTexture(GL_TEXTURE_2D, t->name);
         }
+        /* Back faces of closed meshes are never seen: culling them saves shading fragments
+         * that early depth testing cannot reject when they happen to be drawn first. */
+        if (o->double_sided)
+            glDisable(GL_CULL_FACE);
+        else
+            glEnable(GL_CULL_FACE);
+        /* A mirroring transform turns counter-clockwise triangles clockwise on screen. */
+        glFrontFace(determinant3(o->transform) < 0.0f ? GL_CW : GL_CCW);
         set_object_uniforms(p, o->transform, &o->material);
         glBindVertexArray(m->vao);
         glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
@@ -269,6 +283,7 @@ rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *v)
                         .shininess = 32.0f};
     set_object_uniforms(p, inv_vp, &grey);
     glBindVertexArray(m->vao);
+    glDisable(GL_CULL_FACE);
     glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
     glBindVertexArray(0);
     unsigned err = rd_gl_drain_errors();

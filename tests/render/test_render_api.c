@@ -164,6 +164,49 @@ static void test_supersampling(rd_context *ctx)
     rd_mesh_destroy(ctx, plane);
 }
 
+/* Back faces of closed meshes are culled; a mirroring transform (negative determinant) must
+ * not turn the mesh inside out: a lit sphere mirrored in x looks like the sphere. */
+static void test_culling_and_mirroring(rd_context *ctx)
+{
+    rd_mesh_data d;
+    rd_mesh_data_sphere(32, 16, &d);
+    rd_mesh_desc desc = rd_mesh_data_desc(&d);
+    rd_mesh sphere = rd_mesh_create(ctx, &desc);
+    rd_mesh_data_free(&d);
+    enum { W = 48, H = 48 };
+    static uint8_t img[2][W * H * 4];
+    for (int mirrored = 0; mirrored < 2; mirrored++) {
+        rd_scene *s = rd_scene_create(ctx);
+        rd_object_desc o = {.mesh = sphere,
+                            .material = {.diffuse = {0.8f, 0.8f, 0.8f},
+                                         .specular = {0.5f, 0.5f, 0.5f},
+                                         .shininess = 30}};
+        o.transform[0] = mirrored ? -1.0f : 1.0f;
+        o.transform[5] = o.transform[10] = o.transform[15] = 1.0f;
+        CHECK(rd_scene_add_object(s, &o) == RD_OK);
+        rd_light l = {.type = RD_LIGHT_POINT,
+                      .position = {0, -2, 1},
+                      .diffuse = {1, 1, 1},
+                      .specular = {1, 1, 1},
+                      .attenuation = {1, 0, 0}};
+        CHECK(rd_scene_add_light(s, &l) == RD_OK);
+        rd_view v = {.eye = {0, -3, 0}, .target = {0, 0, 0}, .width = W, .height = H};
+        CHECK(rd_render(ctx, s, &v) == RD_OK);
+        CHECK(rd_read_rgba8(ctx, img[mirrored], sizeof img[mirrored]) == RD_OK);
+        rd_scene_destroy(s);
+    }
+    int worst = 0, lit = 0;
+    for (int i = 0; i < W * H * 4; i++) {
+        int diff = abs(img[0][i] - img[1][i]);
+        worst = diff > worst ? diff : worst;
+    }
+    for (int i = 0; i < W * H; i++)
+        lit += img[0][i * 4] > 40;
+    CHECK_MSG(lit > W * H / 20, "the sphere is visible and lit (%d pixels)", lit);
+    CHECK_MSG(worst <= 2, "mirrored sphere differs by %d", worst);
+    rd_mesh_destroy(ctx, sphere);
+}
+
 int main(void)
 {
     rd_context *ctx = NULL;
@@ -174,6 +217,7 @@ int main(void)
     test_validation(ctx);
     test_exposure_and_readback(ctx);
     test_supersampling(ctx);
+    test_culling_and_mirroring(ctx);
     rd_context_destroy(ctx);
     return check_report("render_api");
 }

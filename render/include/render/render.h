@@ -131,6 +131,7 @@ typedef struct rd_object_desc {
     rd_material material;
     float transform[16]; /* column-major model matrix; all zero = identity */
     int background;      /* 1 for large enclosing surfaces (room walls): drawn after the rest */
+    int double_sided;    /* 1: draw back faces too (open sheets); 0: closed, back faces culled */
 } rd_object_desc;
 
 rd_scene *rd_scene_create(rd_context *ctx);
