@@ -43,10 +43,7 @@ int app_cli_bench(int argc, char **argv)
     if (rc != CLI_OK)
         return rc;
     rd_view view;
-    char err[1024];
-    if (app_view_from_camera(&s.project, o.camera, o.width ? o.width : 1280,
-                             o.height ? o.height : 720, &view, err, sizeof err) != APP_OK) {
-        fprintf(stderr, "tessera: %s\n", err);
+    if (cli_session_view(&s, &o, o.camera, 1280, 720, &view) != CLI_OK) {
         cli_session_close(&s);
         return CLI_USAGE;
     }

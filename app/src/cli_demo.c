@@ -44,15 +44,10 @@ int app_cli_demo(int argc, char **argv)
     for (int i = 0; rc == CLI_OK && i < s.project.camera_count; i++) {
         const char *cam = s.project.cameras[i].name;
         rd_view view;
-        char err[1024], path[4096];
-        if (app_view_from_camera(&s.project, cam, o.width, o.height, &view, err, sizeof err) !=
-            APP_OK) {
-            fprintf(stderr, "tessera: %s\n", err);
-            rc = CLI_FAILED;
+        char path[4096];
+        rc = cli_session_view(&s, &o, cam, 0, 0, &view);
+        if (rc != CLI_OK)
             break;
-        }
-        if (o.supersample)
-            view.supersample = o.supersample;
         fprintf(stderr, "[%d/%d] camera \"%s\"\n", i + 1, s.project.camera_count, cam);
         snprintf(path, sizeof path, "%s/demo-%s.png", out_dir, cam);
         rc = cli_render_to_file(&s, &view, path);

@@ -37,6 +37,11 @@ typedef struct cli_session {
 int cli_session_open(const cli_options *o, cli_session *s);
 void cli_session_close(cli_session *s);
 
+/* The view of `camera` (NULL = the first) at the options' size (else width x height, else the
+ * project's) and supersampling; prints the problem and returns CLI_USAGE if there is none. */
+int cli_session_view(const cli_session *s, const cli_options *o, const char *camera, int width,
+                     int height, rd_view *out);
+
 /* Renders one view and writes it to `path` (PNG/JPEG/TIFF as 8-bit sRGB, EXR linear). */
 int cli_render_to_file(cli_session *s, const rd_view *view, const char *path);
 

@@ -23,16 +23,9 @@ int app_cli_render(int argc, char **argv)
     if (rc != CLI_OK)
         return rc;
     rd_view view;
-    char err[1024];
-    if (app_view_from_camera(&s.project, o.camera, o.width, o.height, &view, err, sizeof err) !=
-        APP_OK) {
-        fprintf(stderr, "tessera: %s\n", err);
-        cli_session_close(&s);
-        return CLI_USAGE;
-    }
-    if (o.supersample)
-        view.supersample = o.supersample;
-    rc = cli_render_to_file(&s, &view, o.output);
+    rc = cli_session_view(&s, &o, o.camera, 0, 0, &view);
+    if (rc == CLI_OK)
+        rc = cli_render_to_file(&s, &view, o.output);
     cli_session_close(&s);
     return rc;
 }

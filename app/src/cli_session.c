@@ -69,6 +69,20 @@ void cli_session_close(cli_session *s)
     memset(s, 0, sizeof *s);
 }
 
+int cli_session_view(const cli_session *s, const cli_options *o, const char *camera, int width,
+                     int height, rd_view *out)
+{
+    char err[1024];
+    if (app_view_from_camera(&s->project, camera, o->width ? o->width : width,
+                             o->height ? o->height : height, out, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return CLI_USAGE;
+    }
+    if (o->supersample)
+        out->supersample = o->supersample;
+    return CLI_OK;
+}
+
 int cli_render_to_file(cli_session *s, const rd_view *view, const char *path)
 {
     double t0 = cli_now_ms();

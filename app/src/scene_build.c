@@ -19,24 +19,6 @@ app_result app_scene_track_mesh(app_scene *s, rd_mesh mesh)
     return APP_OK;
 }
 
-/* RGBA float texels from any channel count (grey -> RGB, missing alpha -> 1). */
-static float *rgba_from_image(const rd_image *img)
-{
-    size_t n = (size_t)img->width * (size_t)img->height;
-    float *out = malloc(n * 4 * sizeof *out);
-    if (!out)
-        return NULL;
-    for (size_t i = 0; i < n; i++) {
-        const float *src = &img->pixels[i * (size_t)img->channels];
-        int c = img->channels;
-        out[i * 4 + 0] = src[0];
-        out[i * 4 + 1] = c >= 3 ? src[1] : src[0];
-        out[i * 4 + 2] = c >= 3 ? src[2] : src[0];
-        out[i * 4 + 3] = c == 4 ? src[3] : c == 2 ? src[1] : 1.0f;
-    }
-    return out;
-}
-
 static app_result load_texture(rd_context *ctx, app_scene *s, const char *path, rd_texture *out,
                                char *err, size_t err_size)
 {
@@ -67,7 +49,9 @@ static app_result load_texture(rd_context *ctx, app_scene *s, const char *path, 
     if (nonfinite)
         fprintf(stderr, "tessera: warning: %s: %d NaN or infinite texel values were set to 0\n",
                 path, nonfinite);
-    float *rgba = rgba_from_image(&img);
+    float *rgba = malloc((size_t)img.width * (size_t)img.height * 4 * sizeof *rgba);
+    if (rgba)
+        rd_image_expand_rgba(&img, rgba);
     if (!rgba) {
         rd_image_free(&img);
         return APP_ERR_OUT_OF_MEMORY;

@@ -1,5 +1,6 @@
 /* Value conversions on pixel arrays: NaN sanitising and channel-count changes. */
 #include "image_internal.h"
+#include "render/image_io.h"
 
 #include <math.h>
 
@@ -102,4 +103,10 @@ void rd_image_convert_channels_f32(const float *src, int src_ch, float *dst, int
             break;
         }
     }
+}
+
+void rd_image_expand_rgba(const rd_image *img, float *out)
+{
+    rd_image_convert_channels_f32(img->pixels, img->channels, out, 4,
+                                  (size_t)img->width * (size_t)img->height);
 }

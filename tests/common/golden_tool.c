@@ -19,17 +19,15 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s\n", err);
         return 1;
     }
-    size_t n = (size_t)img.width * (size_t)img.height;
-    unsigned char *rgba = malloc(n * 4);
-    if (!rgba)
+    size_t n = (size_t)img.width * (size_t)img.height * 4;
+    float *expanded = malloc(n * sizeof *expanded);
+    unsigned char *rgba = malloc(n);
+    if (!expanded || !rgba)
         return 1;
+    rd_image_expand_rgba(&img, expanded);
     for (size_t i = 0; i < n; i++)
-        for (int k = 0; k < 4; k++) {
-            float v = k < img.channels ? img.pixels[i * (size_t)img.channels + (size_t)k] : 1.0f;
-            if (img.channels < 3 && k < 3)
-                v = img.pixels[i * (size_t)img.channels];
-            rgba[i * 4 + (size_t)k] = (unsigned char)(v * 255.0f + 0.5f);
-        }
+        rgba[i] = (unsigned char)(expanded[i] * 255.0f + 0.5f);
+    free(expanded);
     int rc = golden_check(argv[1], rgba, img.width, img.height, argv[3], argv[4]);
     free(rgba);
     rd_image_free(&img);

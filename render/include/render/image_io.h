@@ -59,6 +59,10 @@ rd_image_result rd_image_write_float(const char *path, int width, int height, in
 /* 1 for .exr/.hdr, 0 for .png/.jpg/.jpeg/.tif/.tiff, -1 for an unknown extension or NULL. */
 int rd_image_format_is_float(const char *path);
 
+/* Copies the pixels as RGBA (gray -> RGB, missing alpha -> 1) into out, which holds
+ * width * height * 4 floats. */
+void rd_image_expand_rgba(const rd_image *img, float *out);
+
 /* Frees the pixels and zeroes the struct; NULL and zeroed images are fine. */
 void rd_image_free(rd_image *img);
 
