@@ -26,6 +26,8 @@ void pj_default_material(app_material *m)
     m->shininess = 32.0f;
     m->texture_size_mm[0] = 1000.0f;
     m->texture_size_mm[1] = 1000.0f;
+    m->glossiness = 1.0f;
+    m->ior = 1.5f;
 }
 
 void pj_default_object(app_object *o)

@@ -105,6 +105,12 @@ void pj_default_render(app_render_settings *r);
 /* ---- sections (project_read_*.c); each reads one top-level member of the root -------------- */
 
 app_result pj_read_materials(pj_ctx *c, const cJSON *root);
+/* A material's reflection and glass members (project_read_reflection.c). */
+app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material *m);
+/* The names of the APP_BLEND_*, APP_CORRECTION_* and APP_PROBE_* values in the file. */
+extern const char *const pj_blend_names[3];
+extern const char *const pj_correction_names[4];
+extern const char *const pj_probe_update_names[5];
 app_result pj_read_room(pj_ctx *c, const cJSON *root);
 app_result pj_read_objects(pj_ctx *c, const cJSON *root);
 app_result pj_read_lights(pj_ctx *c, const cJSON *root);

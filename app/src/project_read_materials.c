@@ -20,7 +20,9 @@ app_result pj_read_material_fields(pj_ctx *c, const cJSON *item, app_material *m
         (r = pj_get_color(c, item, "specular", 0, m->specular)) != APP_OK ||
         (r = pj_get_color(c, item, "emissive", 0, m->emissive)) != APP_OK ||
         (r = pj_get_float(c, item, "shininess", 0, SHININESS, &m->shininess)) != APP_OK ||
-        (r = pj_get_vecf(c, item, "texture_size", 0, 2, PJ_POSITIVE, m->texture_size_mm)) != APP_OK)
+        (r = pj_get_vecf(c, item, "texture_size", 0, 2, PJ_POSITIVE, m->texture_size_mm)) !=
+            APP_OK ||
+        (r = pj_read_reflection_fields(c, item, m)) != APP_OK)
         return r;
 
     char texture[sizeof m->texture] = "";

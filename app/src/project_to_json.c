@@ -143,6 +143,37 @@ static void put_material_ref(jb *b, cJSON *obj, const char *key, int index)
     attach(b, obj, key, cJSON_CreateString(name));
 }
 
+/* Only what differs from the defaults, so plain materials stay plain in the file. */
+static void put_reflection(jb *b, cJSON *o, const app_material *m)
+{
+    if (m->reflectivity != 0.0f)
+        put_num(b, o, "reflectivity", m->reflectivity, 1);
+    if (m->glossiness != 1.0f)
+        put_num(b, o, "glossiness", m->glossiness, 1);
+    if (m->blend > 0 && m->blend < 3)
+        put_str(b, o, "blend", pj_blend_names[m->blend], 32);
+    if (m->transparency != 0.0f)
+        put_num(b, o, "transparency", m->transparency, 1);
+    if (m->ior != 1.5f)
+        put_num(b, o, "ior", m->ior, 1);
+    if (m->dispersion != 0.0f)
+        put_num(b, o, "dispersion", m->dispersion, 1);
+    if (!m->correction && !m->probe_update && !m->probe_every && !m->probe_resolution &&
+        m->proxy_radius_mm == 0.0f)
+        return;
+    cJSON *probe = put_container(b, o, "probe", 0);
+    if (m->correction > 0 && m->correction < 4)
+        put_str(b, probe, "correction", pj_correction_names[m->correction], 32);
+    if (m->probe_update > 0 && m->probe_update < 5)
+        put_str(b, probe, "update", pj_probe_update_names[m->probe_update], 32);
+    if (m->probe_every)
+        put_num(b, probe, "every", m->probe_every, 0);
+    if (m->probe_resolution)
+        put_num(b, probe, "resolution", m->probe_resolution, 0);
+    if (m->proxy_radius_mm != 0.0f)
+        put_num(b, probe, "proxy_radius", m->proxy_radius_mm, 1);
+}
+
 static void put_materials(jb *b, cJSON *root)
 {
     cJSON *dict = put_container(b, root, "materials", 0);
@@ -166,6 +197,7 @@ static void put_materials(jb *b, cJSON *root)
         if (m->texture[0])
             put_path(b, o, "texture", m->texture, sizeof m->texture);
         put_vec(b, o, "texture_size", NULL, m->texture_size_mm, 2);
+        put_reflection(b, o, m);
         pj_path_restore(b->c, m_mark);
     }
     pj_path_restore(b->c, mark);

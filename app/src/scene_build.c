@@ -77,7 +77,11 @@ app_result app_scene_material(rd_context *ctx, const app_project *p, app_scene *
                               rd_material *out, char *err, size_t err_size)
 {
     const app_material *am = &p->materials[mi];
-    rd_material m = {.shininess = am->shininess};
+    rd_material m = {.shininess = am->shininess,
+                     .reflectivity = am->reflectivity,
+                     .glossiness = am->glossiness,
+                     .blend = (rd_reflection_blend)am->blend,
+                     .correction = (rd_correction)am->correction};
     memcpy(m.ambient, am->ambient, sizeof m.ambient);
     memcpy(m.diffuse, am->diffuse, sizeof m.diffuse);
     memcpy(m.specular, am->specular, sizeof m.specular);
@@ -123,6 +127,12 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
         return APP_ERR_OUT_OF_MEMORY;
     }
     rd_scene_set_ambient(out->scene, p->render.ambient);
+    /* The box proxy of the corrected reflection vector is the room's interior: in a bathroom
+     * the walls are what a fixture reflects (RENDERING.md section 4). */
+    rd_reflection_defaults refl = {.proxy_max = {(float)(p->room.width_mm * 1e-3),
+                                                 (float)(p->room.depth_mm * 1e-3),
+                                                 (float)(p->room.height_mm * 1e-3)}};
+    rd_scene_set_reflection_defaults(out->scene, &refl);
     app_result r = app_scene_add_room(ctx, p, out, err, err_size);
     if (r == APP_OK)
         r = app_scene_add_objects(ctx, p, out, err, err_size);

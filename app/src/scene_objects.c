@@ -30,6 +30,15 @@ void app_object_transform(const app_object *o, const double size_m[3], float out
     out[15] = 1.0f;
 }
 
+/* The probe settings of a project material (RENDERING.md section 8). */
+static rd_probe_desc probe_of(const app_material *am)
+{
+    return (rd_probe_desc){.update = (rd_probe_update)am->probe_update,
+                           .every_n = am->probe_every,
+                           .resolution = am->probe_resolution,
+                           .proxy_radius_m = am->proxy_radius_mm * 1e-3f};
+}
+
 static app_result unit_mesh(rd_context *ctx, app_scene *s, app_shape shape, float torus_ratio,
                             rd_mesh *out)
 {
@@ -89,7 +98,10 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
         return APP_ERR_SCHEMA;
     }
     /* Closed shapes cull their back faces; a plane is a sheet seen from either side. */
-    rd_object_desc d = {.mesh = mesh, .material = *m, .double_sided = o->shape == APP_SHAPE_PLANE};
+    rd_object_desc d = {.mesh = mesh,
+                        .material = *m,
+                        .double_sided = o->shape == APP_SHAPE_PLANE,
+                        .probe = probe_of(&p->materials[o->material])};
     /* Unit-mesh UVs span the whole object: repeat the texture at its real-world size. A plane
      * maps u, v to its x, y; the other shapes wrap u around and run v along the height. */
     const app_material *am = &p->materials[o->material];
@@ -141,7 +153,11 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
             break;
         }
         /* A model may be open (glTF's doubleSided): draw both sides. */
-        rd_object_desc d = {.mesh = mesh, .material = *m, .double_sided = 1};
+        rd_object_desc d = {.mesh = mesh,
+                            .material = *m,
+                            .double_sided = 1,
+                            .group = index + 1, /* one probe for all parts of the model */
+                            .probe = probe_of(&p->materials[o->material])};
         memcpy(d.transform, transform, sizeof transform);
         if (rd_scene_add_object(s->scene, &d) != RD_OK) {
             snprintf(err, err_size, "%s: $.objects[%d]: %s", p->path, index, rd_last_error());

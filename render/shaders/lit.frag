@@ -27,6 +27,17 @@ uniform sampler2D u_diffuse_texture;
 uniform vec2 u_uv_scale;
 #endif
 
+#ifdef HAS_REFLECTION
+uniform samplerCube u_probe;
+uniform vec3 u_probe_centre;
+uniform int u_correction; // 1 none, 2 box, 3 sphere
+uniform vec3 u_proxy_min, u_proxy_max;
+uniform float u_proxy_radius;
+uniform float u_kr;
+uniform float u_lod; // level of detail for the glossiness (0 for a mirror)
+uniform int u_blend; // 0 mix, 1 add, 2 fresnel
+#endif
+
 out vec4 frag_color;
 
 // max(N.H, 0)^n with pow(0, 0) and n = 0 defined as 1 and n up to 1e6 finite (section 1).
@@ -88,5 +99,14 @@ void main()
         lit += k * c_d * u_light_diffuse[i] * n_dot_l;                                      // eq. 2
         lit += k * u_mat_specular * u_light_specular[i] * blinn_phong_power(dot(N, H), u_mat_shininess); // eq. 3-5
     }
+#ifdef HAS_REFLECTION
+    // Sections 2-6: R = I - 2 (N.I) N with I = -V; the lookup starts at the capture centre.
+    vec3 r = reflect(-V, N);
+    vec3 d = u_correction == 2   ? correct_box(v_world, r, u_proxy_min, u_proxy_max, u_probe_centre)
+             : u_correction == 3 ? correct_sphere(v_world, r, u_probe_centre, u_proxy_radius)
+                                 : r;
+    vec3 refl = textureLod(u_probe, world_to_cmcs(d), u_lod).rgb;
+    lit = blend_reflection(u_blend, u_kr, u_mat_specular, lit, refl, dot(N, V));
+#endif
     frag_color = vec4(max(u_mat_emissive, lit), 1.0); // eq. 7
 }

@@ -120,6 +120,9 @@ rd_result rd_context_create(const rd_context_desc *desc, rd_context **out)
         return r;
     }
     glGenVertexArrays(1, &ctx->empty_vao);
+    glGenFramebuffers(1, &ctx->probe_fbo);
+    /* One sampling rule for every cube map: filter across face edges (RENDERING.md 3). */
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     rd_gl_drain_errors();
     *out = ctx;
     return RD_OK;
@@ -146,6 +149,7 @@ void rd_context_destroy(rd_context *ctx)
         ctx->ops->destroy(ctx->backend_state);
     free(ctx->meshes);
     free(ctx->textures);
+    free(ctx->cubemaps);
     free(ctx);
 }
 
@@ -162,6 +166,12 @@ const char *rd_context_description(const rd_context *ctx)
 int rd_context_max_size(const rd_context *ctx)
 {
     return ctx ? ctx->max_size : 0;
+}
+
+rd_frame_stats rd_last_frame_stats(const rd_context *ctx)
+{
+    rd_frame_stats none = {0};
+    return ctx ? ctx->stats : none;
 }
 
 void rd_finish(rd_context *ctx)

@@ -19,16 +19,26 @@ static const char *shader_text(const char *name)
     return NULL;
 }
 
-static GLuint compile(GLenum stage, const char *name, const char *defines)
+/* `names` lists the embedded files to join, separated by spaces ("reflect.glsl lit.frag"). */
+static GLuint compile(GLenum stage, const char *names, const char *defines)
 {
-    const char *body = shader_text(name);
-    if (!body) {
-        rd_set_error("shader %s is not embedded in this build", name);
-        return 0;
+    const char *parts[8] = {"#version 330 core\n", defines};
+    int count = 2;
+    char name[64];
+    for (const char *p = names; *p && count < 8;) {
+        size_t n = strcspn(p, " ");
+        snprintf(name, sizeof name, "%.*s", (int)n, p);
+        parts[count] = shader_text(name);
+        if (!parts[count]) {
+            rd_set_error("shader %s is not embedded in this build", name);
+            return 0;
+        }
+        count++;
+        p += n;
+        p += strspn(p, " ");
     }
-    const char *parts[3] = {"#version 330 core\n", defines, body};
     GLuint s = glCreateShader(stage);
-    glShaderSource(s, 3, parts, NULL);
+    glShaderSource(s, count, parts, NULL);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -93,15 +103,27 @@ static void locate_lit(rd_program *p)
     p->u_mat_shininess = glGetUniformLocation(id, "u_mat_shininess");
     p->u_diffuse_texture = glGetUniformLocation(id, "u_diffuse_texture");
     p->u_uv_scale = glGetUniformLocation(id, "u_uv_scale");
+    p->u_probe = glGetUniformLocation(id, "u_probe");
+    p->u_probe_centre = glGetUniformLocation(id, "u_probe_centre");
+    p->u_correction = glGetUniformLocation(id, "u_correction");
+    p->u_proxy_min = glGetUniformLocation(id, "u_proxy_min");
+    p->u_proxy_max = glGetUniformLocation(id, "u_proxy_max");
+    p->u_proxy_radius = glGetUniformLocation(id, "u_proxy_radius");
+    p->u_kr = glGetUniformLocation(id, "u_kr");
+    p->u_lod = glGetUniformLocation(id, "u_lod");
+    p->u_blend = glGetUniformLocation(id, "u_blend");
 }
 
 rd_result rd_programs_create(rd_context *ctx)
 {
-    char defines[128];
-    for (int variant = 0; variant < 2; variant++) {
-        snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s", RD_MAX_LIGHTS,
-                 variant ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "");
-        ctx->lit[variant].id = link("lit.vert", "lit.frag", defines);
+    char defines[160];
+    for (int variant = 0; variant < RD_LIT_VARIANTS; variant++) {
+        int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
+        snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s", RD_MAX_LIGHTS,
+                 textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
+                 reflecting ? "#define HAS_REFLECTION 1\n" : "");
+        ctx->lit[variant].id =
+            link("lit.vert", reflecting ? "reflect.glsl lit.frag" : "lit.frag", defines);
         if (!ctx->lit[variant].id)
             return RD_ERR_SHADER;
         locate_lit(&ctx->lit[variant]);
@@ -128,9 +150,28 @@ const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples
     return t;
 }
 
+rd_result rd_prefilter_program_create(rd_context *ctx)
+{
+    GLuint p = link("fullscreen.vert", "prefilter.frag", "");
+    if (!p)
+        return RD_ERR_SHADER;
+    ctx->prefilter_program = p;
+    ctx->pf_u_source = glGetUniformLocation(p, "u_source");
+    ctx->pf_u_face = glGetUniformLocation(p, "u_face");
+    ctx->pf_u_size = glGetUniformLocation(p, "u_size");
+    ctx->pf_u_exponent = glGetUniformLocation(p, "u_exponent");
+    ctx->pf_u_clamp = glGetUniformLocation(p, "u_clamp");
+    ctx->pf_u_source_size = glGetUniformLocation(p, "u_source_size");
+    return RD_OK;
+}
+
 void rd_programs_destroy(rd_context *ctx)
 {
-    for (int v = 0; v < 2; v++)
+    if (ctx->prefilter_program) {
+        glDeleteProgram(ctx->prefilter_program);
+        ctx->prefilter_program = 0;
+    }
+    for (int v = 0; v < RD_LIT_VARIANTS; v++)
         if (ctx->lit[v].id) {
             glDeleteProgram(ctx->lit[v].id);
             ctx->lit[v].id = 0;

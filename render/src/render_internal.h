@@ -35,6 +35,7 @@ typedef struct rd_texture_slot {
     uint32_t generation;
     bool live;
     unsigned name;
+    int size; /* cube maps: texels per face side */
 } rd_texture_slot;
 
 /* A float colour target with depth, resized on demand. */
@@ -52,7 +53,12 @@ typedef struct rd_program {
         u_light_attenuation, u_light_spot;
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
     int u_diffuse_texture, u_uv_scale;
+    int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
+        u_lod, u_blend;
 } rd_program;
+
+/* Lit program variants by material feature: a bit each. */
+enum { RD_LIT_TEXTURED = 1, RD_LIT_REFLECTING = 2, RD_LIT_VARIANTS = 4 };
 
 struct rd_context {
     rd_backend backend;
@@ -65,9 +71,17 @@ struct rd_context {
     int mesh_capacity;
     rd_texture_slot *textures;
     int texture_capacity;
+    rd_texture_slot *cubemaps; /* static cube maps (rd_cubemap handles) */
+    int cubemap_capacity;
 
-    /* Shader variants by material feature: [0] plain, [1] with a diffuse texture. */
-    rd_program lit[2];
+    unsigned probe_fbo;
+    unsigned probe_depth; /* depth buffer of probe captures, probe_depth_size square */
+    int probe_depth_size;
+    unsigned prefilter_program;
+    int pf_u_source, pf_u_face, pf_u_size, pf_u_exponent, pf_u_clamp, pf_u_source_size;
+    rd_frame_stats stats;
+
+    rd_program lit[RD_LIT_VARIANTS]; /* by RD_LIT_* bits */
     /* Tone map variants by samples per side (1..4) and output (display, linear); made on
      * first use. */
     struct rd_tonemap_program {
@@ -87,12 +101,16 @@ struct rd_context {
 
 rd_mesh_slot *rd_mesh_lookup(rd_context *ctx, rd_mesh mesh);
 rd_texture_slot *rd_texture_lookup(rd_context *ctx, rd_texture tex);
+rd_texture_slot *rd_cubemap_lookup(rd_context *ctx, rd_cubemap map);
+/* A depth buffer of at least size x size attached to ctx->probe_fbo (bound). */
+rd_result rd_probe_depth_ensure(rd_context *ctx, int size);
 void rd_resources_destroy_all(rd_context *ctx);
 
 rd_result rd_programs_create(rd_context *ctx);
 /* The tone map program for s samples per side, display or linear output; NULL on failure. */
 const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear);
 void rd_programs_destroy(rd_context *ctx);
+rd_result rd_prefilter_program_create(rd_context *ctx);
 
 rd_result rd_target_ensure(rd_target *t, int width, int height, unsigned internal_format,
                            bool with_depth);

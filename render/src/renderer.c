@@ -1,6 +1,8 @@
 /* Draws a view of a scene: lit pass into a float target, then exposure + tone map + sRGB into
  * an 8-bit target (RENDERING.md sections 1 and 9-HDR). */
 #include "camera.h"
+#include "draw.h"
+#include "probe.h"
 #include "gl_funcs.h"
 #include "render_internal.h"
 #include "scene_internal.h"
@@ -38,101 +40,6 @@ static rd_result validate_view(const rd_context *ctx, const rd_view *v, int *sam
         return rd_fail(RD_ERR_INVALID_ARGUMENT, "tone map white %g must be >= 0", (double)v->white);
     *samples = s;
     return RD_OK;
-}
-
-static void set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],
-                               const float eye[3])
-{
-    int type[RD_MAX_LIGHTS];
-    float pos[RD_MAX_LIGHTS][3], dir[RD_MAX_LIGHTS][3], dif[RD_MAX_LIGHTS][3],
-        spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2];
-    int n = s->light_count;
-    for (int i = 0; i < n; i++) {
-        const rd_light *l = &s->lights[i];
-        type[i] = (int)l->type;
-        memcpy(pos[i], l->position, sizeof pos[i]);
-        memcpy(dir[i], l->direction, sizeof dir[i]);
-        memcpy(dif[i], l->diffuse, sizeof dif[i]);
-        memcpy(spec[i], l->specular, sizeof spec[i]);
-        memcpy(att[i], l->attenuation, sizeof att[i]);
-        spot[i][0] = l->spot_inner_cos;
-        spot[i][1] = l->spot_outer_cos;
-    }
-    glUseProgram(p->id);
-    glUniformMatrix4fv(p->u_view_proj, 1, GL_FALSE, vp);
-    glUniform3fv(p->u_eye, 1, eye);
-    glUniform3fv(p->u_ambient_light, 1, s->ambient);
-    glUniform1i(p->u_light_count, n);
-    if (n > 0) {
-        glUniform1iv(p->u_light_type, n, type);
-        glUniform3fv(p->u_light_position, n, &pos[0][0]);
-        glUniform3fv(p->u_light_direction, n, &dir[0][0]);
-        glUniform3fv(p->u_light_diffuse, n, &dif[0][0]);
-        glUniform3fv(p->u_light_specular, n, &spec[0][0]);
-        glUniform3fv(p->u_light_attenuation, n, &att[0][0]);
-        glUniform2fv(p->u_light_spot, n, &spot[0][0]);
-    }
-    glUniform1i(p->u_diffuse_texture, 0);
-}
-
-static void set_object_uniforms(const rd_program *p, const float model[16], const rd_material *m)
-{
-    mat3 normal;
-    glm_mat4_pick3((vec4 *)model, normal);
-    glm_mat3_inv(normal, normal);
-    glm_mat3_transpose(normal);
-    glUniformMatrix4fv(p->u_model, 1, GL_FALSE, model);
-    glUniformMatrix3fv(p->u_normal_matrix, 1, GL_FALSE, &normal[0][0]);
-    glUniform3fv(p->u_mat_ambient, 1, m->ambient);
-    glUniform3fv(p->u_mat_diffuse, 1, m->diffuse);
-    glUniform3fv(p->u_mat_specular, 1, m->specular);
-    glUniform3fv(p->u_mat_emissive, 1, m->emissive);
-    glUniform1f(p->u_mat_shininess, m->shininess);
-    if (p->u_uv_scale >= 0)
-        glUniform2f(p->u_uv_scale, m->uv_scale[0] > 0.0f ? m->uv_scale[0] : 1.0f,
-                    m->uv_scale[1] > 0.0f ? m->uv_scale[1] : 1.0f);
-}
-
-static float determinant3(const float m[16])
-{
-    return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[4] * (m[1] * m[10] - m[2] * m[9]) +
-           m[8] * (m[1] * m[6] - m[2] * m[5]);
-}
-
-typedef struct draw_item {
-    int index;
-    int background;
-    float distance;
-} draw_item;
-
-static int compare_items(const void *a, const void *b)
-{
-    const draw_item *x = a, *y = b;
-    if (x->background != y->background)
-        return x->background - y->background;
-    return (x->distance > y->distance) - (x->distance < y->distance);
-}
-
-/* Front to back, enclosing surfaces last: llvmpipe's early depth test then shades each
- * pixel about once, which is what keeps a frame near one full-screen pass. */
-static draw_item *sorted_draw_list(rd_context *ctx, const rd_scene *s, const float eye[3])
-{
-    draw_item *items = malloc((size_t)(s->object_count ? s->object_count : 1) * sizeof *items);
-    if (!items)
-        return NULL;
-    for (int i = 0; i < s->object_count; i++) {
-        const rd_object_desc *o = &s->objects[i];
-        const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
-        vec4 c = {0, 0, 0, 1};
-        if (m)
-            for (int k = 0; k < 3; k++)
-                c[k] = 0.5f * (m->bounds_min[k] + m->bounds_max[k]);
-        vec4 w;
-        glm_mat4_mulv((vec4 *)o->transform, c, w);
-        items[i] = (draw_item){i, o->background, glm_vec3_distance((float *)eye, (float *)w)};
-    }
-    qsort(items, (size_t)s->object_count, sizeof *items, compare_items);
-    return items;
 }
 
 static void begin_hdr_pass(rd_context *ctx)
@@ -195,45 +102,18 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     rd_result pr = prepare(ctx, scene, v, &samples, vp, NULL);
     if (pr != RD_OK)
         return pr;
-    draw_item *items = sorted_draw_list(ctx, scene, v->eye);
-    if (!items)
-        return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
-
+    rd_frame_stats stats = {0};
+    float pixels_per_tan =
+        0.5f * (float)v->height / tanf(0.5f * glm_rad(v->fov_y_deg > 0.0f ? v->fov_y_deg : 60.0f));
+    rd_result r = rd_probes_update(ctx, scene, v->eye, pixels_per_tan, samples, &stats);
+    if (r != RD_OK)
+        return r;
+    ctx->stats = stats;
     begin_hdr_pass(ctx);
-    int frame_uniforms_set[2] = {0, 0};
-    for (int i = 0; i < scene->object_count; i++) {
-        const rd_object_desc *o = &scene->objects[items[i].index];
-        const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
-        const rd_texture_slot *t = rd_texture_lookup(ctx, o->material.diffuse_texture);
-        if (!m)
-            continue; /* destroyed after it was added: nothing to draw */
-        int variant = t ? 1 : 0;
-        const rd_program *p = &ctx->lit[variant];
-        if (!frame_uniforms_set[variant]) {
-            set_frame_uniforms(p, scene, vp, v->eye);
-            frame_uniforms_set[variant] = 1;
-        } else {
-            glUseProgram(p->id);
-        }
-        if (t) {
-            glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D, t->name);
-        }
-        /* Back faces of closed meshes are never seen: culling them saves shading fragments
-         * that early depth testing cannot reject when they happen to be drawn first. */
-        if (o->double_sided)
-            glDisable(GL_CULL_FACE);
-        else
-            glEnable(GL_CULL_FACE);
-        /* A mirroring transform turns counter-clockwise triangles clockwise on screen. */
-        glFrontFace(determinant3(o->transform) < 0.0f ? GL_CW : GL_CCW);
-        set_object_uniforms(p, o->transform, &o->material);
-        glBindVertexArray(m->vao);
-        glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
-    }
-    free(items);
+    r = rd_draw_objects(ctx, scene, &(rd_pass){.view_proj = vp, .eye = v->eye, .reflections = 1});
+    if (r != RD_OK)
+        return r;
 
-    rd_result r = RD_OK;
     r = tonemap_pass(ctx, v, samples, ctx->display.fbo, 0);
     if (r == RD_OK && v->to_window && ctx->backend == RD_BACKEND_ADOPT)
         r = tonemap_pass(ctx, v, samples, 0, 0);
@@ -276,12 +156,12 @@ rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *v)
     const rd_mesh_slot *m = rd_mesh_lookup(ctx, ctx->floor_quad);
     begin_hdr_pass(ctx);
     const rd_program *p = &ctx->lit[0];
-    set_frame_uniforms(p, scene, vp, v->eye);
+    rd_set_frame_uniforms(p, scene, vp, v->eye);
     rd_material grey = {.ambient = {0.5f, 0.5f, 0.5f},
                         .diffuse = {0.5f, 0.5f, 0.5f},
                         .specular = {0.2f, 0.2f, 0.2f},
                         .shininess = 32.0f};
-    set_object_uniforms(p, inv_vp, &grey);
+    rd_set_object_uniforms(p, inv_vp, &grey);
     glBindVertexArray(m->vao);
     glDisable(GL_CULL_FACE);
     glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);

@@ -252,8 +252,119 @@ void rd_texture_destroy(rd_context *ctx, rd_texture tex)
     s->live = false;
 }
 
+rd_texture_slot *rd_cubemap_lookup(rd_context *ctx, rd_cubemap map)
+{
+    int i = id_index(map.id);
+    if (!ctx || i < 0 || i >= ctx->cubemap_capacity)
+        return NULL;
+    rd_texture_slot *s = &ctx->cubemaps[i];
+    return (s->live && s->generation == (map.id >> SLOT_BITS)) ? s : NULL;
+}
+
+/* A static cube map (RENDERING.md section 8): six faces in GL order, CMCS, linear RGBA. */
+rd_cubemap rd_cubemap_create(rd_context *ctx, const rd_cubemap_desc *d)
+{
+    rd_cubemap invalid = {0};
+    if (!ctx || !d || d->size <= 0 || d->size > ctx->max_size) {
+        rd_set_error("rd_cubemap_create: size must be 1..%d", ctx ? ctx->max_size : 0);
+        return invalid;
+    }
+    for (int f = 0; f < 6; f++)
+        if (!d->faces[f]) {
+            rd_set_error("rd_cubemap_create: face %d is missing", f);
+            return invalid;
+        }
+    int index = -1;
+    for (int i = 0; i < ctx->cubemap_capacity; i++)
+        if (!ctx->cubemaps[i].live) {
+            index = i;
+            break;
+        }
+    if (index < 0) {
+        index = ctx->cubemap_capacity;
+        if (!grow((void **)&ctx->cubemaps, &ctx->cubemap_capacity, sizeof *ctx->cubemaps)) {
+            rd_set_error("rd_cubemap_create: out of slots or memory");
+            return invalid;
+        }
+    }
+    size_t count = (size_t)d->size * (size_t)d->size * 4;
+    float *clean = malloc(count * sizeof *clean);
+    if (!clean) {
+        rd_set_error("rd_cubemap_create: out of memory");
+        return invalid;
+    }
+    int levels = 1;
+    while ((d->size >> levels) > 0)
+        levels++;
+    rd_texture_slot *s = &ctx->cubemaps[index];
+    glGenTextures(1, &s->name);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, s->name);
+    for (int f = 0; f < 6; f++) {
+        for (size_t i = 0; i < count; i++)
+            clean[i] = isfinite(d->faces[f][i]) ? d->faces[f][i] : 0.0f; /* section 11 */
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_RGBA16F, d->size, d->size, 0,
+                     GL_RGBA, GL_FLOAT, clean);
+    }
+    free(clean);
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    if (rd_gl_drain_errors() != GL_NO_ERROR) {
+        glDeleteTextures(1, &s->name);
+        rd_set_error("rd_cubemap_create: OpenGL could not store a %d cube map", d->size);
+        return invalid;
+    }
+    s->size = d->size;
+    s->live = true;
+    s->generation = (s->generation + 1) & 0xffff;
+    if (!s->generation)
+        s->generation = 1;
+    return (rd_cubemap){make_id(s->generation, index)};
+}
+
+void rd_cubemap_destroy(rd_context *ctx, rd_cubemap map)
+{
+    rd_texture_slot *s = rd_cubemap_lookup(ctx, map);
+    if (!s)
+        return;
+    glDeleteTextures(1, &s->name);
+    s->name = 0;
+    s->live = false;
+}
+
+rd_result rd_probe_depth_ensure(rd_context *ctx, int size)
+{
+    if (!ctx->probe_depth || ctx->probe_depth_size < size) {
+        if (!ctx->probe_depth)
+            glGenRenderbuffers(1, &ctx->probe_depth);
+        glBindRenderbuffer(GL_RENDERBUFFER, ctx->probe_depth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
+        ctx->probe_depth_size = size;
+    }
+    /* Attached on every capture: the prefilter pass detaches it. */
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                              ctx->probe_depth);
+    unsigned e = rd_gl_drain_errors();
+    return e == GL_NO_ERROR
+               ? RD_OK
+               : rd_fail(RD_ERR_OUT_OF_MEMORY, "cannot make a %d probe depth buffer", size);
+}
+
 void rd_resources_destroy_all(rd_context *ctx)
 {
+    for (int i = 0; i < ctx->cubemap_capacity; i++)
+        if (ctx->cubemaps[i].live)
+            rd_cubemap_destroy(ctx, (rd_cubemap){make_id(ctx->cubemaps[i].generation, i)});
+    if (ctx->probe_depth)
+        glDeleteRenderbuffers(1, &ctx->probe_depth);
+    if (ctx->probe_fbo)
+        glDeleteFramebuffers(1, &ctx->probe_fbo);
+    ctx->probe_depth = ctx->probe_fbo = 0;
     for (int i = 0; i < ctx->mesh_capacity; i++)
         if (ctx->meshes[i].live)
             rd_mesh_destroy(ctx, (rd_mesh){make_id(ctx->meshes[i].generation, i)});

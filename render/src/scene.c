@@ -1,3 +1,4 @@
+#include "probe.h"
 #include "render_internal.h"
 #include "scene_internal.h"
 
@@ -23,7 +24,10 @@ void rd_scene_destroy(rd_scene *s)
 {
     if (!s)
         return;
+    rd_probes_destroy(s);
     free(s->objects);
+    free(s->object_stamps);
+    free(s->object_probe);
     free(s);
 }
 
@@ -55,8 +59,14 @@ rd_result rd_scene_add_object(rd_scene *s, const rd_object_desc *desc)
         if (!p)
             return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_scene_add_object: out of memory");
         s->objects = p;
+        long long *st = realloc(s->object_stamps, (size_t)cap * sizeof *st);
+        if (!st)
+            return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_scene_add_object: out of memory");
+        s->object_stamps = st;
         s->object_capacity = cap;
     }
+    s->object_stamps[s->object_count] = ++s->change_counter;
+    s->probes_dirty = 1;
     rd_object_desc *o = &s->objects[s->object_count++];
     *o = *desc;
     if (is_zero_matrix(o->transform))
@@ -94,4 +104,36 @@ void rd_scene_set_ambient(rd_scene *s, const float intensity[3])
 int rd_scene_object_count(const rd_scene *s)
 {
     return s ? s->object_count : 0;
+}
+
+rd_result rd_scene_set_transform(rd_scene *s, int index, const float transform[16])
+{
+    if (!s || !transform || index < 0 || index >= s->object_count)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_set_transform: no object %d", index);
+    for (int i = 0; i < 16; i++)
+        if (!isfinite(transform[i]))
+            return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_set_transform: not finite");
+    if (memcmp(s->objects[index].transform, transform, 16 * sizeof(float)) != 0) {
+        memcpy(s->objects[index].transform, transform, 16 * sizeof(float));
+        s->object_stamps[index] = ++s->change_counter;
+    }
+    return RD_OK;
+}
+
+void rd_scene_set_reflection_defaults(rd_scene *s, const rd_reflection_defaults *d)
+{
+    if (s && d) {
+        s->reflection = *d;
+        s->change_counter++; /* a new proxy or resolution: capture again */
+        s->probes_dirty = 1;
+    }
+}
+
+int rd_scene_probe_count(const rd_scene *s)
+{
+    if (!s)
+        return 0;
+    if (s->probes_dirty)
+        rd_probes_sync((rd_scene *)s);
+    return s->probe_count;
 }

@@ -3,13 +3,39 @@
 
 #include "render/render.h"
 
+/* One reflection probe: a cube map captured at the centre of a reflective object (or of the
+ * parts of one product), RENDERING.md section 3. GL names live in the scene's context. */
+typedef struct rd_probe {
+    int key;           /* the group (> 0), or -(index + 1) for a lone object */
+    int owner;         /* the first object of the key: its material drives the probe */
+    unsigned capture;  /* cube map as captured; box-filtered mips when a blur needs them */
+    unsigned filtered; /* prefiltered chain (RD_BLUR_PREFILTERED, g < 1), else 0 */
+    int size, levels;
+    float centre[3], radius;
+    long long captured_stamp; /* the scene's change counter at the last full capture */
+    int captured_frame;       /* -1: never */
+    int faces_valid;          /* bit f: face f holds a capture */
+    int next_face;            /* time slicing */
+    int filtered_level;       /* the lower prefiltered level that holds data; -1 none */
+    int mips_valid;           /* box mips generated since the last capture */
+} rd_probe;
+
 struct rd_scene {
     rd_context *ctx;
     rd_object_desc *objects;
+    long long *object_stamps; /* change counter value when each object last changed */
     int object_count, object_capacity;
     rd_light lights[RD_MAX_LIGHTS];
     int light_count;
     float ambient[3];
+
+    rd_reflection_defaults reflection;
+    rd_probe *probes;
+    int probe_count;
+    int *object_probe; /* per object: index into probes, -1 when it does not reflect */
+    int probes_dirty; /* objects were added: the probe list must be rebuilt */
+    long long change_counter;
+    int frame;
 };
 
 #endif

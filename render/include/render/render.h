@@ -94,6 +94,28 @@ void rd_texture_destroy(rd_context *ctx, rd_texture tex);
 
 /* ---- scene -------------------------------------------------------------------------------- */
 
+/* How the reflection joins the lit colour (RENDERING.md section 6). */
+typedef enum rd_reflection_blend {
+    RD_REFLECT_MIX = 0, /* C = (1 - k_r) C_lit + k_r C_refl (seed 002) */
+    RD_REFLECT_ADD,     /* C = C_lit + k_r C_s C_refl (seed 000 eq. 3) */
+    RD_REFLECT_FRESNEL, /* F = Schlick(f0 = k_r, N.V); C = (1 - F) C_lit + F C_refl (seed 001) */
+} rd_reflection_blend;
+
+/* Where the reflected ray is assumed to end (RENDERING.md section 4). */
+typedef enum rd_correction {
+    RD_CORRECTION_DEFAULT = 0, /* the scene's choice (rd_scene_set_reflection_defaults) */
+    RD_CORRECTION_NONE,        /* an infinitely far environment: look up R itself */
+    RD_CORRECTION_BOX,         /* the scene's proxy box (the room's interior) */
+    RD_CORRECTION_SPHERE,      /* a sphere of the probe's proxy radius around its centre */
+} rd_correction;
+
+/* How a blurred reflection is looked up (RENDERING.md section 5). */
+typedef enum rd_blur_method {
+    RD_BLUR_DEFAULT = 0,   /* the scene's choice */
+    RD_BLUR_PREFILTERED,   /* a mip chain convolved with the Phong lobe per level, on the GPU */
+    RD_BLUR_BOX_MIPS,      /* plain box-filtered mips with a level-of-detail bias (seed 001) */
+} rd_blur_method;
+
 /* RENDERING.md section 1; the same struct feeds the CPU reference (shade_ref.h). */
 typedef struct rd_material {
     float ambient[3];  /* C_a */
@@ -103,6 +125,13 @@ typedef struct rd_material {
     float shininess;   /* n, 0 .. 1e6 */
     rd_texture diffuse_texture;
     float uv_scale[2]; /* texture repeats per unit of the mesh's UVs; 0 = 1 */
+
+    /* Reflections (RENDERING.md sections 3-6). reflectivity k_r = 0: no probe, no reflection
+     * code in the object's program, output bit for bit that of section 1. */
+    float reflectivity; /* k_r in [0, 1] */
+    float glossiness;   /* g in [0, 1]; 1 = mirror, no blur work at all */
+    rd_reflection_blend blend;
+    rd_correction correction;
 } rd_material;
 
 typedef enum rd_light_type {
@@ -126,12 +155,38 @@ typedef struct rd_light {
 
 typedef struct rd_scene rd_scene;
 
+/* When a probe's cube map is captured again (RENDERING.md section 8). */
+typedef enum rd_probe_update {
+    RD_PROBE_DEFAULT = 0,  /* the scene's choice */
+    RD_PROBE_EVERY_FRAME,  /* also "every N frames" with every_n > 1 */
+    RD_PROBE_ONCE,         /* on the first frame only */
+    RD_PROBE_ON_CHANGE,    /* when any other object moved or changed since the last capture */
+    RD_PROBE_TIME_SLICED,  /* one face per frame, round robin */
+    RD_PROBE_STATIC,       /* a prepared map (rd_cubemap), never captured */
+} rd_probe_update;
+
+typedef struct rd_cubemap {
+    uint32_t id;
+} rd_cubemap;
+
+typedef struct rd_probe_desc {
+    rd_probe_update update;
+    int every_n;          /* RD_PROBE_EVERY_FRAME: capture on every n-th frame; 0 or 1 = every */
+    int resolution;       /* texels per face side; 0 = auto, from the object's size on screen */
+    float proxy_radius_m; /* RD_CORRECTION_SPHERE: 0 = the object's bounding radius x 4 */
+    rd_cubemap static_map; /* RD_PROBE_STATIC */
+} rd_probe_desc;
+
 typedef struct rd_object_desc {
     rd_mesh mesh;
     rd_material material;
     float transform[16]; /* column-major model matrix; all zero = identity */
     int background;      /* 1 for large enclosing surfaces (room walls): drawn after the rest */
     int double_sided;    /* 1: draw back faces too (open sheets); 0: closed, back faces culled */
+    /* Parts of one product (a model's meshes) share a group > 0: one probe at the centre of
+     * their joint bounds, and none of them appears in it. 0 = the object stands alone. */
+    int group;
+    rd_probe_desc probe;
 } rd_object_desc;
 
 rd_scene *rd_scene_create(rd_context *ctx);
@@ -140,6 +195,40 @@ rd_result rd_scene_add_object(rd_scene *scene, const rd_object_desc *desc);
 rd_result rd_scene_add_light(rd_scene *scene, const rd_light *light);
 void rd_scene_set_ambient(rd_scene *scene, const float intensity[3]); /* I_a */
 int rd_scene_object_count(const rd_scene *scene);
+
+/* Moves object `index` (in the order added); probes that see it are captured again under
+ * RD_PROBE_ON_CHANGE. */
+rd_result rd_scene_set_transform(rd_scene *scene, int index, const float transform[16]);
+
+/* Scene-wide reflection settings, used where a material or probe says DEFAULT. */
+typedef struct rd_reflection_defaults {
+    rd_correction correction; /* DEFAULT = box */
+    rd_blur_method blur;      /* DEFAULT = prefiltered */
+    rd_probe_update update;   /* DEFAULT = every frame */
+    int every_n;
+    int resolution;           /* 0 = auto */
+    int max_resolution;       /* cap for auto; 0 = 256 (stills raise it: print quality) */
+    float hdr_clamp;          /* radiance clamp before blurring; 0 = 64 */
+    float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
+} rd_reflection_defaults;
+void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
+
+/* Probes the scene holds now (one per reflective object or group); for tests and stats. */
+int rd_scene_probe_count(const rd_scene *scene);
+/* Frame statistics of the last rd_render: faces captured, prefilter passes. */
+typedef struct rd_frame_stats {
+    int probes, faces_captured, prefiltered;
+} rd_frame_stats;
+rd_frame_stats rd_last_frame_stats(const rd_context *ctx);
+
+/* A prepared cube map for RD_PROBE_STATIC: six faces of RGBA floats in GL's order (+X, -X,
+ * +Y, -Y, +Z, -Z), CMCS convention (RENDERING.md section 3), linear radiance. */
+typedef struct rd_cubemap_desc {
+    int size;
+    const float *faces[6];
+} rd_cubemap_desc;
+rd_cubemap rd_cubemap_create(rd_context *ctx, const rd_cubemap_desc *desc);
+void rd_cubemap_destroy(rd_context *ctx, rd_cubemap map);
 
 /* ---- view and render ---------------------------------------------------------------------- */
 

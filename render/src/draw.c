@@ -1,0 +1,179 @@
+/* The lit draw of a scene's objects, shared by the main view and the probe faces. */
+#include "draw.h"
+#include "gl_funcs.h"
+#include "probe.h"
+
+#include <cglm/cglm.h>
+#include <stdlib.h>
+
+void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],
+                           const float eye[3])
+{
+    int type[RD_MAX_LIGHTS];
+    float pos[RD_MAX_LIGHTS][3], dir[RD_MAX_LIGHTS][3], dif[RD_MAX_LIGHTS][3],
+        spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2];
+    int n = s->light_count;
+    for (int i = 0; i < n; i++) {
+        const rd_light *l = &s->lights[i];
+        type[i] = (int)l->type;
+        memcpy(pos[i], l->position, sizeof pos[i]);
+        memcpy(dir[i], l->direction, sizeof dir[i]);
+        memcpy(dif[i], l->diffuse, sizeof dif[i]);
+        memcpy(spec[i], l->specular, sizeof spec[i]);
+        memcpy(att[i], l->attenuation, sizeof att[i]);
+        spot[i][0] = l->spot_inner_cos;
+        spot[i][1] = l->spot_outer_cos;
+    }
+    glUseProgram(p->id);
+    glUniformMatrix4fv(p->u_view_proj, 1, GL_FALSE, vp);
+    glUniform3fv(p->u_eye, 1, eye);
+    glUniform3fv(p->u_ambient_light, 1, s->ambient);
+    glUniform1i(p->u_light_count, n);
+    if (n > 0) {
+        glUniform1iv(p->u_light_type, n, type);
+        glUniform3fv(p->u_light_position, n, &pos[0][0]);
+        glUniform3fv(p->u_light_direction, n, &dir[0][0]);
+        glUniform3fv(p->u_light_diffuse, n, &dif[0][0]);
+        glUniform3fv(p->u_light_specular, n, &spec[0][0]);
+        glUniform3fv(p->u_light_attenuation, n, &att[0][0]);
+        glUniform2fv(p->u_light_spot, n, &spot[0][0]);
+    }
+    glUniform1i(p->u_diffuse_texture, 0);
+}
+
+void rd_set_object_uniforms(const rd_program *p, const float model[16], const rd_material *m)
+{
+    mat3 normal;
+    glm_mat4_pick3((vec4 *)model, normal);
+    glm_mat3_inv(normal, normal);
+    glm_mat3_transpose(normal);
+    glUniformMatrix4fv(p->u_model, 1, GL_FALSE, model);
+    glUniformMatrix3fv(p->u_normal_matrix, 1, GL_FALSE, &normal[0][0]);
+    glUniform3fv(p->u_mat_ambient, 1, m->ambient);
+    glUniform3fv(p->u_mat_diffuse, 1, m->diffuse);
+    glUniform3fv(p->u_mat_specular, 1, m->specular);
+    glUniform3fv(p->u_mat_emissive, 1, m->emissive);
+    glUniform1f(p->u_mat_shininess, m->shininess);
+    if (p->u_uv_scale >= 0)
+        glUniform2f(p->u_uv_scale, m->uv_scale[0] > 0.0f ? m->uv_scale[0] : 1.0f,
+                    m->uv_scale[1] > 0.0f ? m->uv_scale[1] : 1.0f);
+}
+
+static float determinant3(const float m[16])
+{
+    return m[0] * (m[5] * m[10] - m[6] * m[9]) - m[4] * (m[1] * m[10] - m[2] * m[9]) +
+           m[8] * (m[1] * m[6] - m[2] * m[5]);
+}
+
+typedef struct draw_item {
+    int index;
+    int background;
+    float distance;
+} draw_item;
+
+static int compare_items(const void *a, const void *b)
+{
+    const draw_item *x = a, *y = b;
+    if (x->background != y->background)
+        return x->background - y->background;
+    return (x->distance > y->distance) - (x->distance < y->distance);
+}
+
+/* Front to back, enclosing surfaces last: llvmpipe's early depth test then shades each
+ * pixel about once, which is what keeps a frame near one full-screen pass. */
+static draw_item *sorted_draw_list(rd_context *ctx, const rd_scene *s, const float eye[3])
+{
+    draw_item *items = malloc((size_t)(s->object_count ? s->object_count : 1) * sizeof *items);
+    if (!items)
+        return NULL;
+    for (int i = 0; i < s->object_count; i++) {
+        const rd_object_desc *o = &s->objects[i];
+        const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
+        vec4 c = {0, 0, 0, 1};
+        if (m)
+            for (int k = 0; k < 3; k++)
+                c[k] = 0.5f * (m->bounds_min[k] + m->bounds_max[k]);
+        vec4 w;
+        glm_mat4_mulv((vec4 *)o->transform, c, w);
+        items[i] = (draw_item){i, o->background, glm_vec3_distance((float *)eye, (float *)w)};
+    }
+    qsort(items, (size_t)s->object_count, sizeof *items, compare_items);
+    return items;
+}
+
+/* The reflection inputs of one object (RENDERING.md sections 3-6). */
+static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, const rd_probe *probe,
+                                    const rd_material *m)
+{
+    float bmin[3], bmax[3];
+    rd_effective_proxy(s, bmin, bmax);
+    rd_correction c = rd_effective_correction(s, m);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, rd_probe_texture(s, probe));
+    glUniform1i(p->u_probe, 1);
+    glUniform3fv(p->u_probe_centre, 1, probe->centre);
+    glUniform1i(p->u_correction, (int)c);
+    glUniform3fv(p->u_proxy_min, 1, bmin);
+    glUniform3fv(p->u_proxy_max, 1, bmax);
+    const rd_probe_desc *pd = &s->objects[probe->owner].probe;
+    glUniform1f(p->u_proxy_radius,
+                pd->proxy_radius_m > 0.0f ? pd->proxy_radius_m : 4.0f * probe->radius);
+    glUniform1f(p->u_kr, fminf(fmaxf(m->reflectivity, 0.0f), 1.0f));
+    glUniform1f(p->u_lod, rd_probe_lod(probe, m->glossiness));
+    glUniform1i(p->u_blend, (int)m->blend);
+    glActiveTexture(GL_TEXTURE0);
+}
+
+rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
+{
+    draw_item *items = sorted_draw_list(ctx, scene, pass->eye);
+    if (!items)
+        return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
+    int frame_uniforms_set[RD_LIT_VARIANTS] = {0};
+    for (int i = 0; i < scene->object_count; i++) {
+        int index = items[i].index;
+        const rd_object_desc *o = &scene->objects[index];
+        if (pass->exclude_key && rd_object_key(scene, index) == pass->exclude_key)
+            continue;
+        const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
+        const rd_texture_slot *t = rd_texture_lookup(ctx, o->material.diffuse_texture);
+        if (!m)
+            continue; /* destroyed after it was added: nothing to draw */
+        const rd_probe *probe = NULL;
+        if (pass->reflections && scene->object_probe && scene->object_probe[index] >= 0) {
+            probe = &scene->probes[scene->object_probe[index]];
+            if (!rd_probe_texture(scene, probe))
+                probe = NULL; /* nothing captured yet: drawn plain this frame */
+        }
+        int variant = (t ? RD_LIT_TEXTURED : 0) | (probe ? RD_LIT_REFLECTING : 0);
+        const rd_program *p = &ctx->lit[variant];
+        if (!frame_uniforms_set[variant]) {
+            rd_set_frame_uniforms(p, scene, pass->view_proj, pass->eye);
+            frame_uniforms_set[variant] = 1;
+        } else {
+            glUseProgram(p->id);
+        }
+        if (t) {
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, t->name);
+        }
+        if (probe)
+            set_reflection_uniforms(p, scene, probe, &o->material);
+        /* Back faces of closed meshes are never seen: culling them saves shading fragments
+         * that early depth testing cannot reject when they happen to be drawn first. */
+        if (o->double_sided)
+            glDisable(GL_CULL_FACE);
+        else
+            glEnable(GL_CULL_FACE);
+        /* A mirroring transform turns counter-clockwise triangles clockwise on screen. */
+        glFrontFace(determinant3(o->transform) < 0.0f ? GL_CW : GL_CCW);
+        rd_set_object_uniforms(p, o->transform, &o->material);
+        glBindVertexArray(m->vao);
+        glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
+    }
+    free(items);
+    glDisable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glBindVertexArray(0);
+    return RD_OK;
+}

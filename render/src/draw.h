@@ -1,0 +1,22 @@
+/* Draws a scene's objects with the lit programs: the main view and every probe face. */
+#ifndef RENDER_DRAW_H
+#define RENDER_DRAW_H
+
+#include "render_internal.h"
+#include "scene_internal.h"
+
+typedef struct rd_pass {
+    const float *view_proj; /* column-major 4x4 */
+    const float *eye;
+    int exclude_key;  /* objects of this probe key are left out (a probe's owner); 0 = none */
+    int reflections;  /* 1: reflective objects use their probes; 0: drawn plain (in probes) */
+} rd_pass;
+
+rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);
+
+/* Per-frame (view, lights) and per-object (model, material) uniforms of a lit program. */
+void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],
+                           const float eye[3]);
+void rd_set_object_uniforms(const rd_program *p, const float model[16], const rd_material *m);
+
+#endif

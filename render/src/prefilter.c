@@ -1,0 +1,53 @@
+/* GPU prefiltering of a probe's cube map: one full-screen pass per face of a mip level. */
+#include "prefilter.h"
+#include "gl_funcs.h"
+
+#include <math.h>
+
+float rd_gloss_exponent(float g);
+
+/* n(g) = 2^(13 g): g = 0 -> 1 (the cosine lobe), g = 1 -> 8192 (RENDERING.md section 5). */
+float rd_gloss_exponent(float g)
+{
+    g = fminf(fmaxf(g, 0.0f), 1.0f);
+    return exp2f(13.0f * g);
+}
+
+rd_result rd_prefilter_level(rd_context *ctx, unsigned source, int source_size, unsigned dest,
+                             int dest_size, int level, int levels, float hdr_clamp)
+{
+    if (!ctx->prefilter_program) {
+        rd_result r = rd_prefilter_program_create(ctx);
+        if (r != RD_OK)
+            return r;
+    }
+    int size = dest_size >> level;
+    if (size < 1)
+        size = 1;
+    /* Level k holds the lobe of g_k = 1 - k / (levels - 1); level 0 is the mirror image. */
+    float g = levels > 1 ? 1.0f - (float)level / (float)(levels - 1) : 1.0f;
+    float exponent = level == 0 ? 0.0f : rd_gloss_exponent(g);
+    glBindFramebuffer(GL_FRAMEBUFFER, ctx->probe_fbo);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    glViewport(0, 0, size, size);
+    glUseProgram(ctx->prefilter_program);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, source);
+    glUniform1i(ctx->pf_u_source, 0);
+    glUniform1f(ctx->pf_u_size, (float)size);
+    glUniform1f(ctx->pf_u_exponent, exponent);
+    glUniform1f(ctx->pf_u_clamp, hdr_clamp);
+    glUniform1f(ctx->pf_u_source_size, (float)source_size);
+    glBindVertexArray(ctx->empty_vao);
+    for (int f = 0; f < 6; f++) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                               GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, dest, level);
+        glUniform1i(ctx->pf_u_face, f);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glBindVertexArray(0);
+    unsigned e = rd_gl_drain_errors();
+    return e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "OpenGL error 0x%x prefiltering", e);
+}

@@ -1,0 +1,416 @@
+/* Per-object reflection probes (RENDERING.md sections 3, 5, 8): which objects get one, when
+ * each is captured, at what resolution, and which texture the main pass samples. */
+#include "probe.h"
+#include "draw.h"
+#include "gl_funcs.h"
+#include "prefilter.h"
+
+#include <cglm/cglm.h>
+#include <math.h>
+#include <stdlib.h>
+
+int rd_object_key(const rd_scene *s, int i)
+{
+    return s->objects[i].group > 0 ? s->objects[i].group : -(i + 1);
+}
+
+static void free_probe_textures(rd_probe *p)
+{
+    if (p->capture)
+        glDeleteTextures(1, &p->capture);
+    if (p->filtered)
+        glDeleteTextures(1, &p->filtered);
+    p->capture = p->filtered = 0;
+}
+
+void rd_probes_destroy(rd_scene *s)
+{
+    for (int i = 0; i < s->probe_count; i++)
+        free_probe_textures(&s->probes[i]);
+    free(s->probes);
+    s->probes = NULL;
+    s->probe_count = 0;
+}
+
+rd_result rd_probes_sync(rd_scene *s)
+{
+    if (!s->probes_dirty)
+        return RD_OK;
+    int *map =
+        realloc(s->object_probe, (size_t)(s->object_count ? s->object_count : 1) * sizeof *map);
+    if (!map)
+        return rd_fail(RD_ERR_OUT_OF_MEMORY, "out of memory for probes");
+    s->object_probe = map;
+    /* Probes are rebuilt from scratch: adding objects is rare (loading), capturing is not. */
+    rd_probes_destroy(s);
+    rd_probe *list = calloc((size_t)(s->object_count ? s->object_count : 1), sizeof *list);
+    if (!list)
+        return rd_fail(RD_ERR_OUT_OF_MEMORY, "out of memory for probes");
+    s->probes = list;
+    for (int i = 0; i < s->object_count; i++) {
+        map[i] = -1;
+        if (!(s->objects[i].material.reflectivity > 0.0f))
+            continue; /* k_r = 0: no probe (section 3) */
+        int key = rd_object_key(s, i), found = -1;
+        for (int j = 0; j < s->probe_count; j++)
+            if (s->probes[j].key == key)
+                found = j;
+        if (found < 0) {
+            found = s->probe_count++;
+            s->probes[found] =
+                (rd_probe){.key = key, .owner = i, .captured_frame = -1, .filtered_level = -1};
+        }
+        map[i] = found;
+    }
+    s->probes_dirty = 0;
+    return RD_OK;
+}
+
+void rd_object_world_bounds(rd_context *ctx, const rd_object_desc *o, float lo[3], float hi[3])
+{
+    const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
+    for (int k = 0; k < 3; k++) {
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
+    }
+    if (!m)
+        return;
+    for (int c = 0; c < 8; c++) {
+        vec4 p = {c & 1 ? m->bounds_max[0] : m->bounds_min[0],
+                  c & 2 ? m->bounds_max[1] : m->bounds_min[1],
+                  c & 4 ? m->bounds_max[2] : m->bounds_min[2], 1.0f};
+        vec4 w;
+        glm_mat4_mulv((vec4 *)o->transform, p, w);
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fminf(lo[k], w[k]);
+            hi[k] = fmaxf(hi[k], w[k]);
+        }
+    }
+}
+
+/* The probe sits at the centre of its objects' joint bounding box (section 3: the geometric
+ * centre, not the model's origin). */
+static void place_probe(rd_context *ctx, const rd_scene *s, rd_probe *p)
+{
+    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = 0; i < s->object_count; i++) {
+        if (rd_object_key(s, i) != p->key)
+            continue;
+        float a[3], b[3];
+        rd_object_world_bounds(ctx, &s->objects[i], a, b);
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fminf(lo[k], a[k]);
+            hi[k] = fmaxf(hi[k], b[k]);
+        }
+    }
+    float r2 = 0.0f;
+    for (int k = 0; k < 3; k++) {
+        p->centre[k] = lo[k] <= hi[k] ? 0.5f * (lo[k] + hi[k]) : 0.0f;
+        float h = lo[k] <= hi[k] ? 0.5f * (hi[k] - lo[k]) : 0.0f;
+        r2 += h * h;
+    }
+    p->radius = sqrtf(r2);
+}
+
+rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m)
+{
+    if (m->correction != RD_CORRECTION_DEFAULT)
+        return m->correction;
+    return s->reflection.correction != RD_CORRECTION_DEFAULT ? s->reflection.correction
+                                                             : RD_CORRECTION_BOX;
+}
+
+rd_blur_method rd_effective_blur(const rd_scene *s)
+{
+    return s->reflection.blur != RD_BLUR_DEFAULT ? s->reflection.blur : RD_BLUR_PREFILTERED;
+}
+
+/* The box proxy: the scene's (the room's interior), else the bounds of everything. */
+void rd_effective_proxy(const rd_scene *s, float bmin[3], float bmax[3])
+{
+    const rd_reflection_defaults *d = &s->reflection;
+    int given = 0;
+    for (int k = 0; k < 3; k++)
+        given |= d->proxy_min[k] != 0.0f || d->proxy_max[k] != 0.0f;
+    if (given) {
+        memcpy(bmin, d->proxy_min, 3 * sizeof(float));
+        memcpy(bmax, d->proxy_max, 3 * sizeof(float));
+        return;
+    }
+    for (int k = 0; k < 3; k++) {
+        bmin[k] = INFINITY;
+        bmax[k] = -INFINITY;
+    }
+    for (int i = 0; i < s->object_count; i++) {
+        float a[3], b[3];
+        rd_object_world_bounds(s->ctx, &s->objects[i], a, b);
+        for (int k = 0; k < 3; k++) {
+            bmin[k] = fminf(bmin[k], a[k]);
+            bmax[k] = fmaxf(bmax[k], b[k]);
+        }
+    }
+}
+
+static rd_probe_update effective_update(const rd_scene *s, const rd_probe_desc *pd, int *every)
+{
+    rd_probe_update u = pd->update != RD_PROBE_DEFAULT ? pd->update : s->reflection.update;
+    int n = pd->update != RD_PROBE_DEFAULT ? pd->every_n : s->reflection.every_n;
+    *every = n > 1 ? n : 1; /* N = 0 or 1: every frame (section 11) */
+    return u != RD_PROBE_DEFAULT ? u : RD_PROBE_EVERY_FRAME;
+}
+
+static int next_pow2(float x)
+{
+    int n = 1;
+    while ((float)n < x && n < 8192)
+        n *= 2;
+    return n;
+}
+
+/* Section 8: resolution follows the object's size on screen (seed 001 picks 8x8 ... 64x64 by
+ * distance); supersampled stills raise it for print. */
+static int probe_resolution(const rd_scene *s, const rd_probe *p, const float eye[3],
+                            float pixels_per_tan, int supersample, int max_size)
+{
+    const rd_probe_desc *pd = &s->objects[p->owner].probe;
+    int fixed = pd->resolution > 0 ? pd->resolution : s->reflection.resolution;
+    int cap = s->reflection.max_resolution > 0 ? s->reflection.max_resolution
+                                               : (supersample > 1 ? 512 : 256);
+    if (cap > max_size)
+        cap = max_size;
+    if (fixed > 0)
+        return fixed < max_size ? fixed : max_size;
+    float d = glm_vec3_distance((float *)eye, (float *)p->centre);
+    float diameter_px = 2.0f * p->radius / fmaxf(d, 1e-3f) * pixels_per_tan * (float)supersample;
+    int n = next_pow2(0.5f * diameter_px);
+    return n < 8 ? 8 : n > cap ? cap : n;
+}
+
+static int level_count(int size)
+{
+    int n = 1;
+    while ((size >> n) > 0)
+        n++;
+    return n;
+}
+
+static rd_result alloc_cube(unsigned *name, int size, int levels)
+{
+    glGenTextures(1, name);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, *name);
+    for (int f = 0; f < 6; f++)
+        for (int l = 0; l < levels; l++) {
+            int n = size >> l;
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, l, GL_RGBA16F, n, n, 0,
+                         GL_RGBA, GL_FLOAT, NULL);
+        }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    for (GLenum w = GL_TEXTURE_WRAP_S; w <= GL_TEXTURE_WRAP_R; w++)
+        if (w == GL_TEXTURE_WRAP_S || w == GL_TEXTURE_WRAP_T || w == GL_TEXTURE_WRAP_R)
+            glTexParameteri(GL_TEXTURE_CUBE_MAP, w, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    unsigned e = rd_gl_drain_errors();
+    return e == GL_NO_ERROR
+               ? RD_OK
+               : rd_fail(e == GL_OUT_OF_MEMORY ? RD_ERR_OUT_OF_MEMORY : RD_ERR_GL,
+                         "cannot make a %dx%d cube map (GL error 0x%x)", size, size, e);
+}
+
+/* GL's cube-face cameras in CMCS (the orientation that makes window rows the faces' t). */
+static const float face_dir[6][3] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                     {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+static const float face_up[6][3] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1},
+                                    {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+
+/* CMCS -> world: the inverse of seed 000's M_rot, (x, y, z) -> (x, z, -y). */
+static void cmcs_to_world(const float c[3], float w[3])
+{
+    w[0] = c[0];
+    w[1] = c[2];
+    w[2] = -c[1];
+}
+
+static rd_result capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int face, float far_m)
+{
+    glBindFramebuffer(GL_FRAMEBUFFER, ctx->probe_fbo);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                           GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, p->capture, 0);
+    rd_result r = rd_probe_depth_ensure(ctx, p->size);
+    if (r != RD_OK)
+        return r;
+    glViewport(0, 0, p->size, p->size);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    vec3 dir, up, target;
+    cmcs_to_world(face_dir[face], dir);
+    cmcs_to_world(face_up[face], up);
+    glm_vec3_add(p->centre, dir, target);
+    mat4 view, proj, vp;
+    glm_lookat(p->centre, target, up, view);
+    glm_perspective(glm_rad(90.0f), 1.0f, fmaxf(far_m * 1e-3f, 1e-4f), far_m, proj);
+    glm_mat4_mul(proj, view, vp);
+    /* The owner is left out of its own capture; reflective objects appear plain (one
+     * bounce). */
+    return rd_draw_objects(
+        ctx, s,
+        &(rd_pass){
+            .view_proj = &vp[0][0], .eye = p->centre, .exclude_key = p->key, .reflections = 0});
+}
+
+/* Which faces this frame's policy captures (a bit each). */
+static int faces_to_capture(const rd_scene *s, rd_probe *p, rd_probe_update u, int every)
+{
+    int all = 0x3f;
+    if (p->faces_valid != all)
+        return all; /* the first frame (and every still) gets a complete map */
+    if (u == RD_PROBE_TIME_SLICED)
+        return 1 << p->next_face;
+    switch (u) {
+    case RD_PROBE_ONCE:
+        return 0;
+    case RD_PROBE_ON_CHANGE:
+        return s->change_counter > p->captured_stamp ? all : 0;
+    default:
+        return s->frame - p->captured_frame >= every ? all : 0;
+    }
+}
+
+float rd_probe_lod(const rd_probe *p, float glossiness)
+{
+    float g = fminf(fmaxf(glossiness, 0.0f), 1.0f);
+    return g >= 1.0f ? 0.0f : (1.0f - g) * (float)(p->levels - 1); /* section 5 */
+}
+
+unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p)
+{
+    const rd_object_desc *o = &s->objects[p->owner];
+    if (o->probe.update == RD_PROBE_STATIC) {
+        const rd_texture_slot *t = rd_cubemap_lookup(s->ctx, o->probe.static_map);
+        return t ? (p->filtered && p->filtered_level >= 0 ? p->filtered : t->name) : 0;
+    }
+    if (p->faces_valid != 0x3f)
+        return 0;
+    if (o->material.glossiness < 1.0f && rd_effective_blur(s) == RD_BLUR_PREFILTERED)
+        return p->filtered_level >= 0 ? p->filtered : 0;
+    return p->capture;
+}
+
+/* After a complete capture: the blur the owner's glossiness needs, and nothing for g = 1. */
+static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned source,
+                            int source_size, rd_frame_stats *stats)
+{
+    const rd_material *m = &s->objects[p->owner].material;
+    p->filtered_level = -1;
+    if (!(m->glossiness < 1.0f))
+        return RD_OK; /* a mirror: no blur work at all (section 5) */
+    glBindTexture(GL_TEXTURE_CUBE_MAP, source);
+    glGenerateMipmap(
+        GL_TEXTURE_CUBE_MAP); /* box mips: the fast method, and the prefilter's source */
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    if (rd_effective_blur(s) != RD_BLUR_PREFILTERED)
+        return RD_OK;
+    if (!p->filtered) {
+        rd_result r = alloc_cube(&p->filtered, p->size, p->levels);
+        if (r != RD_OK)
+            return r;
+    }
+    /* Only the two levels the lookup blends between are computed (section 8: compute only what
+     * the scene needs). */
+    float lod = rd_probe_lod(p, m->glossiness);
+    int lo = (int)floorf(lod), hi = lo + 1 < p->levels ? lo + 1 : lo;
+    float clamp = s->reflection.hdr_clamp > 0.0f ? s->reflection.hdr_clamp : 64.0f;
+    for (int level = lo; level <= hi; level++) {
+        rd_result r = rd_prefilter_level(ctx, source, source_size, p->filtered, p->size, level,
+                                         p->levels, clamp);
+        if (r != RD_OK)
+            return r;
+        stats->prefiltered++;
+    }
+    p->filtered_level = lo;
+    return RD_OK;
+}
+
+rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3], float pixels_per_tan,
+                           int supersample, rd_frame_stats *stats)
+{
+    rd_result r = rd_probes_sync(s);
+    if (r != RD_OK)
+        return r;
+    s->frame++;
+    stats->probes = s->probe_count;
+    if (!s->probe_count)
+        return RD_OK;
+    float bmin[3], bmax[3];
+    rd_effective_proxy(s, bmin, bmax);
+    for (int i = 0; i < s->probe_count; i++) {
+        rd_probe *p = &s->probes[i];
+        const rd_object_desc *owner = &s->objects[p->owner];
+        place_probe(ctx, s, p);
+        if (owner->probe.update == RD_PROBE_STATIC) {
+            const rd_texture_slot *t = rd_cubemap_lookup(ctx, owner->probe.static_map);
+            if (!t)
+                return rd_fail(RD_ERR_STALE_HANDLE, "a static probe's cube map is not live");
+            if (p->captured_frame < 0) {
+                p->size = t->size;
+                p->levels = level_count(t->size);
+                r = blur_probe(ctx, s, p, t->name, t->size, stats);
+                if (r != RD_OK)
+                    return r;
+                p->captured_frame = s->frame;
+            }
+            continue;
+        }
+        int size = probe_resolution(s, p, eye, pixels_per_tan, supersample, ctx->max_size);
+        if (size != p->size) {
+            free_probe_textures(p);
+            p->size = size;
+            p->levels = level_count(size);
+            p->faces_valid = 0;
+            p->next_face = 0;
+            r = alloc_cube(&p->capture, size, p->levels);
+            if (r != RD_OK)
+                return r;
+        }
+        int every;
+        rd_probe_update u = effective_update(s, &owner->probe, &every);
+        int faces = faces_to_capture(s, p, u, every);
+        if (!faces)
+            continue;
+        /* Far enough to see the whole scene from the probe. */
+        float reach = 0.0f;
+        for (int c = 0; c < 8; c++) {
+            vec3 corner = {c & 1 ? bmax[0] : bmin[0], c & 2 ? bmax[1] : bmin[1],
+                           c & 4 ? bmax[2] : bmin[2]};
+            reach = fmaxf(reach, glm_vec3_distance(p->centre, corner));
+        }
+        float far_m = isfinite(reach) && reach > 0.0f ? reach * 2.0f : 100.0f;
+        if (faces == 0x3f)
+            p->captured_stamp = s->change_counter;
+        for (int f = 0; f < 6; f++)
+            if (faces & (1 << f)) {
+                r = capture_face(ctx, s, p, f, far_m);
+                if (r != RD_OK)
+                    return r;
+                p->faces_valid |= 1 << f;
+                stats->faces_captured++;
+            }
+        if (u == RD_PROBE_TIME_SLICED)
+            p->next_face = (p->next_face + 1) % 6;
+        /* Blur when a full set of faces is fresh: every full capture, or at the end of each
+         * time-sliced round. */
+        if (faces == 0x3f || (u == RD_PROBE_TIME_SLICED && p->next_face == 0)) {
+            p->captured_frame = s->frame;
+            r = blur_probe(ctx, s, p, p->capture, p->size, stats);
+            if (r != RD_OK)
+                return r;
+        }
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    unsigned e = rd_gl_drain_errors();
+    return e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "OpenGL error 0x%x in a probe", e);
+}

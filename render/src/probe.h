@@ -1,0 +1,32 @@
+/* Reflection probes: which objects get one, when they are captured, how they are blurred. */
+#ifndef RENDER_PROBE_H
+#define RENDER_PROBE_H
+
+#include "render_internal.h"
+#include "scene_internal.h"
+
+/* The probe key of object i: its group, or -(i + 1) when it stands alone. */
+int rd_object_key(const rd_scene *s, int i);
+
+/* Rebuilds the probe list after objects were added (CPU only; GL textures come later). */
+rd_result rd_probes_sync(rd_scene *s);
+/* Frees the probes' GL textures and the list. */
+void rd_probes_destroy(rd_scene *s);
+
+/* Captures and filters what this frame's policies ask for, before the main pass. The eye,
+ * the main view's projection scale (pixels per unit of tan) and the supersampling decide the
+ * "auto" resolutions. */
+rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3],
+                           float pixels_per_tan, int supersample, rd_frame_stats *stats);
+
+/* The effective settings of object i's material and probe after the scene's defaults. */
+rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m);
+rd_blur_method rd_effective_blur(const rd_scene *s);
+void rd_effective_proxy(const rd_scene *s, float bmin[3], float bmax[3]);
+float rd_probe_lod(const rd_probe *p, float glossiness);
+unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p);
+
+/* World bounds of object i (its mesh bounds through its transform). */
+void rd_object_world_bounds(rd_context *ctx, const rd_object_desc *o, float lo[3], float hi[3]);
+
+#endif
