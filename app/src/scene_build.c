@@ -81,7 +81,10 @@ app_result app_scene_material(rd_context *ctx, const app_project *p, app_scene *
                      .reflectivity = am->reflectivity,
                      .glossiness = am->glossiness,
                      .blend = (rd_reflection_blend)am->blend,
-                     .correction = (rd_correction)am->correction};
+                     .correction = (rd_correction)am->correction,
+                     .transparency = am->transparency,
+                     .ior = am->ior,
+                     .dispersion = am->dispersion};
     memcpy(m.ambient, am->ambient, sizeof m.ambient);
     memcpy(m.diffuse, am->diffuse, sizeof m.diffuse);
     memcpy(m.specular, am->specular, sizeof m.specular);

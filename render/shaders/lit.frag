@@ -36,6 +36,8 @@ uniform float u_proxy_radius;
 uniform float u_kr;
 uniform float u_lod; // level of detail for the glossiness (0 for a mirror)
 uniform int u_blend; // 0 mix, 1 add, 2 fresnel
+uniform float u_transparency, u_ior, u_dispersion;
+uniform int u_thin; // a double-sided sheet: light passes straight through
 #endif
 
 out vec4 frag_color;
@@ -106,6 +108,25 @@ void main()
              : u_correction == 3 ? correct_sphere(v_world, r, u_probe_centre, u_proxy_radius)
                                  : r;
     vec3 refl = textureLod(u_probe, world_to_cmcs(d), u_lod).rgb;
+    if (u_transparency > 0.0) {
+        // Seed 003: refraction with an IOR, total internal reflection, optional dispersion
+        // (one IOR per channel). A thin sheet displaces the ray but does not turn it.
+        vec3 refr;
+        for (int ch = 0; ch < 3; ch++) {
+            float ior = u_ior + (float(ch) - 1.0) * 0.5 * u_dispersion;
+            vec3 t = u_thin == 1 ? -V : refract(-V, N, 1.0 / ior);
+            vec3 dt = dot(t, t) == 0.0 ? d // total internal reflection
+                      : u_correction == 2 ? correct_box(v_world, t, u_proxy_min, u_proxy_max, u_probe_centre)
+                      : u_correction == 3 ? correct_sphere(v_world, t, u_probe_centre, u_proxy_radius)
+                                          : t;
+            refr[ch] = textureLod(u_probe, world_to_cmcs(dt), u_lod)[ch];
+            if (u_dispersion <= 0.0) {
+                refr = textureLod(u_probe, world_to_cmcs(dt), u_lod).rgb;
+                break;
+            }
+        }
+        lit = mix(lit, refr, u_transparency);
+    }
     lit = blend_reflection(u_blend, u_kr, u_mat_specular, lit, refl, dot(N, V));
 #endif
     frag_color = vec4(max(u_mat_emissive, lit), 1.0); // eq. 7

@@ -103,8 +103,13 @@ static draw_item *sorted_draw_list(rd_context *ctx, const rd_scene *s, const flo
 
 /* The reflection inputs of one object (RENDERING.md sections 3-6). */
 static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, const rd_probe *probe,
-                                    const rd_material *m)
+                                    const rd_object_desc *o)
 {
+    const rd_material *m = &o->material;
+    glUniform1f(p->u_transparency, fminf(fmaxf(m->transparency, 0.0f), 1.0f));
+    glUniform1f(p->u_ior, m->ior > 0.0f ? m->ior : 1.5f);
+    glUniform1f(p->u_dispersion, fmaxf(m->dispersion, 0.0f));
+    glUniform1i(p->u_thin, o->double_sided ? 1 : 0);
     float bmin[3], bmax[3];
     rd_effective_proxy(s, bmin, bmax);
     rd_correction c = rd_effective_correction(s, m);
@@ -135,6 +140,10 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
         const rd_object_desc *o = &scene->objects[index];
         if (pass->exclude_key && rd_object_key(scene, index) == pass->exclude_key)
             continue;
+        /* Probes see no glass: drawn plain it would be an opaque dark sheet, and what a clear
+         * pane shows is what lies behind it, which the probe sees anyway. */
+        if (!pass->reflections && o->material.transparency > 0.0f)
+            continue;
         const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
         const rd_texture_slot *t = rd_texture_lookup(ctx, o->material.diffuse_texture);
         if (!m)
@@ -158,7 +167,7 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
             glBindTexture(GL_TEXTURE_2D, t->name);
         }
         if (probe)
-            set_reflection_uniforms(p, scene, probe, &o->material);
+            set_reflection_uniforms(p, scene, probe, o);
         /* Back faces of closed meshes are never seen: culling them saves shading fragments
          * that early depth testing cannot reject when they happen to be drawn first. */
         if (o->double_sided)

@@ -49,8 +49,9 @@ rd_result rd_probes_sync(rd_scene *s)
     s->probes = list;
     for (int i = 0; i < s->object_count; i++) {
         map[i] = -1;
-        if (!(s->objects[i].material.reflectivity > 0.0f))
-            continue; /* k_r = 0: no probe (section 3) */
+        const rd_material *mat = &s->objects[i].material;
+        if (!(mat->reflectivity > 0.0f) && !(mat->transparency > 0.0f))
+            continue; /* k_r = 0 and opaque: no probe (section 3) */
         int key = rd_object_key(s, i), found = -1;
         for (int j = 0; j < s->probe_count; j++)
             if (s->probes[j].key == key)
@@ -252,7 +253,9 @@ static rd_result capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int fac
     glm_vec3_add(p->centre, dir, target);
     mat4 view, proj, vp;
     glm_lookat(p->centre, target, up, view);
-    glm_perspective(glm_rad(90.0f), 1.0f, fmaxf(far_m * 1e-3f, 1e-4f), far_m, proj);
+    /* A probe often sits millimetres in front of a wall (a mirror's centre is on its
+     * surface): the near plane must not cut that wall away. */
+    glm_perspective(glm_rad(90.0f), 1.0f, fmaxf(far_m * 1e-4f, 1e-5f), far_m, proj);
     glm_mat4_mul(proj, view, vp);
     /* The owner is left out of its own capture; reflective objects appear plain (one
      * bounce). */

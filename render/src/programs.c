@@ -112,6 +112,10 @@ static void locate_lit(rd_program *p)
     p->u_kr = glGetUniformLocation(id, "u_kr");
     p->u_lod = glGetUniformLocation(id, "u_lod");
     p->u_blend = glGetUniformLocation(id, "u_blend");
+    p->u_transparency = glGetUniformLocation(id, "u_transparency");
+    p->u_ior = glGetUniformLocation(id, "u_ior");
+    p->u_dispersion = glGetUniformLocation(id, "u_dispersion");
+    p->u_thin = glGetUniformLocation(id, "u_thin");
 }
 
 rd_result rd_programs_create(rd_context *ctx)

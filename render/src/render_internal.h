@@ -54,7 +54,7 @@ typedef struct rd_program {
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
     int u_diffuse_texture, u_uv_scale;
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
-        u_lod, u_blend;
+        u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */

@@ -132,6 +132,12 @@ typedef struct rd_material {
     float glossiness;   /* g in [0, 1]; 1 = mirror, no blur work at all */
     rd_reflection_blend blend;
     rd_correction correction;
+    /* Glass (RENDERING.md section 9, seed 003): what lies behind is looked up in the probe
+     * along the refracted ray (straight through for a double-sided sheet), mixed into the lit
+     * colour by transparency, then the reflection is blended on top as above. */
+    float transparency; /* 0 opaque .. 1 clear */
+    float ior;          /* 0 = 1.5 */
+    float dispersion;   /* IOR spread from red to blue; 0 = none */
 } rd_material;
 
 typedef enum rd_light_type {
