@@ -46,18 +46,18 @@ typedef struct app_material {
     float texture_size_mm[2]; /* real-world size one texture repeat covers (default 1000x1000) */
 
     /* Reflections (docs/project-format.md "Reflections"; RENDERING.md sections 3-8). */
-    float reflectivity;       /* k_r in [0, 1]; 0 = none (default) */
-    float glossiness;         /* g in [0, 1]; 1 = mirror (default) */
-    int blend;                /* APP_BLEND_* */
-    int correction;           /* APP_CORRECTION_* */
-    int probe_update;         /* APP_PROBE_* */
-    int probe_every;          /* APP_PROBE_EVERY_FRAME: every n-th frame; 0/1 = every frame */
-    int probe_resolution;     /* texels per face side; 0 = auto */
-    float proxy_radius_mm;    /* sphere proxy radius; 0 = 4 x the object's bounding radius */
+    float reflectivity;    /* k_r in [0, 1]; 0 = none (default) */
+    float glossiness;      /* g in [0, 1]; 1 = mirror (default) */
+    int blend;             /* APP_BLEND_* */
+    int correction;        /* APP_CORRECTION_* */
+    int probe_update;      /* APP_PROBE_* */
+    int probe_every;       /* APP_PROBE_EVERY_FRAME: every n-th frame; 0/1 = every frame */
+    int probe_resolution;  /* texels per face side; 0 = auto */
+    float proxy_radius_mm; /* sphere proxy radius; 0 = 4 x the object's bounding radius */
     /* Glass (RENDERING.md section 9). */
-    float transparency;       /* 0 opaque .. 1 clear */
-    float ior;                /* index of refraction, default 1.5 */
-    float dispersion;         /* IOR spread between red and blue, 0 = none */
+    float transparency; /* 0 opaque .. 1 clear */
+    float ior;          /* index of refraction, default 1.5 */
+    float dispersion;   /* IOR spread between red and blue, 0 = none */
 } app_material;
 
 enum { APP_BLEND_MIX = 0, APP_BLEND_ADD, APP_BLEND_FRESNEL };

@@ -111,9 +111,9 @@ typedef enum rd_correction {
 
 /* How a blurred reflection is looked up (RENDERING.md section 5). */
 typedef enum rd_blur_method {
-    RD_BLUR_DEFAULT = 0,   /* the scene's choice */
-    RD_BLUR_PREFILTERED,   /* a mip chain convolved with the Phong lobe per level, on the GPU */
-    RD_BLUR_BOX_MIPS,      /* plain box-filtered mips with a level-of-detail bias (seed 001) */
+    RD_BLUR_DEFAULT = 0, /* the scene's choice */
+    RD_BLUR_PREFILTERED, /* a mip chain convolved with the Phong lobe per level, on the GPU */
+    RD_BLUR_BOX_MIPS,    /* plain box-filtered mips with a level-of-detail bias (seed 001) */
 } rd_blur_method;
 
 /* RENDERING.md section 1; the same struct feeds the CPU reference (shade_ref.h). */
@@ -163,12 +163,12 @@ typedef struct rd_scene rd_scene;
 
 /* When a probe's cube map is captured again (RENDERING.md section 8). */
 typedef enum rd_probe_update {
-    RD_PROBE_DEFAULT = 0,  /* the scene's choice */
-    RD_PROBE_EVERY_FRAME,  /* also "every N frames" with every_n > 1 */
-    RD_PROBE_ONCE,         /* on the first frame only */
-    RD_PROBE_ON_CHANGE,    /* when any other object moved or changed since the last capture */
-    RD_PROBE_TIME_SLICED,  /* one face per frame, round robin */
-    RD_PROBE_STATIC,       /* a prepared map (rd_cubemap), never captured */
+    RD_PROBE_DEFAULT = 0, /* the scene's choice */
+    RD_PROBE_EVERY_FRAME, /* also "every N frames" with every_n > 1 */
+    RD_PROBE_ONCE,        /* on the first frame only */
+    RD_PROBE_ON_CHANGE,   /* when any other object moved or changed since the last capture */
+    RD_PROBE_TIME_SLICED, /* one face per frame, round robin */
+    RD_PROBE_STATIC,      /* a prepared map (rd_cubemap), never captured */
 } rd_probe_update;
 
 typedef struct rd_cubemap {
@@ -177,9 +177,9 @@ typedef struct rd_cubemap {
 
 typedef struct rd_probe_desc {
     rd_probe_update update;
-    int every_n;          /* RD_PROBE_EVERY_FRAME: capture on every n-th frame; 0 or 1 = every */
-    int resolution;       /* texels per face side; 0 = auto, from the object's size on screen */
-    float proxy_radius_m; /* RD_CORRECTION_SPHERE: 0 = the object's bounding radius x 4 */
+    int every_n;           /* RD_PROBE_EVERY_FRAME: capture on every n-th frame; 0 or 1 = every */
+    int resolution;        /* texels per face side; 0 = auto, from the object's size on screen */
+    float proxy_radius_m;  /* RD_CORRECTION_SPHERE: 0 = the object's bounding radius x 4 */
     rd_cubemap static_map; /* RD_PROBE_STATIC */
 } rd_probe_desc;
 
@@ -212,9 +212,9 @@ typedef struct rd_reflection_defaults {
     rd_blur_method blur;      /* DEFAULT = prefiltered */
     rd_probe_update update;   /* DEFAULT = every frame */
     int every_n;
-    int resolution;           /* 0 = auto */
-    int max_resolution;       /* cap for auto; 0 = 256 (stills raise it: print quality) */
-    float hdr_clamp;          /* radiance clamp before blurring; 0 = 64 */
+    int resolution;                   /* 0 = auto */
+    int max_resolution;               /* cap for auto; 0 = 256 (stills raise it: print quality) */
+    float hdr_clamp;                  /* radiance clamp before blurring; 0 = 64 */
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
