@@ -64,6 +64,7 @@
     X(PFNGLDELETETEXTURESPROC, glDeleteTextures)                                                   \
     X(PFNGLBINDTEXTUREPROC, glBindTexture)                                                         \
     X(PFNGLTEXIMAGE2DPROC, glTexImage2D)                                                           \
+    X(PFNGLGETTEXIMAGEPROC, glGetTexImage)                                                         \
     X(PFNGLTEXPARAMETERIPROC, glTexParameteri)                                                     \
     X(PFNGLTEXPARAMETERFPROC, glTexParameterf)                                                     \
     X(PFNGLACTIVETEXTUREPROC, glActiveTexture)                                                     \
@@ -143,6 +144,7 @@ RD_GL_FUNCTIONS(RD_GL_DECLARE)
 #define glDeleteTextures rd_glDeleteTextures
 #define glBindTexture rd_glBindTexture
 #define glTexImage2D rd_glTexImage2D
+#define glGetTexImage rd_glGetTexImage
 #define glTexParameteri rd_glTexParameteri
 #define glTexParameterf rd_glTexParameterf
 #define glActiveTexture rd_glActiveTexture

@@ -417,3 +417,27 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3], flo
     unsigned e = rd_gl_drain_errors();
     return e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "OpenGL error 0x%x in a probe", e);
 }
+
+rd_result rd_scene_read_probe(rd_scene *s, int index, int face, int level, float *rgba,
+                              size_t count, int *size)
+{
+    if (!s || index < 0 || index >= s->probe_count || face < 0 || face > 5 || level < 0)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_read_probe: no probe %d face %d", index,
+                       face);
+    const rd_probe *p = &s->probes[index];
+    unsigned tex = rd_probe_texture(s, p);
+    int n = p->size >> level;
+    if (!tex || level >= p->levels || n < 1)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_read_probe: probe %d has no level %d",
+                       index, level);
+    if (!rgba || count < (size_t)n * (size_t)n * 4)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_read_probe: buffer too small");
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, level, GL_RGBA, GL_FLOAT, rgba);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    if (size)
+        *size = n;
+    return rd_gl_drain_errors() == GL_NO_ERROR ? RD_OK
+                                               : rd_fail(RD_ERR_GL, "rd_scene_read_probe failed");
+}

@@ -221,6 +221,11 @@ void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defau
 
 /* Probes the scene holds now (one per reflective object or group); for tests and stats. */
 int rd_scene_probe_count(const rd_scene *scene);
+/* Reads back one face (GL order) of one mip level of probe `index`'s cube map as the main
+ * pass samples it (captured, box-mipped or prefiltered), RGBA float, CMCS; *size gets the
+ * level's side. For tests and diagnostics. */
+rd_result rd_scene_read_probe(rd_scene *scene, int index, int face, int level, float *rgba,
+                              size_t count, int *size);
 /* Frame statistics of the last rd_render: faces captured, prefilter passes. */
 typedef struct rd_frame_stats {
     int probes, faces_captured, prefiltered;
