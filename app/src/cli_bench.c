@@ -14,23 +14,26 @@ static void print_row(const char *what, const app_stats *s)
            s->max, s->mad);
 }
 
-static int write_csv(const char *path, const double *frame, const double *floor_ms, int n)
+static int write_csv(const char *path, const double *frame, const double *floor_ms,
+                     const rd_frame_stats *stats, int n)
 {
     FILE *f = fopen(path, "w");
     if (!f) {
         perror(path);
         return CLI_FAILED;
     }
-    fprintf(f, "index,frame_ms,floor_ms\n");
+    fprintf(f, "index,frame_ms,floor_ms,probes,faces_captured,prefiltered\n");
     for (int i = 0; i < n; i++)
-        fprintf(f, "%d,%.4f,%.4f\n", i, frame[i], floor_ms[i]);
+        fprintf(f, "%d,%.4f,%.4f,%d,%d,%d\n", i, frame[i], floor_ms[i], stats[i].probes,
+                stats[i].faces_captured, stats[i].prefiltered);
     return fclose(f) == 0 ? CLI_OK : CLI_FAILED;
 }
 
 int app_cli_bench(int argc, char **argv)
 {
     cli_options o = {.frames = 30, .warmup = 5};
-    int rc = cli_parse(argc, argv, 2, "bench", "camera size frames warmup backend csv", &o);
+    int rc =
+        cli_parse(argc, argv, 2, "bench", "camera size frames warmup backend csv probes blur", &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project) {
@@ -50,9 +53,11 @@ int app_cli_bench(int argc, char **argv)
     view.supersample = 1; /* an interactive frame */
     double *frame = calloc((size_t)o.frames, sizeof *frame);
     double *floor_ms = calloc((size_t)o.frames, sizeof *floor_ms);
-    if (!frame || !floor_ms) {
+    rd_frame_stats *stats = calloc((size_t)o.frames, sizeof *stats);
+    if (!frame || !floor_ms || !stats) {
         free(frame);
         free(floor_ms);
+        free(stats);
         cli_session_close(&s);
         return CLI_FAILED;
     }
@@ -61,6 +66,7 @@ int app_cli_bench(int argc, char **argv)
         rd_result r1 = rd_render(s.ctx, s.scene.scene, &view);
         rd_finish(s.ctx);
         double t1 = cli_now_ms();
+        rd_frame_stats st = rd_last_frame_stats(s.ctx);
         rd_result r2 = rd_render_floor(s.ctx, s.scene.scene, &view);
         rd_finish(s.ctx);
         double t2 = cli_now_ms();
@@ -72,13 +78,14 @@ int app_cli_bench(int argc, char **argv)
         if (i >= o.warmup) {
             frame[i - o.warmup] = t1 - t0;
             floor_ms[i - o.warmup] = t2 - t1;
+            stats[i - o.warmup] = st;
         }
         fprintf(stderr, "\r%s %d/%d", i < o.warmup ? "warm-up" : "frame  ",
                 i < o.warmup ? i + 1 : i + 1 - o.warmup, i < o.warmup ? o.warmup : o.frames);
     }
     fprintf(stderr, "\n");
     if (rc == CLI_OK && o.csv)
-        rc = write_csv(o.csv, frame, floor_ms, o.frames);
+        rc = write_csv(o.csv, frame, floor_ms, stats, o.frames);
     if (rc == CLI_OK) {
         app_stats fs = app_stats_of(frame, o.frames), ls = app_stats_of(floor_ms, o.frames);
         printf("project  %s\nbackend  %s (%s)\nsize     %dx%d, %d frames after %d warm-up\n",
@@ -94,6 +101,7 @@ int app_cli_bench(int argc, char **argv)
     }
     free(frame);
     free(floor_ms);
+    free(stats);
     cli_session_close(&s);
     return rc;
 }

@@ -43,6 +43,20 @@ static int parse_int(const char *text, int lo, int hi, int *out)
     return 1;
 }
 
+/* Names by enum value; index 0 (the default) is not accepted on the command line. */
+static const char *const probe_names[5] = {"", "every-frame", "once", "on-change", "time-sliced"};
+static const char *const blur_names[3] = {"", "prefiltered", "box-mips"};
+
+static int parse_name(const char *text, const char *const *names, int count, int *out)
+{
+    for (int i = 1; i < count; i++)
+        if (!strcmp(text, names[i])) {
+            *out = i;
+            return 1;
+        }
+    return 0;
+}
+
 static int allowed_option(const char *allowed, const char *name)
 {
     size_t n = strlen(name);
@@ -94,6 +108,10 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             ok = parse_int(v, 1, 100000, &o->frames);
         else if (!strcmp(name, "warmup"))
             ok = parse_int(v, 0, 100000, &o->warmup);
+        else if (!strcmp(name, "probes"))
+            ok = parse_name(v, probe_names, 5, (int *)&o->probes);
+        else if (!strcmp(name, "blur"))
+            ok = parse_name(v, blur_names, 3, (int *)&o->blur);
         else if (!strcmp(name, "backend"))
             ok = rd_backend_parse(v, &o->backend) == RD_OK && o->backend != RD_BACKEND_ADOPT;
         if (!ok) {
@@ -101,7 +119,10 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
                     !strcmp(name, "size")          ? " (expected WIDTHxHEIGHT, e.g. 1280x720)"
                     : !strcmp(name, "backend")     ? " (expected egl or osmesa)"
                     : !strcmp(name, "supersample") ? " (expected 1 to 4)"
-                                                   : "");
+                    : !strcmp(name, "probes")
+                        ? " (expected every-frame, once, on-change or time-sliced)"
+                    : !strcmp(name, "blur") ? " (expected prefiltered or box-mips)"
+                                            : "");
             return CLI_USAGE;
         }
     }

@@ -17,6 +17,8 @@ typedef struct cli_options {
     int supersample;
     int frames, warmup;
     rd_backend backend;
+    rd_probe_update probes; /* --probes: the scene's default update policy; 0 = the project's */
+    rd_blur_method blur;    /* --blur */
 } cli_options;
 
 /* Parses argv[first..]; prints the problem and returns CLI_USAGE on a bad option. `allowed`

@@ -57,6 +57,14 @@ int cli_session_open(const cli_options *o, cli_session *s)
         cli_session_close(s);
         return r == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
     }
+    if (o->probes || o->blur) {
+        rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
+        if (o->probes)
+            d.update = o->probes;
+        if (o->blur)
+            d.blur = o->blur;
+        rd_scene_set_reflection_defaults(s->scene.scene, &d);
+    }
     return CLI_OK;
 }
 

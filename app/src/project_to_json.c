@@ -224,6 +224,8 @@ static void put_object(jb *b, cJSON *list, const app_object *obj)
 {
     cJSON *o = put_container(b, list, NULL, 0);
     put_str(b, o, "name", obj->name, sizeof obj->name);
+    if (obj->group[0])
+        put_str(b, o, "group", obj->group, sizeof obj->group);
     if (b->r != APP_OK)
         return;
     if (obj->shape == APP_SHAPE_MODEL) {

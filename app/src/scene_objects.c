@@ -30,6 +30,19 @@ void app_object_transform(const app_object *o, const double size_m[3], float out
     out[15] = 1.0f;
 }
 
+/* The renderer's group of object `index`: objects sharing a group name get the id of the
+ * first of them (+1); a model's parts share their object's id; 0 = alone. */
+static int group_of(const app_project *p, int index)
+{
+    const char *g = p->objects[index].group;
+    if (!g[0])
+        return p->objects[index].shape == APP_SHAPE_MODEL ? index + 1 : 0;
+    for (int i = 0; i < index; i++)
+        if (!strcmp(p->objects[i].group, g))
+            return i + 1;
+    return index + 1;
+}
+
 /* The probe settings of a project material (RENDERING.md section 8). */
 static rd_probe_desc probe_of(const app_material *am)
 {
@@ -39,13 +52,15 @@ static rd_probe_desc probe_of(const app_material *am)
                            .proxy_radius_m = am->proxy_radius_mm * 1e-3f};
 }
 
+/* coarse = 1: the low-detail version drawn in probe captures (a quarter of the segments). */
 static app_result unit_mesh(rd_context *ctx, app_scene *s, app_shape shape, float torus_ratio,
-                            rd_mesh *out)
+                            int coarse, rd_mesh *out)
 {
-    if (shape != APP_SHAPE_TORUS && s->unit_meshes[shape].id) {
-        *out = s->unit_meshes[shape];
+    if (shape != APP_SHAPE_TORUS && s->unit_meshes[coarse][shape].id) {
+        *out = s->unit_meshes[coarse][shape];
         return APP_OK;
     }
+    int seg = coarse ? 16 : 64;
     rd_mesh_data d;
     rd_result r;
     switch (shape) {
@@ -53,16 +68,16 @@ static app_result unit_mesh(rd_context *ctx, app_scene *s, app_shape shape, floa
         r = rd_mesh_data_box(&d);
         break;
     case APP_SHAPE_SPHERE:
-        r = rd_mesh_data_sphere(64, 32, &d);
+        r = rd_mesh_data_sphere(seg, seg / 2, &d);
         break;
     case APP_SHAPE_CYLINDER:
-        r = rd_mesh_data_cylinder(64, &d);
+        r = rd_mesh_data_cylinder(seg, &d);
         break;
     case APP_SHAPE_PLANE:
         r = rd_mesh_data_plane(&d);
         break;
     default:
-        r = rd_mesh_data_torus(torus_ratio, 64, 24, &d);
+        r = rd_mesh_data_torus(torus_ratio, seg, coarse ? 8 : 24, &d);
         break;
     }
     if (r != RD_OK)
@@ -73,7 +88,7 @@ static app_result unit_mesh(rd_context *ctx, app_scene *s, app_shape shape, floa
     if (!m.id || app_scene_track_mesh(s, m) != APP_OK)
         return APP_ERR_OUT_OF_MEMORY;
     if (shape != APP_SHAPE_TORUS)
-        s->unit_meshes[shape] = m;
+        s->unit_meshes[coarse][shape] = m;
     *out = m;
     return APP_OK;
 }
@@ -91,8 +106,11 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
         ratio = (float)fmin(o->size_mm[2] / o->size_mm[0], 0.5);
         size_m[2] = size_m[0];
     }
-    rd_mesh mesh;
-    if (unit_mesh(ctx, s, o->shape, ratio, &mesh) != APP_OK) {
+    rd_mesh mesh, coarse = {0};
+    int curved = o->shape == APP_SHAPE_SPHERE || o->shape == APP_SHAPE_CYLINDER ||
+                 o->shape == APP_SHAPE_TORUS;
+    if (unit_mesh(ctx, s, o->shape, ratio, 0, &mesh) != APP_OK ||
+        (curved && unit_mesh(ctx, s, o->shape, ratio, 1, &coarse) != APP_OK)) {
         snprintf(err, err_size, "%s: $.objects[%d] (\"%s\"): cannot make its mesh: %s", p->path,
                  index, o->name, rd_last_error());
         return APP_ERR_SCHEMA;
@@ -101,7 +119,9 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
     rd_object_desc d = {.mesh = mesh,
                         .material = *m,
                         .double_sided = o->shape == APP_SHAPE_PLANE,
-                        .probe = probe_of(&p->materials[o->material])};
+                        .probe = probe_of(&p->materials[o->material]),
+                        .probe_mesh = coarse,
+                        .group = group_of(p, index)};
     /* Unit-mesh UVs span the whole object: repeat the texture at its real-world size. A plane
      * maps u, v to its x, y; the other shapes wrap u around and run v along the height. */
     const app_material *am = &p->materials[o->material];
@@ -156,7 +176,7 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
         rd_object_desc d = {.mesh = mesh,
                             .material = *m,
                             .double_sided = 1,
-                            .group = index + 1, /* one probe for all parts of the model */
+                            .group = group_of(p, index), /* one probe for the model */
                             .probe = probe_of(&p->materials[o->material])};
         memcpy(d.transform, transform, sizeof transform);
         if (rd_scene_add_object(s->scene, &d) != RD_OK) {

@@ -2,7 +2,7 @@
 // (RENDERING.md section 5; seed 001 eq. 6), by importance sampling the lobe itself, so the
 // estimate is a plain mean and brightness is conserved. Each sample reads the source's box
 // mips at the level matching its share of the lobe's solid angle ("filtered importance
-// sampling"), which keeps 48 samples free of fireflies; samples are clamped first so a lamp
+// sampling"), which keeps 24 samples free of fireflies; samples are clamped first so a lamp
 // does not turn into speckles. Directions are cube-map coordinates (CMCS) throughout, and
 // sampling is by direction with seamless filtering, so face edges leave no seams.
 uniform samplerCube u_source;
@@ -11,10 +11,11 @@ uniform float u_size;        // texels per side of the level being written
 uniform float u_exponent;    // n; 0 = copy (the mirror level)
 uniform float u_clamp;       // HDR clamp
 uniform float u_source_size; // texels per side of the source's level 0
+uniform int u_samples;       // 1..MAX_SAMPLES: fewer where the lobe is only texels wide
 
 out vec4 frag_color;
 
-const int SAMPLES = 48;
+const int MAX_SAMPLES = 24;
 const float PI = 3.14159265358979;
 
 // The direction through (s, t) of a face: the inverse of GL's face selection table.
@@ -37,7 +38,7 @@ vec2 hammersley(int i)
     b = ((b & 0x33333333u) << 2u) | ((b & 0xCCCCCCCCu) >> 2u);
     b = ((b & 0x0F0F0F0Fu) << 4u) | ((b & 0xF0F0F0F0u) >> 4u);
     b = ((b & 0x00FF00FFu) << 8u) | ((b & 0xFF00FF00u) >> 8u);
-    return vec2((float(i) + 0.5) / float(SAMPLES), float(b) * 2.3283064365386963e-10);
+    return vec2((float(i) + 0.5) / float(u_samples), float(b) * 2.3283064365386963e-10);
 }
 
 void main()
@@ -52,16 +53,16 @@ void main()
     vec3 t2 = cross(d, t1);
     float texel_solid_angle = 4.0 * PI / (6.0 * u_source_size * u_source_size);
     vec3 sum = vec3(0.0);
-    for (int i = 0; i < SAMPLES; i++) {
+    for (int i = 0; i < u_samples; i++) {
         vec2 xi = hammersley(i);
         float cos_t = pow(xi.x, 1.0 / (u_exponent + 1.0));
         float sin_t = sqrt(max(1.0 - cos_t * cos_t, 0.0));
         float phi = 2.0 * PI * xi.y;
         vec3 l = t1 * (cos(phi) * sin_t) + t2 * (sin(phi) * sin_t) + d * cos_t;
         float pdf = (u_exponent + 1.0) / (2.0 * PI) * pow(cos_t, u_exponent);
-        float sample_solid_angle = 1.0 / (float(SAMPLES) * max(pdf, 1e-8));
+        float sample_solid_angle = 1.0 / (float(u_samples) * max(pdf, 1e-8));
         float lod = max(0.5 * log2(sample_solid_angle / texel_solid_angle) + 1.0, 0.0);
         sum += min(textureLod(u_source, l, lod).rgb, vec3(u_clamp));
     }
-    frag_color = vec4(sum / float(SAMPLES), 1.0);
+    frag_color = vec4(sum / float(u_samples), 1.0);
 }

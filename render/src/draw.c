@@ -129,22 +129,50 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glActiveTexture(GL_TEXTURE0);
 }
 
+/* Whether a bounding sphere (centre, radius) lies outside one of the frustum's planes. */
+static int outside_frustum(vec4 planes[6], const float sphere[4])
+{
+    for (int i = 0; i < 6; i++)
+        if (glm_vec3_dot(planes[i], (float *)sphere) + planes[i][3] < -sphere[3])
+            return 1;
+    return 0;
+}
+
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
 {
     draw_item *items = sorted_draw_list(ctx, scene, pass->eye);
     if (!items)
         return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
+    /* Only what the view can see is drawn: a probe face sees a sixth of the room. */
+    mat4 vp;
+    vec4 planes[6];
+    memcpy(vp, pass->view_proj, sizeof vp);
+    glm_frustum_planes(vp, planes);
     int frame_uniforms_set[RD_LIT_VARIANTS] = {0};
     for (int i = 0; i < scene->object_count; i++) {
         int index = items[i].index;
         const rd_object_desc *o = &scene->objects[index];
         if (pass->exclude_key && rd_object_key(scene, index) == pass->exclude_key)
             continue;
+        if (scene->object_spheres && outside_frustum(planes, scene->object_spheres[index]))
+            continue;
+        /* A probe skips what would cover less than about a texel of its faces. */
+        if (pass->min_solid_radius > 0.0f && scene->object_spheres) {
+            const float *sp = scene->object_spheres[index];
+            float d = glm_vec3_distance((float *)sp, (float *)pass->eye);
+            if (sp[3] < pass->min_solid_radius * d)
+                continue;
+        }
         /* Probes see no glass: drawn plain it would be an opaque dark sheet, and what a clear
          * pane shows is what lies behind it, which the probe sees anyway. */
         if (!pass->reflections && o->material.transparency > 0.0f)
             continue;
         const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
+        if (!pass->reflections && o->probe_mesh.id) {
+            const rd_mesh_slot *coarse = rd_mesh_lookup(ctx, o->probe_mesh);
+            if (coarse)
+                m = coarse;
+        }
         const rd_texture_slot *t = rd_texture_lookup(ctx, o->material.diffuse_texture);
         if (!m)
             continue; /* destroyed after it was added: nothing to draw */

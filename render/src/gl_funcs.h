@@ -80,7 +80,8 @@
     X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                                         \
     X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)                                 \
     X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                                                         \
-    X(PFNGLREADBUFFERPROC, glReadBuffer)
+    X(PFNGLREADBUFFERPROC, glReadBuffer)                                                           \
+    X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)
 
 #define RD_GL_DECLARE(type, name) extern type rd_##name;
 RD_GL_FUNCTIONS(RD_GL_DECLARE)
@@ -161,6 +162,7 @@ RD_GL_FUNCTIONS(RD_GL_DECLARE)
 #define glFramebufferRenderbuffer rd_glFramebufferRenderbuffer
 #define glDrawBuffers rd_glDrawBuffers
 #define glReadBuffer rd_glReadBuffer
+#define glBlitFramebuffer rd_glBlitFramebuffer
 
 /* Loads every entry point; on failure names the first missing one in rd_last_error(). */
 int rd_gl_load(void *(*get_proc_address)(const char *name));

@@ -13,6 +13,26 @@ float rd_gloss_exponent(float g)
     return exp2f(13.0f * g);
 }
 
+/* The mirror level is the capture itself: a framebuffer blit per face, no shading. (The HDR
+ * clamp is for blurring; a mirror shows the lamp as it is.) */
+static rd_result copy_level0(rd_context *ctx, unsigned source, unsigned dest, int size)
+{
+    if (!ctx->blit_fbo)
+        glGenFramebuffers(1, &ctx->blit_fbo);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, ctx->blit_fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, ctx->probe_fbo);
+    glFramebufferRenderbuffer(GL_DRAW_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
+    for (int f = 0; f < 6; f++) {
+        GLenum face = GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f;
+        glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, face, source, 0);
+        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, face, dest, 0);
+        glBlitFramebuffer(0, 0, size, size, 0, 0, size, size, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    unsigned e = rd_gl_drain_errors();
+    return e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "OpenGL error 0x%x copying a probe", e);
+}
+
 rd_result rd_prefilter_level(rd_context *ctx, unsigned source, int source_size, unsigned dest,
                              int dest_size, int level, int levels, float hdr_clamp)
 {
@@ -24,6 +44,8 @@ rd_result rd_prefilter_level(rd_context *ctx, unsigned source, int source_size, 
     int size = dest_size >> level;
     if (size < 1)
         size = 1;
+    if (level == 0 && source_size == dest_size)
+        return copy_level0(ctx, source, dest, size);
     /* Level k holds the lobe of g_k = 1 - k / (levels - 1); level 0 is the mirror image. */
     float g = levels > 1 ? 1.0f - (float)level / (float)(levels - 1) : 1.0f;
     float exponent = level == 0 ? 0.0f : rd_gloss_exponent(g);
@@ -40,6 +62,12 @@ rd_result rd_prefilter_level(rd_context *ctx, unsigned source, int source_size, 
     glUniform1f(ctx->pf_u_exponent, exponent);
     glUniform1f(ctx->pf_u_clamp, hdr_clamp);
     glUniform1f(ctx->pf_u_source_size, (float)source_size);
+    /* As many samples as the lobe is texels wide, squared (4 .. 24): a narrow lobe is a few
+     * texels of this level, and the filtered lookups of the source already average those. */
+    float half_width = sqrtf(2.0f * 0.6931472f / fmaxf(exponent, 1.0f));
+    float texels = half_width / (1.5707963f / (float)size);
+    int samples = (int)ceilf(4.0f * texels * texels);
+    glUniform1i(ctx->pf_u_samples, samples < 4 ? 4 : samples > 24 ? 24 : samples);
     glBindVertexArray(ctx->empty_vao);
     for (int f = 0; f < 6; f++) {
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,

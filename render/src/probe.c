@@ -7,6 +7,7 @@
 
 #include <cglm/cglm.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 int rd_object_key(const rd_scene *s, int i)
@@ -104,13 +105,18 @@ static void place_probe(rd_context *ctx, const rd_scene *s, rd_probe *p)
             hi[k] = fmaxf(hi[k], b[k]);
         }
     }
-    float r2 = 0.0f;
+    float r2 = 0.0f, e[3];
     for (int k = 0; k < 3; k++) {
         p->centre[k] = lo[k] <= hi[k] ? 0.5f * (lo[k] + hi[k]) : 0.0f;
-        float h = lo[k] <= hi[k] ? 0.5f * (hi[k] - lo[k]) : 0.0f;
-        r2 += h * h;
+        e[k] = lo[k] <= hi[k] ? hi[k] - lo[k] : 0.0f;
+        r2 += 0.25f * e[k] * e[k];
     }
     p->radius = sqrtf(r2);
+    /* The size its reflection shows at: the geometric mean of the two largest extents, so a
+     * thin rail is not sized like a panel as long as it (its bounding sphere would be). */
+    float big = fmaxf(e[0], fmaxf(e[1], e[2])), small = fminf(e[0], fminf(e[1], e[2]));
+    float mid = e[0] + e[1] + e[2] - big - small;
+    p->detail_size = sqrtf(big * mid);
 }
 
 rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m)
@@ -182,8 +188,17 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
     if (fixed > 0)
         return fixed < max_size ? fixed : max_size;
     float d = glm_vec3_distance((float *)eye, (float *)p->centre);
-    float diameter_px = 2.0f * p->radius / fmaxf(d, 1e-3f) * pixels_per_tan * (float)supersample;
+    float diameter_px = p->detail_size / fmaxf(d, 1e-3f) * pixels_per_tan * (float)supersample;
     int n = next_pow2(0.5f * diameter_px);
+    /* A blurred reflection needs no more texels than its lobe can show: about two texels
+     * across the lobe's half-width sqrt(2 ln 2 / n(g)) (a face spans pi/2). */
+    float g = s->objects[p->owner].material.glossiness;
+    if (g < 1.0f && s->objects[p->owner].material.transparency <= 0.0f) {
+        float half_width = sqrtf(2.0f * 0.6931472f / exp2f(13.0f * fmaxf(g, 0.0f)));
+        int gloss_cap = next_pow2(2.0f * 1.5707963f / half_width);
+        if (n > gloss_cap)
+            n = gloss_cap;
+    }
     return n < 8 ? 8 : n > cap ? cap : n;
 }
 
@@ -259,10 +274,14 @@ static rd_result capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int fac
     glm_mat4_mul(proj, view, vp);
     /* The owner is left out of its own capture; reflective objects appear plain (one
      * bounce). */
-    return rd_draw_objects(
-        ctx, s,
-        &(rd_pass){
-            .view_proj = &vp[0][0], .eye = p->centre, .exclude_key = p->key, .reflections = 0});
+    /* An object under half a texel across (a face spans 90 degrees over `size` texels) is
+     * left out (section 8). */
+    return rd_draw_objects(ctx, s,
+                           &(rd_pass){.view_proj = &vp[0][0],
+                                      .eye = p->centre,
+                                      .exclude_key = p->key,
+                                      .reflections = 0,
+                                      .min_solid_radius = 0.25f / (float)p->size});
 }
 
 /* Which faces this frame's policy captures (a bit each). */
@@ -311,10 +330,18 @@ static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned 
     p->filtered_level = -1;
     if (!(m->glossiness < 1.0f))
         return RD_OK; /* a mirror: no blur work at all (section 5) */
-    glBindTexture(GL_TEXTURE_CUBE_MAP, source);
-    glGenerateMipmap(
-        GL_TEXTURE_CUBE_MAP); /* box mips: the fast method, and the prefilter's source */
-    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    float lod = rd_probe_lod(p, m->glossiness);
+    int lo = (int)floorf(lod), hi = lo + 1 < p->levels ? lo + 1 : lo;
+    if (source == p->capture) {
+        /* Box mips: the fast method's lookup and the prefilter's source. Only the levels the
+         * lookup or the filtered samples can reach are made: mipmapping a cube map is a pass
+         * per face and level, and the small levels of a mirror-like lobe are never read. */
+        int needed = hi + 2 < p->levels ? hi + 2 : p->levels - 1;
+        glBindTexture(GL_TEXTURE_CUBE_MAP, source);
+        glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, needed);
+        glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    }
     if (rd_effective_blur(s) != RD_BLUR_PREFILTERED)
         return RD_OK;
     if (!p->filtered) {
@@ -324,8 +351,6 @@ static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned 
     }
     /* Only the two levels the lookup blends between are computed (section 8: compute only what
      * the scene needs). */
-    float lod = rd_probe_lod(p, m->glossiness);
-    int lo = (int)floorf(lod), hi = lo + 1 < p->levels ? lo + 1 : lo;
     float clamp = s->reflection.hdr_clamp > 0.0f ? s->reflection.hdr_clamp : 64.0f;
     for (int level = lo; level <= hi; level++) {
         rd_result r = rd_prefilter_level(ctx, source, source_size, p->filtered, p->size, level,
@@ -338,10 +363,50 @@ static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned 
     return RD_OK;
 }
 
-rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3], float pixels_per_tan,
-                           int supersample, rd_frame_stats *stats)
+rd_result rd_scene_update_spheres(rd_context *ctx, rd_scene *s)
+{
+    float(*sp)[4] =
+        realloc(s->object_spheres, (size_t)(s->object_count ? s->object_count : 1) * sizeof *sp);
+    if (!sp)
+        return rd_fail(RD_ERR_OUT_OF_MEMORY, "out of memory");
+    s->object_spheres = sp;
+    for (int i = 0; i < s->object_count; i++) {
+        float lo[3], hi[3], r2 = 0.0f;
+        rd_object_world_bounds(ctx, &s->objects[i], lo, hi);
+        for (int k = 0; k < 3; k++) {
+            int valid = lo[k] <= hi[k];
+            sp[i][k] = valid ? 0.5f * (lo[k] + hi[k]) : 0.0f;
+            float h = valid ? 0.5f * (hi[k] - lo[k]) : 0.0f;
+            r2 += h * h;
+        }
+        sp[i][3] = sqrtf(r2);
+    }
+    return RD_OK;
+}
+
+/* Whether any object of the probe's key is inside the main view's frustum. */
+static int probe_visible(const rd_scene *s, const rd_probe *p, vec4 planes[6])
+{
+    for (int i = 0; i < s->object_count; i++) {
+        if (rd_object_key(s, i) != p->key)
+            continue;
+        const float *sp = s->object_spheres[i];
+        int inside = 1;
+        for (int k = 0; k < 6 && inside; k++)
+            inside = glm_vec3_dot(planes[k], (float *)sp) + planes[k][3] >= -sp[3];
+        if (inside)
+            return 1;
+    }
+    return 0;
+}
+
+rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
+                           const float eye[3], float pixels_per_tan, int supersample,
+                           rd_frame_stats *stats)
 {
     rd_result r = rd_probes_sync(s);
+    if (r == RD_OK)
+        r = rd_scene_update_spheres(ctx, s);
     if (r != RD_OK)
         return r;
     s->frame++;
@@ -350,6 +415,10 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3], flo
         return RD_OK;
     float bmin[3], bmax[3];
     rd_effective_proxy(s, bmin, bmax);
+    mat4 vp;
+    vec4 planes[6];
+    memcpy(vp, view_proj, sizeof vp);
+    glm_frustum_planes(vp, planes);
     for (int i = 0; i < s->probe_count; i++) {
         rd_probe *p = &s->probes[i];
         const rd_object_desc *owner = &s->objects[p->owner];
@@ -381,6 +450,10 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3], flo
         }
         int every;
         rd_probe_update u = effective_update(s, &owner->probe, &every);
+        /* An object out of view needs no fresh reflection this frame (section 8: compute only
+         * what the scene needs); its policy resumes when it comes into view. */
+        if (!probe_visible(s, p, planes))
+            continue;
         int faces = faces_to_capture(s, p, u, every);
         if (!faces)
             continue;
@@ -392,8 +465,12 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3], flo
             reach = fmaxf(reach, glm_vec3_distance(p->centre, corner));
         }
         float far_m = isfinite(reach) && reach > 0.0f ? reach * 2.0f : 100.0f;
-        if (faces == 0x3f)
+        if (faces == 0x3f) {
             p->captured_stamp = s->change_counter;
+            /* Time-sliced probes end their first round after 1 to 6 faces, by index, so that
+             * their blurs (one per round) fall on different frames. */
+            p->faces_since_blur = 5 - i % 6;
+        }
         for (int f = 0; f < 6; f++)
             if (faces & (1 << f)) {
                 r = capture_face(ctx, s, p, f, far_m);
@@ -402,11 +479,16 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3], flo
                 p->faces_valid |= 1 << f;
                 stats->faces_captured++;
             }
-        if (u == RD_PROBE_TIME_SLICED)
+        int round_done = 0;
+        if (u == RD_PROBE_TIME_SLICED && faces != 0x3f) {
             p->next_face = (p->next_face + 1) % 6;
+            round_done = ++p->faces_since_blur >= 6;
+            if (round_done)
+                p->faces_since_blur = 0;
+        }
         /* Blur when a full set of faces is fresh: every full capture, or at the end of each
          * time-sliced round. */
-        if (faces == 0x3f || (u == RD_PROBE_TIME_SLICED && p->next_face == 0)) {
+        if (faces == 0x3f || round_done) {
             p->captured_frame = s->frame;
             r = blur_probe(ctx, s, p, p->capture, p->size, stats);
             if (r != RD_OK)

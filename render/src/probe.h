@@ -16,8 +16,9 @@ void rd_probes_destroy(rd_scene *s);
 /* Captures and filters what this frame's policies ask for, before the main pass. The eye,
  * the main view's projection scale (pixels per unit of tan) and the supersampling decide the
  * "auto" resolutions. */
-rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float eye[3],
-                           float pixels_per_tan, int supersample, rd_frame_stats *stats);
+rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
+                           const float eye[3], float pixels_per_tan, int supersample,
+                           rd_frame_stats *stats);
 
 /* The effective settings of object i's material and probe after the scene's defaults. */
 rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m);
@@ -25,6 +26,9 @@ rd_blur_method rd_effective_blur(const rd_scene *s);
 void rd_effective_proxy(const rd_scene *s, float bmin[3], float bmax[3]);
 float rd_probe_lod(const rd_probe *p, float glossiness);
 unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p);
+
+/* Every object's world bounding sphere for this frame (for culling). */
+rd_result rd_scene_update_spheres(rd_context *ctx, rd_scene *s);
 
 /* World bounds of object i (its mesh bounds through its transform). */
 void rd_object_world_bounds(rd_context *ctx, const rd_object_desc *o, float lo[3], float hi[3]);

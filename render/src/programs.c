@@ -166,6 +166,7 @@ rd_result rd_prefilter_program_create(rd_context *ctx)
     ctx->pf_u_exponent = glGetUniformLocation(p, "u_exponent");
     ctx->pf_u_clamp = glGetUniformLocation(p, "u_clamp");
     ctx->pf_u_source_size = glGetUniformLocation(p, "u_source_size");
+    ctx->pf_u_samples = glGetUniformLocation(p, "u_samples");
     return RD_OK;
 }
 

@@ -75,10 +75,12 @@ struct rd_context {
     int cubemap_capacity;
 
     unsigned probe_fbo;
+    unsigned blit_fbo;
     unsigned probe_depth; /* depth buffer of probe captures, probe_depth_size square */
     int probe_depth_size;
     unsigned prefilter_program;
-    int pf_u_source, pf_u_face, pf_u_size, pf_u_exponent, pf_u_clamp, pf_u_source_size;
+    int pf_u_source, pf_u_face, pf_u_size, pf_u_exponent, pf_u_clamp, pf_u_source_size,
+        pf_u_samples;
     rd_frame_stats stats;
 
     rd_program lit[RD_LIT_VARIANTS]; /* by RD_LIT_* bits */

@@ -105,7 +105,7 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     rd_frame_stats stats = {0};
     float pixels_per_tan =
         0.5f * (float)v->height / tanf(0.5f * glm_rad(v->fov_y_deg > 0.0f ? v->fov_y_deg : 60.0f));
-    rd_result r = rd_probes_update(ctx, scene, v->eye, pixels_per_tan, samples, &stats);
+    rd_result r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &stats);
     if (r != RD_OK)
         return r;
     ctx->stats = stats;

@@ -364,6 +364,9 @@ void rd_resources_destroy_all(rd_context *ctx)
         glDeleteRenderbuffers(1, &ctx->probe_depth);
     if (ctx->probe_fbo)
         glDeleteFramebuffers(1, &ctx->probe_fbo);
+    if (ctx->blit_fbo)
+        glDeleteFramebuffers(1, &ctx->blit_fbo);
+    ctx->blit_fbo = 0;
     ctx->probe_depth = ctx->probe_fbo = 0;
     for (int i = 0; i < ctx->mesh_capacity; i++)
         if (ctx->meshes[i].live)

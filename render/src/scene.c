@@ -28,6 +28,7 @@ void rd_scene_destroy(rd_scene *s)
     free(s->objects);
     free(s->object_stamps);
     free(s->object_probe);
+    free(s->object_spheres);
     free(s);
 }
 
@@ -46,6 +47,9 @@ rd_result rd_scene_add_object(rd_scene *s, const rd_object_desc *desc)
     if (!rd_mesh_lookup(s->ctx, desc->mesh))
         return rd_fail(RD_ERR_STALE_HANDLE, "rd_scene_add_object: mesh %u is not a live mesh",
                        desc->mesh.id);
+    if (desc->probe_mesh.id && !rd_mesh_lookup(s->ctx, desc->probe_mesh))
+        return rd_fail(RD_ERR_STALE_HANDLE, "rd_scene_add_object: probe mesh %u is not live",
+                       desc->probe_mesh.id);
     if (desc->material.diffuse_texture.id &&
         !rd_texture_lookup(s->ctx, desc->material.diffuse_texture))
         return rd_fail(RD_ERR_STALE_HANDLE, "rd_scene_add_object: texture %u is not live",
@@ -127,6 +131,12 @@ void rd_scene_set_reflection_defaults(rd_scene *s, const rd_reflection_defaults 
         s->change_counter++; /* a new proxy or resolution: capture again */
         s->probes_dirty = 1;
     }
+}
+
+rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *s)
+{
+    rd_reflection_defaults none = {0};
+    return s ? s->reflection : none;
 }
 
 int rd_scene_probe_count(const rd_scene *s)

@@ -12,10 +12,12 @@ typedef struct rd_probe {
     unsigned filtered; /* prefiltered chain (RD_BLUR_PREFILTERED, g < 1), else 0 */
     int size, levels;
     float centre[3], radius;
+    float detail_size;        /* metres: what its resolution follows (see place_probe) */
     long long captured_stamp; /* the scene's change counter at the last full capture */
     int captured_frame;       /* -1: never */
     int faces_valid;          /* bit f: face f holds a capture */
-    int next_face;            /* time slicing */
+    int next_face;            /* time slicing: the face captured next */
+    int faces_since_blur;     /* time slicing: faces captured since the last blur */
     int filtered_level;       /* the lower prefiltered level that holds data; -1 none */
     int mips_valid;           /* box mips generated since the last capture */
 } rd_probe;
@@ -32,8 +34,9 @@ struct rd_scene {
     rd_reflection_defaults reflection;
     rd_probe *probes;
     int probe_count;
-    int *object_probe; /* per object: index into probes, -1 when it does not reflect */
-    int probes_dirty; /* objects were added: the probe list must be rebuilt */
+    int *object_probe;          /* per object: index into probes, -1 when it does not reflect */
+    float (*object_spheres)[4]; /* per object, this frame: world bounding sphere centre, radius */
+    int probes_dirty;           /* objects were added: the probe list must be rebuilt */
     long long change_counter;
     int frame;
 };

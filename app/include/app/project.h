@@ -90,6 +90,8 @@ typedef struct app_object {
                                and height z; plane x,y (z unused); torus outer diameter x,y,
                                tube thickness z. All zero for a model. */
     int material;           /* index into app_project.materials */
+    char group[64];         /* parts of one fixture share a group name ("" = none): one
+                               reflection probe for all of them, none of them in it */
 } app_object;
 
 typedef enum app_light_type {

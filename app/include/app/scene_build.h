@@ -17,7 +17,7 @@ typedef struct app_scene {
     rd_texture *textures;
     char (*texture_paths)[1024];
     int texture_count, texture_capacity;
-    rd_mesh unit_meshes[5]; /* shared primitives by app_shape (models excluded) */
+    rd_mesh unit_meshes[2][5]; /* shared primitives: [coarse][app_shape] (models excluded) */
 } app_scene;
 
 /* Uploads the room, the objects (primitives and glTF/GLB models), the textures and the

@@ -193,6 +193,9 @@ typedef struct rd_object_desc {
      * their joint bounds, and none of them appears in it. 0 = the object stands alone. */
     int group;
     rd_probe_desc probe;
+    /* Optional coarser mesh drawn in probe captures (RENDERING.md section 8: probes may draw
+     * lower-detail geometry); id 0 = the mesh itself. Its bounds must match the mesh's. */
+    rd_mesh probe_mesh;
 } rd_object_desc;
 
 rd_scene *rd_scene_create(rd_context *ctx);
@@ -218,6 +221,7 @@ typedef struct rd_reflection_defaults {
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
+rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
 
 /* Probes the scene holds now (one per reflective object or group); for tests and stats. */
 int rd_scene_probe_count(const rd_scene *scene);
