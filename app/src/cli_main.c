@@ -5,20 +5,24 @@
 
 static void usage(FILE *f)
 {
-    fprintf(f, "tessera: a bathroom and interior-design planner\n"
-               "\n"
-               "usage:\n"
-               "  tessera demo [--output DIR] [--size WxH] [--supersample N] [--backend B]\n"
-               "      renders the shipped demo bathroom from each of its cameras into out/\n"
-               "  tessera render PROJECT -o OUT [--camera NAME] [--size WxH] [--supersample N]\n"
-               "                [--backend egl|osmesa]\n"
-               "      renders a project file to PNG, JPEG, TIFF (8-bit sRGB) or EXR (linear)\n"
-               "  tessera bench PROJECT [--size WxH] [--frames N] [--warmup N] [--camera NAME]\n"
-               "                [--backend egl|osmesa] [--csv FILE]\n"
-               "      milliseconds per frame (median and spread) against a full-screen floor\n"
-               "\n"
-               "The OpenGL backend is EGL (Mesa surfaceless) unless --backend or TESSERA_GL says\n"
-               "otherwise; OSMesa is the fallback.\n");
+    fprintf(f,
+            "tessera: a bathroom and interior-design planner\n"
+            "\n"
+            "usage:\n"
+            "  tessera demo [--output DIR] [--size WxH] [--supersample N] [--backend B]\n"
+            "      renders the shipped demo bathroom from each of its cameras into out/\n"
+            "  tessera render PROJECT -o OUT [--camera NAME] [--size WxH] [--supersample N]\n"
+            "                [--backend egl|osmesa]\n"
+            "      renders a project file to PNG, JPEG, TIFF (8-bit sRGB) or EXR (linear)\n"
+            "  tessera bench PROJECT [--size WxH] [--frames N] [--warmup N] [--camera NAME]\n"
+            "                [--backend egl|osmesa] [--csv FILE]\n"
+            "      milliseconds per frame (median and spread) against a full-screen floor\n"
+            "      (--probes every-frame|once|on-change|time-sliced, --blur prefiltered|box-mips)\n"
+            "  tessera probe-bench [--size WxH] [--frames N] [--csv FILE]\n"
+            "      what reflection probes cost: per update by resolution, per object\n"
+            "\n"
+            "The OpenGL backend is EGL (Mesa surfaceless) unless --backend or TESSERA_GL says\n"
+            "otherwise; OSMesa is the fallback.\n");
 }
 
 int app_cli_main(int argc, char **argv)
@@ -34,6 +38,8 @@ int app_cli_main(int argc, char **argv)
         return app_cli_demo(argc, argv);
     if (!strcmp(argv[1], "bench"))
         return app_cli_bench(argc, argv);
+    if (!strcmp(argv[1], "probe-bench"))
+        return app_cli_probe_bench(argc, argv);
     if (!strcmp(argv[1], "--version")) {
         printf("tessera 0.1.0\n");
         return 0;

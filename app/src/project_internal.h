@@ -110,7 +110,7 @@ app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material 
 /* The names of the APP_BLEND_*, APP_CORRECTION_* and APP_PROBE_* values in the file. */
 extern const char *const pj_blend_names[3];
 extern const char *const pj_correction_names[4];
-extern const char *const pj_probe_update_names[5];
+extern const char *const pj_probe_update_names[6];
 app_result pj_read_room(pj_ctx *c, const cJSON *root);
 app_result pj_read_objects(pj_ctx *c, const cJSON *root);
 app_result pj_read_lights(pj_ctx *c, const cJSON *root);

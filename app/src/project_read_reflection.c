@@ -2,12 +2,13 @@
  * and glass ("transparency", "ior", "dispersion"). RENDERING.md sections 3-9. */
 #include "project_internal.h"
 
+#include <stdio.h>
 #include <string.h>
 
 const char *const pj_blend_names[3] = {"mix", "add", "fresnel"};
 const char *const pj_correction_names[4] = {"default", "none", "box", "sphere"};
-const char *const pj_probe_update_names[5] = {"default", "every-frame", "once", "on-change",
-                                              "time-sliced"};
+const char *const pj_probe_update_names[6] = {"default",   "every-frame", "once",
+                                              "on-change", "time-sliced", "static"};
 
 static const pj_range UNIT = {0.0, 1.0, 0, 0, 1};
 static const pj_range IOR = {1.0, 3.0, 0, 0, 1};
@@ -36,6 +37,52 @@ static app_result get_enum(pj_ctx *c, const cJSON *obj, const char *key, const c
     return pj_fail(c, APP_ERR_SCHEMA, "unknown value \"%.40s\" (use one of: %s)", value, list);
 }
 
+/* "map": six images of a prepared cube map, '*' standing for the face names (posx ... or
+ * front ... , render/cube_data.h). Its folder must exist; the faces are read when rendering. */
+static app_result read_static_map(pj_ctx *c, const cJSON *probe, app_material *m)
+{
+    char value[sizeof m->probe_map] = "";
+    app_result r = pj_get_string(c, probe, "map", 0, 0, value, sizeof value);
+    if (r != APP_OK)
+        return r;
+    if (!value[0]) {
+        if (m->probe_update == APP_PROBE_STATIC) {
+            pj_path_key(c, "update");
+            return pj_fail(c, APP_ERR_SCHEMA, "\"static\" needs a \"map\"");
+        }
+        return APP_OK;
+    }
+    size_t mark = pj_path_key(c, "map");
+    const char *slash = strrchr(value, '/');
+    if (!strchr(slash ? slash : value, '*'))
+        return pj_fail(c, APP_ERR_SCHEMA, "\"%s\" has no '*' for the face names", value);
+    /* The +X face must exist under one of the two naming schemes (render/cube_data.h); its
+     * folder anchors the pattern. The other faces are checked when the map is loaded. */
+    const char *star = strchr(slash ? slash : value, '*');
+    int head = (int)(star - value);
+    char face[sizeof m->probe_map], resolved[sizeof m->probe_map];
+    const char *names[2] = {"posx", "right"};
+    r = APP_ERR_NOT_FOUND;
+    for (int i = 0; i < 2 && r != APP_OK; i++) {
+        snprintf(face, sizeof face, "%.*s%s%s", head, value, names[i], star + 1);
+        r = pj_resolve_file(c, face, resolved, sizeof resolved);
+    }
+    if (r == APP_ERR_NOT_FOUND)
+        return pj_fail(c, r, "no %.*sposx%s and no %.*sright%s next to the project", head, value,
+                       star + 1, head, value, star + 1);
+    if (r != APP_OK)
+        return r;
+    const char *resolved_slash = strrchr(resolved, '/');
+    int n = snprintf(m->probe_map, sizeof m->probe_map, "%.*s%s",
+                     resolved_slash ? (int)(resolved_slash - resolved + 1) : 0, resolved,
+                     slash ? slash + 1 : value);
+    if (n < 0 || (size_t)n >= sizeof m->probe_map)
+        return pj_fail(c, APP_ERR_SCHEMA, "path too long");
+    m->probe_update = APP_PROBE_STATIC;
+    pj_path_restore(c, mark);
+    return APP_OK;
+}
+
 app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material *m)
 {
     app_result r;
@@ -51,7 +98,7 @@ app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material 
         return r;
     size_t mark = pj_path_key(c, "probe");
     if ((r = get_enum(c, probe, "correction", pj_correction_names, 4, &m->correction)) != APP_OK ||
-        (r = get_enum(c, probe, "update", pj_probe_update_names, 5, &m->probe_update)) != APP_OK ||
+        (r = get_enum(c, probe, "update", pj_probe_update_names, 6, &m->probe_update)) != APP_OK ||
         (r = pj_get_int(c, probe, "every", 0, 0, 1000000, &m->probe_every)) != APP_OK ||
         (r = pj_get_float(c, probe, "proxy_radius", 0, PJ_FLOAT_NONNEG, &m->proxy_radius_mm)) !=
             APP_OK)
@@ -77,6 +124,8 @@ app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material 
         }
         m->probe_resolution = n;
     }
+    if ((r = read_static_map(c, probe, m)) != APP_OK)
+        return r;
     pj_path_restore(c, mark);
     return APP_OK;
 }

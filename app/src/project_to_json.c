@@ -159,12 +159,12 @@ static void put_reflection(jb *b, cJSON *o, const app_material *m)
     if (m->dispersion != 0.0f)
         put_num(b, o, "dispersion", m->dispersion, 1);
     if (!m->correction && !m->probe_update && !m->probe_every && !m->probe_resolution &&
-        m->proxy_radius_mm == 0.0f)
+        m->proxy_radius_mm == 0.0f && !m->probe_map[0])
         return;
     cJSON *probe = put_container(b, o, "probe", 0);
     if (m->correction > 0 && m->correction < 4)
         put_str(b, probe, "correction", pj_correction_names[m->correction], 32);
-    if (m->probe_update > 0 && m->probe_update < 5)
+    if (m->probe_update > 0 && m->probe_update < 6)
         put_str(b, probe, "update", pj_probe_update_names[m->probe_update], 32);
     if (m->probe_every)
         put_num(b, probe, "every", m->probe_every, 0);
@@ -172,6 +172,8 @@ static void put_reflection(jb *b, cJSON *o, const app_material *m)
         put_num(b, probe, "resolution", m->probe_resolution, 0);
     if (m->proxy_radius_mm != 0.0f)
         put_num(b, probe, "proxy_radius", m->proxy_radius_mm, 1);
+    if (m->probe_map[0])
+        put_path(b, probe, "map", m->probe_map, sizeof m->probe_map);
 }
 
 static void put_materials(jb *b, cJSON *root)

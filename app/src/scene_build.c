@@ -1,5 +1,6 @@
 #include "scene_build_internal.h"
 
+#include "render/cube_data.h"
 #include "render/image_io.h"
 
 #include <math.h>
@@ -152,10 +153,53 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
     return r;
 }
 
+app_result app_scene_cubemap(rd_context *ctx, app_scene *s, const char *pattern, rd_cubemap *out,
+                             char *err, size_t err_size)
+{
+    for (int i = 0; i < s->cubemap_count; i++)
+        if (!strcmp(s->cubemap_paths[i], pattern)) {
+            *out = s->cubemaps[i];
+            return APP_OK;
+        }
+    if (s->cubemap_count == s->cubemap_capacity) {
+        int cap = s->cubemap_capacity ? s->cubemap_capacity * 2 : 4;
+        rd_cubemap *m = realloc(s->cubemaps, (size_t)cap * sizeof *m);
+        if (!m)
+            return APP_ERR_OUT_OF_MEMORY;
+        s->cubemaps = m;
+        char(*paths)[1024] = realloc(s->cubemap_paths, (size_t)cap * sizeof *paths);
+        if (!paths)
+            return APP_ERR_OUT_OF_MEMORY;
+        s->cubemap_paths = paths;
+        s->cubemap_capacity = cap;
+    }
+    rd_cube_data cube = {0};
+    if (rd_cube_data_load(pattern, &cube, err, err_size) != RD_OK)
+        return APP_ERR_IO;
+    rd_cubemap_desc desc = {.size = cube.size};
+    for (int f = 0; f < 6; f++)
+        desc.faces[f] = cube.faces[f];
+    rd_cubemap map = rd_cubemap_create(ctx, &desc);
+    rd_cube_data_free(&cube);
+    if (!map.id) {
+        snprintf(err, err_size, "%s: %s", pattern, rd_last_error());
+        return APP_ERR_IO;
+    }
+    s->cubemaps[s->cubemap_count] = map;
+    snprintf(s->cubemap_paths[s->cubemap_count], sizeof s->cubemap_paths[0], "%s", pattern);
+    s->cubemap_count++;
+    *out = map;
+    return APP_OK;
+}
+
 void app_scene_release(rd_context *ctx, app_scene *s)
 {
     if (!s)
         return;
+    for (int i = 0; i < s->cubemap_count; i++)
+        rd_cubemap_destroy(ctx, s->cubemaps[i]);
+    free(s->cubemaps);
+    free(s->cubemap_paths);
     for (int i = 0; i < s->mesh_count; i++)
         rd_mesh_destroy(ctx, s->meshes[i]);
     for (int i = 0; i < s->texture_count; i++)

@@ -46,10 +46,27 @@ static int group_of(const app_project *p, int index)
 /* The probe settings of a project material (RENDERING.md section 8). */
 static rd_probe_desc probe_of(const app_material *am)
 {
-    return (rd_probe_desc){.update = (rd_probe_update)am->probe_update,
+    return (rd_probe_desc){.update = am->probe_update == APP_PROBE_STATIC
+                                         ? RD_PROBE_STATIC
+                                         : (rd_probe_update)am->probe_update,
                            .every_n = am->probe_every,
                            .resolution = am->probe_resolution,
                            .proxy_radius_m = am->proxy_radius_mm * 1e-3f};
+}
+
+/* probe_of, with the static map loaded when the material names one. */
+static app_result probe_for(rd_context *ctx, const app_project *p, app_scene *s, int index,
+                            rd_probe_desc *out, char *err, size_t err_size)
+{
+    const app_material *am = &p->materials[p->objects[index].material];
+    *out = probe_of(am);
+    if (am->probe_update != APP_PROBE_STATIC)
+        return APP_OK;
+    char inner[768];
+    app_result r = app_scene_cubemap(ctx, s, am->probe_map, &out->static_map, inner, sizeof inner);
+    if (r != APP_OK)
+        snprintf(err, err_size, "%s: material \"%s\": probe map: %s", p->path, am->name, inner);
+    return r;
 }
 
 /* coarse = 1: the low-detail version drawn in probe captures (a quarter of the segments). */
@@ -106,6 +123,10 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
         ratio = (float)fmin(o->size_mm[2] / o->size_mm[0], 0.5);
         size_m[2] = size_m[0];
     }
+    rd_probe_desc probe;
+    app_result pr = probe_for(ctx, p, s, index, &probe, err, err_size);
+    if (pr != APP_OK)
+        return pr;
     rd_mesh mesh, coarse = {0};
     int curved = o->shape == APP_SHAPE_SPHERE || o->shape == APP_SHAPE_CYLINDER ||
                  o->shape == APP_SHAPE_TORUS;
@@ -119,7 +140,7 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
     rd_object_desc d = {.mesh = mesh,
                         .material = *m,
                         .double_sided = o->shape == APP_SHAPE_PLANE,
-                        .probe = probe_of(&p->materials[o->material]),
+                        .probe = probe,
                         .probe_mesh = coarse,
                         .group = group_of(p, index)};
     /* Unit-mesh UVs span the whole object: repeat the texture at its real-world size. A plane
@@ -154,6 +175,12 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
         snprintf(err, err_size, "%s: $.objects[%d].model: %s", p->path, index, cerr);
         return APP_ERR_IO;
     }
+    rd_probe_desc probe;
+    app_result pr = probe_for(ctx, p, s, index, &probe, err, err_size);
+    if (pr != APP_OK) {
+        cat_model_free(&model);
+        return pr;
+    }
     const double mm_to_m[3] = {1e-3, 1e-3, 1e-3};
     float transform[16];
     app_object_transform(o, mm_to_m, transform);
@@ -177,7 +204,7 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
                             .material = *m,
                             .double_sided = 1,
                             .group = group_of(p, index), /* one probe for the model */
-                            .probe = probe_of(&p->materials[o->material])};
+                            .probe = probe};
         memcpy(d.transform, transform, sizeof transform);
         if (rd_scene_add_object(s->scene, &d) != RD_OK) {
             snprintf(err, err_size, "%s: $.objects[%d]: %s", p->path, index, rd_last_error());

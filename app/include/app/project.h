@@ -54,6 +54,7 @@ typedef struct app_material {
     int probe_every;       /* APP_PROBE_EVERY_FRAME: every n-th frame; 0/1 = every frame */
     int probe_resolution;  /* texels per face side; 0 = auto */
     float proxy_radius_mm; /* sphere proxy radius; 0 = 4 x the object's bounding radius */
+    char probe_map[1024];  /* APP_PROBE_STATIC: six images, * for the face name */
     /* Glass (RENDERING.md section 9). */
     float transparency; /* 0 opaque .. 1 clear */
     float ior;          /* index of refraction, default 1.5 */
@@ -67,7 +68,8 @@ enum {
     APP_PROBE_EVERY_FRAME,
     APP_PROBE_ONCE,
     APP_PROBE_ON_CHANGE,
-    APP_PROBE_TIME_SLICED
+    APP_PROBE_TIME_SLICED,
+    APP_PROBE_STATIC
 };
 
 typedef enum app_shape {

@@ -17,6 +17,9 @@ typedef struct app_scene {
     rd_texture *textures;
     char (*texture_paths)[1024];
     int texture_count, texture_capacity;
+    rd_cubemap *cubemaps; /* static probe maps, loaded once per file pattern */
+    char (*cubemap_paths)[1024];
+    int cubemap_count, cubemap_capacity;
     rd_mesh unit_meshes[2][5]; /* shared primitives: [coarse][app_shape] (models excluded) */
 } app_scene;
 
