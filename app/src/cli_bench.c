@@ -32,8 +32,8 @@ static int write_csv(const char *path, const double *frame, const double *floor_
 int app_cli_bench(int argc, char **argv)
 {
     cli_options o = {.frames = 30, .warmup = 5};
-    int rc =
-        cli_parse(argc, argv, 2, "bench", "camera size frames warmup backend csv probes blur", &o);
+    int rc = cli_parse(argc, argv, 2, "bench",
+                       "camera size frames warmup backend csv probes blur ambient", &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project) {

@@ -46,6 +46,7 @@ static int parse_int(const char *text, int lo, int hi, int *out)
 /* Names by enum value; index 0 (the default) is not accepted on the command line. */
 static const char *const probe_names[5] = {"", "every-frame", "once", "on-change", "time-sliced"};
 static const char *const blur_names[3] = {"", "prefiltered", "box-mips"};
+static const char *const ambient_names[3] = {"", "constant", "sh9"};
 
 static int parse_name(const char *text, const char *const *names, int count, int *out)
 {
@@ -110,6 +111,8 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             ok = parse_int(v, 0, 100000, &o->warmup);
         else if (!strcmp(name, "probes"))
             ok = parse_name(v, probe_names, 5, (int *)&o->probes);
+        else if (!strcmp(name, "ambient"))
+            ok = parse_name(v, ambient_names, 3, &o->ambient);
         else if (!strcmp(name, "blur"))
             ok = parse_name(v, blur_names, 3, (int *)&o->blur);
         else if (!strcmp(name, "backend"))
@@ -121,8 +124,9 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
                     : !strcmp(name, "supersample") ? " (expected 1 to 4)"
                     : !strcmp(name, "probes")
                         ? " (expected every-frame, once, on-change or time-sliced)"
-                    : !strcmp(name, "blur") ? " (expected prefiltered or box-mips)"
-                                            : "");
+                    : !strcmp(name, "blur")    ? " (expected prefiltered or box-mips)"
+                    : !strcmp(name, "ambient") ? " (expected constant or sh9)"
+                                               : "");
             return CLI_USAGE;
         }
     }

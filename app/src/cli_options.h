@@ -19,6 +19,7 @@ typedef struct cli_options {
     rd_backend backend;
     rd_probe_update probes; /* --probes: the scene's default update policy; 0 = the project's */
     rd_blur_method blur;    /* --blur */
+    int ambient;            /* --ambient: 0 the project's, 1 constant, 2 sh9 */
 } cli_options;
 
 /* Parses argv[first..]; prints the problem and returns CLI_USAGE on a bad option. `allowed`

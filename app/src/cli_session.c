@@ -57,8 +57,10 @@ int cli_session_open(const cli_options *o, cli_session *s)
         cli_session_close(s);
         return r == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
     }
-    if (o->probes || o->blur) {
+    if (o->probes || o->blur || o->ambient) {
         rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
+        if (o->ambient)
+            d.ambient = o->ambient == 2 ? RD_AMBIENT_SH9 : RD_AMBIENT_CONSTANT;
         if (o->probes)
             d.update = o->probes;
         if (o->blur)

@@ -2,6 +2,7 @@
 #include "project_internal.h"
 
 #include <math.h>
+#include <string.h>
 
 static const pj_range EXPOSURE = {-64.0, 64.0, 0, 0, 1};
 
@@ -19,6 +20,16 @@ app_result pj_read_render(pj_ctx *c, const cJSON *root)
         (r = pj_get_float(c, render, "white", 0, PJ_POSITIVE, &out->white)) != APP_OK ||
         (r = pj_get_int(c, render, "supersample", 0, 1, 4, &out->supersample)) != APP_OK)
         return r;
+    char model[16] = "";
+    if ((r = pj_get_string(c, render, "ambient_model", 0, 0, model, sizeof model)) != APP_OK)
+        return r;
+    if (model[0]) {
+        if (strcmp(model, "constant") && strcmp(model, "sh9")) {
+            pj_path_key(c, "ambient_model");
+            return pj_fail(c, APP_ERR_SCHEMA, "unknown value \"%s\" (use constant or sh9)", model);
+        }
+        out->ambient_model = !strcmp(model, "sh9");
+    }
 
     const cJSON *size;
     if ((r = pj_member(c, render, "size", cJSON_Array, 0, &size)) != APP_OK)

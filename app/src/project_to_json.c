@@ -300,6 +300,8 @@ static void put_render(jb *b, cJSON *root)
     }
     if (b->r == APP_OK)
         attach(b, o, "supersample", cJSON_CreateNumber(r->supersample));
+    if (b->r == APP_OK && r->ambient_model == 1)
+        put_str(b, o, "ambient_model", "sh9", 16);
     if (b->r == APP_OK)
         pj_path_restore(b->c, mark);
 }

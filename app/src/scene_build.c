@@ -133,9 +133,10 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
     rd_scene_set_ambient(out->scene, p->render.ambient);
     /* The box proxy of the corrected reflection vector is the room's interior: in a bathroom
      * the walls are what a fixture reflects (RENDERING.md section 4). */
-    rd_reflection_defaults refl = {.proxy_max = {(float)(p->room.width_mm * 1e-3),
-                                                 (float)(p->room.depth_mm * 1e-3),
-                                                 (float)(p->room.height_mm * 1e-3)}};
+    rd_reflection_defaults refl = {
+        .ambient = p->render.ambient_model == 1 ? RD_AMBIENT_SH9 : RD_AMBIENT_CONSTANT,
+        .proxy_max = {(float)(p->room.width_mm * 1e-3), (float)(p->room.depth_mm * 1e-3),
+                      (float)(p->room.height_mm * 1e-3)}};
     rd_scene_set_reflection_defaults(out->scene, &refl);
     app_result r = app_scene_add_room(ctx, p, out, err, err_size);
     if (r == APP_OK)

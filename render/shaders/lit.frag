@@ -7,6 +7,8 @@ in vec2 v_uv;
 
 uniform vec3 u_eye;
 uniform vec3 u_ambient_light; // I_a
+uniform int u_ambient_model;  // 0 constant I_a, 1 SH9 irradiance (section 7)
+uniform vec3 u_sh[9];         // L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (world, Z up)
 
 uniform int u_light_count;
 uniform int u_light_type[MAX_LIGHTS]; // 0 point, 1 spot, 2 directional
@@ -27,6 +29,9 @@ uniform sampler2D u_diffuse_texture;
 uniform vec2 u_uv_scale;
 #endif
 
+#ifdef PER_VERTEX_REFLECTION
+in vec3 v_reflect;
+#endif
 #ifdef HAS_REFLECTION
 uniform samplerCube u_probe;
 uniform vec3 u_probe_centre;
@@ -41,6 +46,16 @@ uniform int u_thin; // a double-sided sheet: light passes straight through
 #endif
 
 out vec4 frag_color;
+
+// Irradiance from nine SH coefficients, Ramamoorthi and Hanrahan 2001 eq. 13, with their
+// c5 = 0.247708 (seed 001 misprints it as 0.429043). CPU twin: rd_ref_sh9_irradiance.
+vec3 sh9_irradiance(vec3 n)
+{
+    const float c1 = 0.429043, c2 = 0.511664, c3 = 0.743125, c4 = 0.886227, c5 = 0.247708;
+    return c1 * u_sh[8] * (n.x * n.x - n.y * n.y) + c3 * u_sh[6] * n.z * n.z + c4 * u_sh[0] -
+           c5 * u_sh[6] + 2.0 * c1 * (u_sh[4] * n.x * n.y + u_sh[7] * n.x * n.z + u_sh[5] * n.y * n.z) +
+           2.0 * c2 * (u_sh[3] * n.x + u_sh[1] * n.y + u_sh[2] * n.z);
+}
 
 // max(N.H, 0)^n with pow(0, 0) and n = 0 defined as 1 and n up to 1e6 finite (section 1).
 float blinn_phong_power(float n_dot_h, float n)
@@ -79,7 +94,9 @@ void main()
     vec3 c_a = u_mat_ambient * albedo_scale;
     vec3 c_d = u_mat_diffuse * albedo_scale;
 
-    vec3 lit = c_a * u_ambient_light; // eq. 1
+    // eq. 1; with SH9 the ambient intensity is the irradiance over pi (a Lambertian surface)
+    vec3 lit = c_a * (u_ambient_model == 1 ? max(sh9_irradiance(N), vec3(0.0)) / 3.14159265
+                                           : u_ambient_light);
     for (int i = 0; i < u_light_count; i++) {
         vec3 L;
         float k = 1.0;
@@ -103,10 +120,14 @@ void main()
     }
 #ifdef HAS_REFLECTION
     // Sections 2-6: R = I - 2 (N.I) N with I = -V; the lookup starts at the capture centre.
+#ifdef PER_VERTEX_REFLECTION
+    vec3 d = v_reflect;
+#else
     vec3 r = reflect(-V, N);
     vec3 d = u_correction == 2   ? correct_box(v_world, r, u_proxy_min, u_proxy_max, u_probe_centre)
              : u_correction == 3 ? correct_sphere(v_world, r, u_probe_centre, u_proxy_radius)
                                  : r;
+#endif
     vec3 refl = textureLod(u_probe, world_to_cmcs(d), u_lod).rgb;
     if (u_transparency > 0.0) {
         // Seed 003: refraction with an IOR, total internal reflection, optional dispersion

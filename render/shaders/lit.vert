@@ -11,6 +11,16 @@ out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;
 
+#ifdef PER_VERTEX_REFLECTION
+// Seed 003's per-vertex reflection: the corrected direction at the vertices, interpolated.
+uniform vec3 u_eye;
+uniform vec3 u_probe_centre;
+uniform int u_correction;
+uniform vec3 u_proxy_min, u_proxy_max;
+uniform float u_proxy_radius;
+out vec3 v_reflect;
+#endif
+
 void main()
 {
     vec4 world = u_model * vec4(a_position, 1.0);
@@ -18,4 +28,11 @@ void main()
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
     gl_Position = u_view_proj * world;
+#ifdef PER_VERTEX_REFLECTION
+    vec3 n = normalize(v_normal);
+    vec3 r = reflect(normalize(world.xyz - u_eye), n);
+    v_reflect = u_correction == 2   ? correct_box(world.xyz, r, u_proxy_min, u_proxy_max, u_probe_centre)
+                : u_correction == 3 ? correct_sphere(world.xyz, r, u_probe_centre, u_proxy_radius)
+                                    : r;
+#endif
 }

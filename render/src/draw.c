@@ -39,6 +39,9 @@ void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float v
         glUniform2fv(p->u_light_spot, n, &spot[0][0]);
     }
     glUniform1i(p->u_diffuse_texture, 0);
+    glUniform1i(p->u_ambient_model, (int)s->reflection.ambient);
+    if (s->reflection.ambient == RD_AMBIENT_SH9)
+        glUniform3fv(p->u_sh, 9, &s->sh9[0][0]);
 }
 
 void rd_set_object_uniforms(const rd_program *p, const float model[16], const rd_material *m)
@@ -182,8 +185,13 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
             if (!rd_probe_texture(scene, probe))
                 probe = NULL; /* nothing captured yet: drawn plain this frame */
         }
-        int variant = (t ? RD_LIT_TEXTURED : 0) | (probe ? RD_LIT_REFLECTING : 0);
-        const rd_program *p = &ctx->lit[variant];
+        int variant = (t ? RD_LIT_TEXTURED : 0) | (probe ? RD_LIT_REFLECTING : 0) |
+                      (probe && o->material.per_vertex_reflection ? RD_LIT_PER_VERTEX : 0);
+        const rd_program *p = rd_lit_program(ctx, variant);
+        if (!p) {
+            free(items);
+            return RD_ERR_SHADER;
+        }
         if (!frame_uniforms_set[variant]) {
             rd_set_frame_uniforms(p, scene, pass->view_proj, pass->eye);
             frame_uniforms_set[variant] = 1;

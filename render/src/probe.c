@@ -202,7 +202,7 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
     return n < 8 ? 8 : n > cap ? cap : n;
 }
 
-static int level_count(int size)
+int rd_level_count(int size)
 {
     int n = 1;
     while ((size >> n) > 0)
@@ -210,7 +210,7 @@ static int level_count(int size)
     return n;
 }
 
-static rd_result alloc_cube(unsigned *name, int size, int levels)
+rd_result rd_alloc_cube(unsigned *name, int size, int levels)
 {
     glGenTextures(1, name);
     glBindTexture(GL_TEXTURE_CUBE_MAP, *name);
@@ -248,7 +248,7 @@ static void cmcs_to_world(const float c[3], float w[3])
     w[2] = -c[1];
 }
 
-static rd_result capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int face, float far_m)
+rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int face, float far_m)
 {
     glBindFramebuffer(GL_FRAMEBUFFER, ctx->probe_fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
@@ -345,7 +345,7 @@ static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned 
     if (rd_effective_blur(s) != RD_BLUR_PREFILTERED)
         return RD_OK;
     if (!p->filtered) {
-        rd_result r = alloc_cube(&p->filtered, p->size, p->levels);
+        rd_result r = rd_alloc_cube(&p->filtered, p->size, p->levels);
         if (r != RD_OK)
             return r;
     }
@@ -429,7 +429,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                 return rd_fail(RD_ERR_STALE_HANDLE, "a static probe's cube map is not live");
             if (p->captured_frame < 0) {
                 p->size = t->size;
-                p->levels = level_count(t->size);
+                p->levels = rd_level_count(t->size);
                 r = blur_probe(ctx, s, p, t->name, t->size, stats);
                 if (r != RD_OK)
                     return r;
@@ -441,10 +441,10 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         if (size != p->size) {
             free_probe_textures(p);
             p->size = size;
-            p->levels = level_count(size);
+            p->levels = rd_level_count(size);
             p->faces_valid = 0;
             p->next_face = 0;
-            r = alloc_cube(&p->capture, size, p->levels);
+            r = rd_alloc_cube(&p->capture, size, p->levels);
             if (r != RD_OK)
                 return r;
         }
@@ -473,7 +473,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         }
         for (int f = 0; f < 6; f++)
             if (faces & (1 << f)) {
-                r = capture_face(ctx, s, p, f, far_m);
+                r = rd_probe_capture_face(ctx, s, p, f, far_m);
                 if (r != RD_OK)
                     return r;
                 p->faces_valid |= 1 << f;

@@ -30,6 +30,14 @@ unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p);
 /* Every object's world bounding sphere for this frame (for culling). */
 rd_result rd_scene_update_spheres(rd_context *ctx, rd_scene *s);
 
+int rd_level_count(int size);
+rd_result rd_alloc_cube(unsigned *name, int size, int levels);
+/* Renders face `face` of p's capture from p->centre, leaving out p->key's objects. */
+rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int face, float far_m);
+/* The scene's ambient probe and its SH9 coefficients (ambient_sh.c), when the ambient model
+ * asks for them. */
+rd_result rd_ambient_update(rd_context *ctx, rd_scene *s, rd_frame_stats *stats);
+
 /* World bounds of object i (its mesh bounds through its transform). */
 void rd_object_world_bounds(rd_context *ctx, const rd_object_desc *o, float lo[3], float hi[3]);
 

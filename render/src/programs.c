@@ -103,6 +103,8 @@ static void locate_lit(rd_program *p)
     p->u_mat_shininess = glGetUniformLocation(id, "u_mat_shininess");
     p->u_diffuse_texture = glGetUniformLocation(id, "u_diffuse_texture");
     p->u_uv_scale = glGetUniformLocation(id, "u_uv_scale");
+    p->u_ambient_model = glGetUniformLocation(id, "u_ambient_model");
+    p->u_sh = glGetUniformLocation(id, "u_sh");
     p->u_probe = glGetUniformLocation(id, "u_probe");
     p->u_probe_centre = glGetUniformLocation(id, "u_probe_centre");
     p->u_correction = glGetUniformLocation(id, "u_correction");
@@ -118,21 +120,33 @@ static void locate_lit(rd_program *p)
     p->u_thin = glGetUniformLocation(id, "u_thin");
 }
 
+const rd_program *rd_lit_program(rd_context *ctx, int variant)
+{
+    rd_program *p = &ctx->lit[variant];
+    if (p->id)
+        return p;
+    int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
+    int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
+    char defines[192];
+    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s", RD_MAX_LIGHTS,
+             textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
+             reflecting ? "#define HAS_REFLECTION 1\n" : "",
+             per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "");
+    p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
+                 reflecting ? "reflect.glsl lit.frag" : "lit.frag", defines);
+    if (!p->id)
+        return NULL;
+    locate_lit(p);
+    return p;
+}
+
 rd_result rd_programs_create(rd_context *ctx)
 {
-    char defines[160];
-    for (int variant = 0; variant < RD_LIT_VARIANTS; variant++) {
-        int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
-        snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s", RD_MAX_LIGHTS,
-                 textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
-                 reflecting ? "#define HAS_REFLECTION 1\n" : "");
-        ctx->lit[variant].id =
-            link("lit.vert", reflecting ? "reflect.glsl lit.frag" : "lit.frag", defines);
-        if (!ctx->lit[variant].id)
-            return RD_ERR_SHADER;
-        locate_lit(&ctx->lit[variant]);
-    }
-    /* The common variant is made now, so a broken tone map shader fails context creation. */
+    /* The plain variants are made now, so a broken shader fails context creation; the
+     * reflecting ones when a scene first needs them. */
+    if (!rd_lit_program(ctx, 0) || !rd_lit_program(ctx, RD_LIT_TEXTURED) ||
+        !rd_lit_program(ctx, RD_LIT_REFLECTING))
+        return RD_ERR_SHADER;
     return rd_tonemap_program(ctx, 1, 0) ? RD_OK : RD_ERR_SHADER;
 }
 

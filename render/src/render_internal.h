@@ -53,12 +53,13 @@ typedef struct rd_program {
         u_light_attenuation, u_light_spot;
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
     int u_diffuse_texture, u_uv_scale;
+    int u_ambient_model, u_sh;
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
         u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */
-enum { RD_LIT_TEXTURED = 1, RD_LIT_REFLECTING = 2, RD_LIT_VARIANTS = 4 };
+enum { RD_LIT_TEXTURED = 1, RD_LIT_REFLECTING = 2, RD_LIT_PER_VERTEX = 4, RD_LIT_VARIANTS = 8 };
 
 struct rd_context {
     rd_backend backend;
@@ -109,6 +110,8 @@ rd_result rd_probe_depth_ensure(rd_context *ctx, int size);
 void rd_resources_destroy_all(rd_context *ctx);
 
 rd_result rd_programs_create(rd_context *ctx);
+/* The lit program of a variant (RD_LIT_* bits), compiled on first use; NULL on failure. */
+const rd_program *rd_lit_program(rd_context *ctx, int variant);
 /* The tone map program for s samples per side, display or linear output; NULL on failure. */
 const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear);
 void rd_programs_destroy(rd_context *ctx);

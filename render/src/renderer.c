@@ -106,6 +106,8 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     float pixels_per_tan =
         0.5f * (float)v->height / tanf(0.5f * glm_rad(v->fov_y_deg > 0.0f ? v->fov_y_deg : 60.0f));
     rd_result r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &stats);
+    if (r == RD_OK)
+        r = rd_ambient_update(ctx, scene, &stats);
     if (r != RD_OK)
         return r;
     ctx->stats = stats;
@@ -155,7 +157,7 @@ rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *v)
     }
     const rd_mesh_slot *m = rd_mesh_lookup(ctx, ctx->floor_quad);
     begin_hdr_pass(ctx);
-    const rd_program *p = &ctx->lit[0];
+    const rd_program *p = rd_lit_program(ctx, 0);
     rd_set_frame_uniforms(p, scene, vp, v->eye);
     rd_material grey = {.ambient = {0.5f, 0.5f, 0.5f},
                         .diffuse = {0.5f, 0.5f, 0.5f},

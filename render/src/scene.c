@@ -1,3 +1,4 @@
+#include "gl_funcs.h"
 #include "probe.h"
 #include "render_internal.h"
 #include "scene_internal.h"
@@ -25,6 +26,8 @@ void rd_scene_destroy(rd_scene *s)
     if (!s)
         return;
     rd_probes_destroy(s);
+    if (s->ambient_probe.capture)
+        glDeleteTextures(1, &s->ambient_probe.capture);
     free(s->objects);
     free(s->object_stamps);
     free(s->object_probe);

@@ -39,6 +39,8 @@ struct rd_scene {
     int probes_dirty;           /* objects were added: the probe list must be rebuilt */
     long long change_counter;
     int frame;
+    rd_probe ambient_probe; /* RD_AMBIENT_SH9: captured at the proxy's centre */
+    float sh9[9][3];        /* its irradiance coefficients, world coordinates */
 };
 
 #endif

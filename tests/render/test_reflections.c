@@ -625,6 +625,116 @@ static void test_extremes(rd_context *ctx)
     rd_mesh_destroy(ctx, plane);
 }
 
+/* ---- SH9 ambient: a room glowing one colour lights a white surface with that colour ------ */
+
+static void test_sh9_ambient(rd_context *ctx)
+{
+    rd_mesh plane = upload(ctx, rd_mesh_data_plane);
+    rd_mesh sphere = upload(ctx, make_sphere);
+    rd_scene *s = rd_scene_create(ctx);
+    const float glow[3] = {0.5f, 0.3f, 0.2f}, room = 3.0f;
+    for (int w = 0; w < 6; w++) {
+        float n[3] = {0, 0, 0}, c[3] = {room / 2, room / 2, room / 2};
+        n[w / 2] = (w & 1) ? -1.0f : 1.0f;
+        c[w / 2] = (w & 1) ? room : 0.0f;
+        rd_object_desc o = {.mesh = plane, .background = 1};
+        memcpy(o.material.emissive, glow, sizeof glow);
+        plane_transform(n, c, room, o.transform);
+        CHECK(rd_scene_add_object(s, &o) == RD_OK);
+    }
+    /* A white ball lit by nothing but the ambient term: C_a E(N) / pi = C_a L for a uniform
+     * environment of radiance L, whatever the normal. */
+    rd_object_desc ball = {.mesh = sphere, .material = {.ambient = {1, 1, 1}}};
+    ball.transform[0] = ball.transform[5] = ball.transform[10] = 0.8f;
+    ball.transform[15] = 1;
+    ball.transform[12] = ball.transform[13] = ball.transform[14] = room / 2;
+    CHECK(rd_scene_add_object(s, &ball) == RD_OK);
+    rd_reflection_defaults d = {.ambient = RD_AMBIENT_SH9, .proxy_max = {room, room, room}};
+    rd_scene_set_reflection_defaults(s, &d);
+    enum { W = 32, H = 32 };
+    static float lin[W * H * 4];
+    rd_view v = {.eye = {room / 2, 0.2f, room / 2},
+                 .target = {room / 2, room / 2, room / 2},
+                 .fov_y_deg = 30,
+                 .width = W,
+                 .height = H};
+    CHECK(rd_render(ctx, s, &v) == RD_OK);
+    CHECK(rd_read_linear(ctx, lin, W * H * 4) == RD_OK);
+    CHECK(rd_last_frame_stats(ctx).faces_captured == 6); /* the ambient probe */
+    float worst = 0.0f;
+    for (int y = W / 2 - 3; y <= W / 2 + 3; y++) /* the ball's middle */
+        for (int x = W / 2 - 3; x <= W / 2 + 3; x++)
+            for (int k = 0; k < 3; k++)
+                worst = fmaxf(worst, fabsf(lin[(y * W + x) * 4 + k] - glow[k]) / glow[k]);
+    CHECK_MSG(worst < 0.03f, "SH9 ambient off by %.1f %% from the environment's radiance",
+              100.0 * worst);
+    /* The constant model ignores the room: I_a = 0 leaves the ball black. */
+    d.ambient = RD_AMBIENT_CONSTANT;
+    rd_scene_set_reflection_defaults(s, &d);
+    CHECK(rd_render(ctx, s, &v) == RD_OK);
+    CHECK(rd_read_linear(ctx, lin, W * H * 4) == RD_OK);
+    CHECK(lin[(H / 2 * W + W / 2) * 4] == 0.0f);
+    rd_scene_destroy(s);
+    rd_mesh_destroy(ctx, plane);
+    rd_mesh_destroy(ctx, sphere);
+}
+
+/* ---- per-vertex against per-pixel reflection (seed 003) ------------------------------------ */
+
+static double vertex_pixel_difference(rd_context *ctx, rd_cubemap map, int segments)
+{
+    rd_mesh_data d;
+    rd_mesh_data_sphere(segments, segments / 2, &d);
+    rd_mesh_desc desc = rd_mesh_data_desc(&d);
+    rd_mesh sphere = rd_mesh_create(ctx, &desc);
+    rd_mesh_data_free(&d);
+    enum { W = 48, H = 48 };
+    static float lin[2][W * H * 4];
+    for (int pv = 0; pv < 2; pv++) {
+        rd_scene *s = rd_scene_create(ctx);
+        rd_object_desc o = {.mesh = sphere,
+                            .material = {.reflectivity = 1,
+                                         .glossiness = 1,
+                                         .correction = RD_CORRECTION_NONE,
+                                         .per_vertex_reflection = pv},
+                            .probe = {.update = RD_PROBE_STATIC, .static_map = map}};
+        o.transform[0] = o.transform[5] = o.transform[10] = o.transform[15] = 1;
+        CHECK(rd_scene_add_object(s, &o) == RD_OK);
+        rd_view v = {.eye = {0.3f, -2.5f, 0.4f},
+                     .target = {0, 0, 0},
+                     .fov_y_deg = 30,
+                     .width = W,
+                     .height = H};
+        CHECK(rd_render(ctx, s, &v) == RD_OK);
+        CHECK(rd_read_linear(ctx, lin[pv], W * H * 4) == RD_OK);
+        rd_scene_destroy(s);
+    }
+    double sum = 0;
+    for (int i = 0; i < W * H * 4; i++) {
+        CHECK(isfinite(lin[1][i]));
+        sum += fabs(lin[0][i] - lin[1][i]);
+    }
+    rd_mesh_destroy(ctx, sphere);
+    return sum / (W * H * 3);
+}
+
+static void test_per_vertex_reflection(rd_context *ctx)
+{
+    rd_cube_data cube;
+    CHECK(rd_cube_data_alloc(32, &cube) == RD_OK);
+    fill_face_pattern(&cube);
+    rd_cubemap map = upload_cube(ctx, &cube);
+    double coarse = vertex_pixel_difference(ctx, map, 8);
+    double fine = vertex_pixel_difference(ctx, map, 128);
+    printf("per-vertex vs per-pixel reflection, mean |difference|: %.4f on 8 segments, %.4f on "
+           "128\n",
+           coarse, fine);
+    CHECK_MSG(coarse > 0.01, "per-vertex must differ visibly on a coarse mesh: %g", coarse);
+    CHECK_MSG(fine < 0.5 * coarse, "and converge on a fine one: %g vs %g", fine, coarse);
+    rd_cubemap_destroy(ctx, map);
+    rd_cube_data_free(&cube);
+}
+
 int main(void)
 {
     rd_context *ctx = NULL;
@@ -638,6 +748,8 @@ int main(void)
     test_corrected_vector(ctx);
     test_blur(ctx);
     test_extremes(ctx);
+    test_sh9_ambient(ctx);
+    test_per_vertex_reflection(ctx);
     rd_context_destroy(ctx);
     return check_report("reflections");
 }

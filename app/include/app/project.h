@@ -135,6 +135,7 @@ typedef struct app_render_settings {
     float white;       /* photographic tone map L_white, default 4 */
     int width, height; /* default 1280 x 720 */
     int supersample;   /* 1..4, default 1 */
+    int ambient_model; /* 0 "constant" (I_a), 1 "sh9" (irradiance from a probe, section 7) */
 } app_render_settings;
 
 typedef struct app_project {

@@ -138,6 +138,9 @@ typedef struct rd_material {
     float transparency; /* 0 opaque .. 1 clear */
     float ior;          /* 0 = 1.5 */
     float dispersion;   /* IOR spread from red to blue; 0 = none */
+    /* Seed 003: the reflection vector computed per vertex and interpolated (faster, worse on
+     * coarse meshes) instead of per pixel. */
+    int per_vertex_reflection;
 } rd_material;
 
 typedef enum rd_light_type {
@@ -209,6 +212,14 @@ int rd_scene_object_count(const rd_scene *scene);
  * RD_PROBE_ON_CHANGE. */
 rd_result rd_scene_set_transform(rd_scene *scene, int index, const float transform[16]);
 
+/* The ambient term (RENDERING.md section 7): the constant I_a, or the irradiance of nine
+ * spherical-harmonic coefficients projected from a probe at the centre of the box proxy (the
+ * room), E(n) = n^T M n (Ramamoorthi and Hanrahan 2001), giving C_a E(N) / pi. */
+typedef enum rd_ambient_model {
+    RD_AMBIENT_CONSTANT = 0,
+    RD_AMBIENT_SH9,
+} rd_ambient_model;
+
 /* Scene-wide reflection settings, used where a material or probe says DEFAULT. */
 typedef struct rd_reflection_defaults {
     rd_correction correction; /* DEFAULT = box */
@@ -218,6 +229,7 @@ typedef struct rd_reflection_defaults {
     int resolution;                   /* 0 = auto */
     int max_resolution;               /* cap for auto; 0 = 256 (stills raise it: print quality) */
     float hdr_clamp;                  /* radiance clamp before blurring; 0 = 64 */
+    rd_ambient_model ambient;         /* RENDERING.md section 7 */
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
