@@ -126,6 +126,14 @@ app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material 
     }
     if ((r = read_static_map(c, probe, m)) != APP_OK)
         return r;
+    static const char *const mappings[2] = {"cube", "sphere"};
+    if ((r = get_enum(c, probe, "mapping", mappings, 2, &m->probe_sphere_map)) != APP_OK)
+        return r;
+    const cJSON *pv;
+    if ((r = pj_member(c, probe, "per_vertex", cJSON_True | cJSON_False, 0, &pv)) != APP_OK)
+        return r;
+    if (pv)
+        m->probe_per_vertex = cJSON_IsTrue(pv);
     pj_path_restore(c, mark);
     return APP_OK;
 }

@@ -159,7 +159,8 @@ static void put_reflection(jb *b, cJSON *o, const app_material *m)
     if (m->dispersion != 0.0f)
         put_num(b, o, "dispersion", m->dispersion, 1);
     if (!m->correction && !m->probe_update && !m->probe_every && !m->probe_resolution &&
-        m->proxy_radius_mm == 0.0f && !m->probe_map[0])
+        m->proxy_radius_mm == 0.0f && !m->probe_map[0] && !m->probe_sphere_map &&
+        !m->probe_per_vertex)
         return;
     cJSON *probe = put_container(b, o, "probe", 0);
     if (m->correction > 0 && m->correction < 4)
@@ -174,6 +175,10 @@ static void put_reflection(jb *b, cJSON *o, const app_material *m)
         put_num(b, probe, "proxy_radius", m->proxy_radius_mm, 1);
     if (m->probe_map[0])
         put_path(b, probe, "map", m->probe_map, sizeof m->probe_map);
+    if (m->probe_sphere_map)
+        put_str(b, probe, "mapping", "sphere", 16);
+    if (m->probe_per_vertex && b->r == APP_OK)
+        attach(b, probe, "per_vertex", cJSON_CreateTrue());
 }
 
 static void put_materials(jb *b, cJSON *root)

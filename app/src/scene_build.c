@@ -85,7 +85,9 @@ app_result app_scene_material(rd_context *ctx, const app_project *p, app_scene *
                      .correction = (rd_correction)am->correction,
                      .transparency = am->transparency,
                      .ior = am->ior,
-                     .dispersion = am->dispersion};
+                     .dispersion = am->dispersion,
+                     .per_vertex_reflection = am->probe_per_vertex,
+                     .sphere_map = am->probe_sphere_map};
     memcpy(m.ambient, am->ambient, sizeof m.ambient);
     memcpy(m.diffuse, am->diffuse, sizeof m.diffuse);
     memcpy(m.specular, am->specular, sizeof m.specular);

@@ -32,6 +32,10 @@ uniform vec2 u_uv_scale;
 #ifdef PER_VERTEX_REFLECTION
 in vec3 v_reflect;
 #endif
+#ifdef SPHERE_MAP
+uniform sampler2D u_sphere_map;
+uniform mat3 u_view_rot; // world to view: the viewer looks down -Z
+#endif
 #ifdef HAS_REFLECTION
 uniform samplerCube u_probe;
 uniform vec3 u_probe_centre;
@@ -128,7 +132,11 @@ void main()
              : u_correction == 3 ? correct_sphere(v_world, r, u_probe_centre, u_proxy_radius)
                                  : r;
 #endif
+#ifdef SPHERE_MAP
+    vec3 refl = textureLod(u_sphere_map, sphere_map_st(u_view_rot * d), u_lod).rgb;
+#else
     vec3 refl = textureLod(u_probe, world_to_cmcs(d), u_lod).rgb;
+#endif
     if (u_transparency > 0.0) {
         // Seed 003: refraction with an IOR, total internal reflection, optional dispersion
         // (one IOR per channel). A thin sheet displaces the ray but does not turn it.

@@ -52,3 +52,31 @@ vec3 blend_reflection(int mode, float kr, vec3 specular, vec3 lit, vec3 refl, fl
     float f = mode == 2 ? fresnel_schlick(kr, n_dot_v) : kr;
     return (1.0 - f) * lit + f * refl;
 }
+
+// Seed 000 eq. 4 with eq. 5's shift to [0, 1] (GL's GL_SPHERE_MAP): s = R_x / (4 A_z) + 1/2,
+// t = R_y / (4 A_z) + 1/2, A_z = sqrt((R_z + 1) / 2), R in view space. At the rim (R_z -> -1)
+// A_z -> 0: the point on the rim in the direction of (R_x, R_y) instead of a division by zero.
+vec2 sphere_map_st(vec3 r)
+{
+    r = normalize(r);
+    float az = sqrt(max((r.z + 1.0) * 0.5, 0.0));
+    vec2 xy = r.xy;
+    float len = length(xy);
+    if (az < 1e-4)
+        return len > 0.0 ? 0.5 + 0.5 * xy / len : vec2(1.0, 0.5);
+    return xy / (4.0 * az) + 0.5;
+}
+
+// The inverse: the view-space direction a texel of the sphere map shows (outside the disc, the
+// rim). With a = 2s - 1, b = 2t - 1, q = a^2 + b^2: R = (2a sqrt(1-q), 2b sqrt(1-q), 1 - 2q).
+vec3 sphere_map_direction(vec2 st)
+{
+    vec2 ab = st * 2.0 - 1.0;
+    float q = dot(ab, ab);
+    if (q > 1.0) {
+        ab /= sqrt(q);
+        q = 1.0;
+    }
+    float k = 2.0 * sqrt(1.0 - q);
+    return vec3(ab * k, 1.0 - 2.0 * q);
+}

@@ -33,7 +33,7 @@ static void world_bounds(const rd_context *ctx, const rd_scene_view_input *in, f
 }
 
 rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_scene_view_input *in,
-                             float view_proj[16], float inverse_view_proj[16])
+                             float view_proj[16], float inverse_view_proj[16], float view_rot[9])
 {
     vec3 eye = {v->eye[0], v->eye[1], v->eye[2]};
     vec3 target = {v->target[0], v->target[1], v->target[2]};
@@ -80,6 +80,11 @@ rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_s
     glm_lookat(eye, target, up, view);
     glm_perspective(glm_rad(fov), (float)v->width / (float)v->height, near_m, far_m, proj);
     glm_mat4_mul(proj, view, vp);
+    if (view_rot) {
+        mat3 rot;
+        glm_mat4_pick3(view, rot);
+        memcpy(view_rot, rot, sizeof rot);
+    }
     memcpy(view_proj, vp, sizeof vp);
     if (inverse_view_proj) {
         mat4 inv;

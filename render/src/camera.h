@@ -9,6 +9,6 @@ typedef struct rd_scene_view_input {
 } rd_scene_view_input;
 
 rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_scene_view_input *in,
-                             float view_proj[16], float inverse_view_proj[16]);
+                             float view_proj[16], float inverse_view_proj[16], float view_rot[9]);
 
 #endif

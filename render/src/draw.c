@@ -186,7 +186,10 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
                 probe = NULL; /* nothing captured yet: drawn plain this frame */
         }
         int variant = (t ? RD_LIT_TEXTURED : 0) | (probe ? RD_LIT_REFLECTING : 0) |
-                      (probe && o->material.per_vertex_reflection ? RD_LIT_PER_VERTEX : 0);
+                      (probe && o->material.per_vertex_reflection ? RD_LIT_PER_VERTEX : 0) |
+                      (probe && o->material.sphere_map && probe->sphere_map && pass->view_rot
+                           ? RD_LIT_SPHERE_MAP
+                           : 0);
         const rd_program *p = rd_lit_program(ctx, variant);
         if (!p) {
             free(items);
@@ -204,6 +207,13 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
         }
         if (probe)
             set_reflection_uniforms(p, scene, probe, o);
+        if (variant & RD_LIT_SPHERE_MAP) {
+            glActiveTexture(GL_TEXTURE2);
+            glBindTexture(GL_TEXTURE_2D, probe->sphere_map);
+            glUniform1i(p->u_sphere_map, 2);
+            glUniformMatrix3fv(p->u_view_rot, 1, GL_FALSE, pass->view_rot);
+            glActiveTexture(GL_TEXTURE0);
+        }
         /* Back faces of closed meshes are never seen: culling them saves shading fragments
          * that early depth testing cannot reject when they happen to be drawn first. */
         if (o->double_sided)

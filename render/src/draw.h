@@ -7,6 +7,7 @@
 
 typedef struct rd_pass {
     const float *view_proj; /* column-major 4x4 */
+    const float *view_rot;  /* column-major 3x3 world-to-view rotation (sphere maps) */
     const float *eye;
     int exclude_key;        /* objects of this probe key are left out (a probe's owner); 0 = none */
     int reflections;        /* 1: reflective objects use their probes; 0: drawn plain (in probes) */

@@ -21,7 +21,9 @@ static void free_probe_textures(rd_probe *p)
         glDeleteTextures(1, &p->capture);
     if (p->filtered)
         glDeleteTextures(1, &p->filtered);
-    p->capture = p->filtered = 0;
+    if (p->sphere_map)
+        glDeleteTextures(1, &p->sphere_map);
+    p->capture = p->filtered = p->sphere_map = 0;
 }
 
 void rd_probes_destroy(rd_scene *s)

@@ -37,6 +37,8 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
 /* The scene's ambient probe and its SH9 coefficients (ambient_sh.c), when the ambient model
  * asks for them. */
 rd_result rd_ambient_update(rd_context *ctx, rd_scene *s, rd_frame_stats *stats);
+/* Sphere maps of the probes whose materials ask for one, for this view (sphere_map_gpu.c). */
+rd_result rd_sphere_maps_update(rd_context *ctx, rd_scene *s, const float view_rot[9]);
 
 /* World bounds of object i (its mesh bounds through its transform). */
 void rd_object_world_bounds(rd_context *ctx, const rd_object_desc *o, float lo[3], float hi[3]);

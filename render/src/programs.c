@@ -104,6 +104,8 @@ static void locate_lit(rd_program *p)
     p->u_diffuse_texture = glGetUniformLocation(id, "u_diffuse_texture");
     p->u_uv_scale = glGetUniformLocation(id, "u_uv_scale");
     p->u_ambient_model = glGetUniformLocation(id, "u_ambient_model");
+    p->u_sphere_map = glGetUniformLocation(id, "u_sphere_map");
+    p->u_view_rot = glGetUniformLocation(id, "u_view_rot");
     p->u_sh = glGetUniformLocation(id, "u_sh");
     p->u_probe = glGetUniformLocation(id, "u_probe");
     p->u_probe_centre = glGetUniformLocation(id, "u_probe_centre");
@@ -127,11 +129,13 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
         return p;
     int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
     int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
-    char defines[192];
-    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s", RD_MAX_LIGHTS,
+    int sphere = reflecting && (variant & RD_LIT_SPHERE_MAP);
+    char defines[224];
+    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s", RD_MAX_LIGHTS,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
-             per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "");
+             per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "",
+             sphere ? "#define SPHERE_MAP 1\n" : "");
     p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
                  reflecting ? "reflect.glsl lit.frag" : "lit.frag", defines);
     if (!p->id)
@@ -184,8 +188,24 @@ rd_result rd_prefilter_program_create(rd_context *ctx)
     return RD_OK;
 }
 
+rd_result rd_sphere_program_create(rd_context *ctx)
+{
+    GLuint p = link("fullscreen.vert", "reflect.glsl sphere_map_gen.frag", "");
+    if (!p)
+        return RD_ERR_SHADER;
+    ctx->sphere_program = p;
+    ctx->sm_u_source = glGetUniformLocation(p, "u_source");
+    ctx->sm_u_view_rot = glGetUniformLocation(p, "u_view_rot");
+    ctx->sm_u_size = glGetUniformLocation(p, "u_size");
+    return RD_OK;
+}
+
 void rd_programs_destroy(rd_context *ctx)
 {
+    if (ctx->sphere_program) {
+        glDeleteProgram(ctx->sphere_program);
+        ctx->sphere_program = 0;
+    }
     if (ctx->prefilter_program) {
         glDeleteProgram(ctx->prefilter_program);
         ctx->prefilter_program = 0;

@@ -53,13 +53,19 @@ typedef struct rd_program {
         u_light_attenuation, u_light_spot;
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
     int u_diffuse_texture, u_uv_scale;
-    int u_ambient_model, u_sh;
+    int u_ambient_model, u_sh, u_sphere_map, u_view_rot;
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
         u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */
-enum { RD_LIT_TEXTURED = 1, RD_LIT_REFLECTING = 2, RD_LIT_PER_VERTEX = 4, RD_LIT_VARIANTS = 8 };
+enum {
+    RD_LIT_TEXTURED = 1,
+    RD_LIT_REFLECTING = 2,
+    RD_LIT_PER_VERTEX = 4,
+    RD_LIT_SPHERE_MAP = 8,
+    RD_LIT_VARIANTS = 16
+};
 
 struct rd_context {
     rd_backend backend;
@@ -80,6 +86,8 @@ struct rd_context {
     unsigned probe_depth; /* depth buffer of probe captures, probe_depth_size square */
     int probe_depth_size;
     unsigned prefilter_program;
+    unsigned sphere_program; /* sphere map from a cube map (sphere_map_gen.frag) */
+    int sm_u_source, sm_u_view_rot, sm_u_size;
     int pf_u_source, pf_u_face, pf_u_size, pf_u_exponent, pf_u_clamp, pf_u_source_size,
         pf_u_samples;
     rd_frame_stats stats;
@@ -116,6 +124,7 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant);
 const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear);
 void rd_programs_destroy(rd_context *ctx);
 rd_result rd_prefilter_program_create(rd_context *ctx);
+rd_result rd_sphere_program_create(rd_context *ctx);
 
 rd_result rd_target_ensure(rd_target *t, int width, int height, unsigned internal_format,
                            bool with_depth);

@@ -76,7 +76,7 @@ static rd_result tonemap_pass(rd_context *ctx, const rd_view *v, int samples, un
 }
 
 static rd_result prepare(rd_context *ctx, rd_scene *scene, const rd_view *v, int *samples,
-                         float vp[16], float inv_vp[16])
+                         float vp[16], float inv_vp[16], float view_rot[9])
 {
     if (!ctx || !scene)
         return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_render: context and scene are required");
@@ -84,7 +84,7 @@ static rd_result prepare(rd_context *ctx, rd_scene *scene, const rd_view *v, int
     if (r != RD_OK)
         return r;
     rd_scene_view_input in = {scene->objects, scene->object_count};
-    r = rd_camera_matrices(ctx, v, &in, vp, inv_vp);
+    r = rd_camera_matrices(ctx, v, &in, vp, inv_vp, view_rot);
     if (r != RD_OK)
         return r;
     if (ctx->ops)
@@ -98,8 +98,8 @@ static rd_result prepare(rd_context *ctx, rd_scene *scene, const rd_view *v, int
 rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
 {
     int samples;
-    float vp[16];
-    rd_result pr = prepare(ctx, scene, v, &samples, vp, NULL);
+    float vp[16], view_rot[9];
+    rd_result pr = prepare(ctx, scene, v, &samples, vp, NULL, view_rot);
     if (pr != RD_OK)
         return pr;
     rd_frame_stats stats = {0};
@@ -108,11 +108,15 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     rd_result r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &stats);
     if (r == RD_OK)
         r = rd_ambient_update(ctx, scene, &stats);
+    if (r == RD_OK)
+        r = rd_sphere_maps_update(ctx, scene, view_rot);
     if (r != RD_OK)
         return r;
     ctx->stats = stats;
     begin_hdr_pass(ctx);
-    r = rd_draw_objects(ctx, scene, &(rd_pass){.view_proj = vp, .eye = v->eye, .reflections = 1});
+    r = rd_draw_objects(
+        ctx, scene,
+        &(rd_pass){.view_proj = vp, .view_rot = view_rot, .eye = v->eye, .reflections = 1});
     if (r != RD_OK)
         return r;
 
@@ -138,7 +142,7 @@ rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *v)
 {
     int samples;
     float vp[16], inv_vp[16];
-    rd_result r = prepare(ctx, scene, v, &samples, vp, inv_vp);
+    rd_result r = prepare(ctx, scene, v, &samples, vp, inv_vp, NULL);
     if (r != RD_OK)
         return r;
     if (!ctx->floor_quad.id) {

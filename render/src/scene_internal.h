@@ -20,6 +20,8 @@ typedef struct rd_probe {
     int faces_since_blur;     /* time slicing: faces captured since the last blur */
     int filtered_level;       /* the lower prefiltered level that holds data; -1 none */
     int mips_valid;           /* box mips generated since the last capture */
+    unsigned sphere_map;      /* material.sphere_map: the probe as a sphere map for this view */
+    int sphere_size;
 } rd_probe;
 
 struct rd_scene {

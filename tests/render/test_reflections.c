@@ -681,7 +681,8 @@ static void test_sh9_ambient(rd_context *ctx)
 
 /* ---- per-vertex against per-pixel reflection (seed 003) ------------------------------------ */
 
-static double vertex_pixel_difference(rd_context *ctx, rd_cubemap map, int segments)
+/* mode 0: per vertex; mode 1: sphere map; against the per-pixel cube-map lookup. */
+static double lookup_difference(rd_context *ctx, rd_cubemap map, int segments, int mode)
 {
     rd_mesh_data d;
     rd_mesh_data_sphere(segments, segments / 2, &d);
@@ -696,7 +697,8 @@ static double vertex_pixel_difference(rd_context *ctx, rd_cubemap map, int segme
                             .material = {.reflectivity = 1,
                                          .glossiness = 1,
                                          .correction = RD_CORRECTION_NONE,
-                                         .per_vertex_reflection = pv},
+                                         .per_vertex_reflection = mode == 0 && pv,
+                                         .sphere_map = mode == 1 && pv},
                             .probe = {.update = RD_PROBE_STATIC, .static_map = map}};
         o.transform[0] = o.transform[5] = o.transform[10] = o.transform[15] = 1;
         CHECK(rd_scene_add_object(s, &o) == RD_OK);
@@ -724,13 +726,18 @@ static void test_per_vertex_reflection(rd_context *ctx)
     CHECK(rd_cube_data_alloc(32, &cube) == RD_OK);
     fill_face_pattern(&cube);
     rd_cubemap map = upload_cube(ctx, &cube);
-    double coarse = vertex_pixel_difference(ctx, map, 8);
-    double fine = vertex_pixel_difference(ctx, map, 128);
+    double coarse = lookup_difference(ctx, map, 8, 0);
+    double fine = lookup_difference(ctx, map, 128, 0);
     printf("per-vertex vs per-pixel reflection, mean |difference|: %.4f on 8 segments, %.4f on "
            "128\n",
            coarse, fine);
     CHECK_MSG(coarse > 0.01, "per-vertex must differ visibly on a coarse mesh: %g", coarse);
     CHECK_MSG(fine < 0.5 * coarse, "and converge on a fine one: %g vs %g", fine, coarse);
+    /* Seed 000's sphere map, made for this view from the same cube map: the same picture but
+     * for its resampling (strongest at the rim, where the map squeezes the back hemisphere). */
+    double sphere = lookup_difference(ctx, map, 64, 1);
+    printf("sphere map vs cube map, mean |difference|: %.4f\n", sphere);
+    CHECK_MSG(sphere < 0.02, "sphere-map lookup strays from the cube map: %g", sphere);
     rd_cubemap_destroy(ctx, map);
     rd_cube_data_free(&cube);
 }

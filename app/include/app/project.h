@@ -55,6 +55,8 @@ typedef struct app_material {
     int probe_resolution;  /* texels per face side; 0 = auto */
     float proxy_radius_mm; /* sphere proxy radius; 0 = 4 x the object's bounding radius */
     char probe_map[1024];  /* APP_PROBE_STATIC: six images, * for the face name */
+    int probe_sphere_map;  /* 1: look reflections up in a sphere map (seed 000) */
+    int probe_per_vertex;  /* 1: reflection vector per vertex (seed 003) */
     /* Glass (RENDERING.md section 9). */
     float transparency; /* 0 opaque .. 1 clear */
     float ior;          /* index of refraction, default 1.5 */

@@ -141,6 +141,9 @@ typedef struct rd_material {
     /* Seed 003: the reflection vector computed per vertex and interpolated (faster, worse on
      * coarse meshes) instead of per pixel. */
     int per_vertex_reflection;
+    /* Seed 000 eqs. 2, 4, 5: 1 = look the reflection up in a sphere map made from the probe for
+     * the current view (a view-dependent, legacy mode), 0 = in the cube map. */
+    int sphere_map;
 } rd_material;
 
 typedef enum rd_light_type {
