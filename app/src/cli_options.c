@@ -45,7 +45,7 @@ static int parse_int(const char *text, int lo, int hi, int *out)
 
 /* Names by enum value; index 0 (the default) is not accepted on the command line. */
 static const char *const probe_names[5] = {"", "every-frame", "once", "on-change", "time-sliced"};
-static const char *const blur_names[3] = {"", "prefiltered", "box-mips"};
+static const char *const blur_names[4] = {"", "prefiltered", "box-mips", "reference"};
 static const char *const ambient_names[3] = {"", "constant", "sh9"};
 
 static int parse_name(const char *text, const char *const *names, int count, int *out)
@@ -114,7 +114,7 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
         else if (!strcmp(name, "ambient"))
             ok = parse_name(v, ambient_names, 3, &o->ambient);
         else if (!strcmp(name, "blur"))
-            ok = parse_name(v, blur_names, 3, (int *)&o->blur);
+            ok = parse_name(v, blur_names, 4, (int *)&o->blur);
         else if (!strcmp(name, "backend"))
             ok = rd_backend_parse(v, &o->backend) == RD_OK && o->backend != RD_BACKEND_ADOPT;
         if (!ok) {
@@ -124,7 +124,7 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
                     : !strcmp(name, "supersample") ? " (expected 1 to 4)"
                     : !strcmp(name, "probes")
                         ? " (expected every-frame, once, on-change or time-sliced)"
-                    : !strcmp(name, "blur")    ? " (expected prefiltered or box-mips)"
+                    : !strcmp(name, "blur")    ? " (expected prefiltered, box-mips or reference)"
                     : !strcmp(name, "ambient") ? " (expected constant or sh9)"
                                                : "");
             return CLI_USAGE;

@@ -5,6 +5,9 @@
 #include "gl_funcs.h"
 #include "prefilter.h"
 
+#include "render/cube_data.h"
+#include "render/reflect_ref.h"
+
 #include <cglm/cglm.h>
 #include <math.h>
 #include <stdio.h>
@@ -132,6 +135,44 @@ rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m)
 rd_blur_method rd_effective_blur(const rd_scene *s)
 {
     return s->reflection.blur != RD_BLUR_DEFAULT ? s->reflection.blur : RD_BLUR_PREFILTERED;
+}
+
+/* The reference blur of one level (section 5, "reference"): the capture read back at the mip
+ * level nearest 32 texels (the brute force is O(N^4)), convolved on the CPU with the level's
+ * lobe, and uploaded. Level 0 (the mirror) is the capture itself. */
+rd_result rd_reference_blur_level(rd_probe *p, unsigned source, int source_size, int level)
+{
+    int src_level = 0;
+    while ((source_size >> src_level) > 32)
+        src_level++;
+    int n = source_size >> src_level, dst = p->size >> level;
+    if (dst < 1)
+        dst = 1;
+    rd_cube_data src = {0}, out = {0};
+    rd_result r = rd_cube_data_alloc(n, &src);
+    if (r != RD_OK)
+        return r;
+    glBindTexture(GL_TEXTURE_CUBE_MAP, source);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    for (int f = 0; f < 6; f++)
+        glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, src_level, GL_RGBA, GL_FLOAT,
+                      src.faces[f]);
+    float exponent = level == 0 ? 1e9f : rd_ref_level_exponent(level, p->levels);
+    r = level == 0 ? rd_cube_data_alloc(dst, &out)
+                   : rd_ref_cube_convolve(&src, exponent, 0.0f, dst, &out);
+    if (r == RD_OK && level == 0)
+        for (int f = 0; f < 6; f++) /* the mirror level: the capture at full size */
+            glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, 0, GL_RGBA, GL_FLOAT,
+                          out.faces[f]);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, p->filtered);
+    for (int f = 0; r == RD_OK && f < 6; f++)
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, level, GL_RGBA16F, dst, dst, 0,
+                     GL_RGBA, GL_FLOAT, out.faces[f]);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+    rd_cube_data_free(&src);
+    rd_cube_data_free(&out);
+    unsigned e = rd_gl_drain_errors();
+    return r != RD_OK ? r : e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "reference blur failed");
 }
 
 /* The box proxy: the scene's (the room's interior), else the bounds of everything. */
@@ -344,12 +385,23 @@ static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned 
         glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
         glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
     }
-    if (rd_effective_blur(s) != RD_BLUR_PREFILTERED)
+    rd_blur_method method = rd_effective_blur(s);
+    if (method == RD_BLUR_BOX_MIPS)
         return RD_OK;
     if (!p->filtered) {
         rd_result r = rd_alloc_cube(&p->filtered, p->size, p->levels);
         if (r != RD_OK)
             return r;
+    }
+    if (method == RD_BLUR_REFERENCE) {
+        for (int level = lo; level <= hi; level++) {
+            rd_result r = rd_reference_blur_level(p, source, source_size, level);
+            if (r != RD_OK)
+                return r;
+            stats->prefiltered++;
+        }
+        p->filtered_level = lo;
+        return RD_OK;
     }
     /* Only the two levels the lookup blends between are computed (section 8: compute only what
      * the scene needs). */

@@ -31,6 +31,7 @@ unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p);
 rd_result rd_scene_update_spheres(rd_context *ctx, rd_scene *s);
 
 int rd_level_count(int size);
+rd_result rd_reference_blur_level(rd_probe *p, unsigned source, int source_size, int level);
 rd_result rd_alloc_cube(unsigned *name, int size, int levels);
 /* Renders face `face` of p's capture from p->centre, leaving out p->key's objects. */
 rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int face, float far_m);

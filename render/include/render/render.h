@@ -114,6 +114,8 @@ typedef enum rd_blur_method {
     RD_BLUR_DEFAULT = 0, /* the scene's choice */
     RD_BLUR_PREFILTERED, /* a mip chain convolved with the Phong lobe per level, on the GPU */
     RD_BLUR_BOX_MIPS,    /* plain box-filtered mips with a level-of-detail bias (seed 001) */
+    RD_BLUR_REFERENCE,   /* brute-force convolution on the CPU (rd_ref_cube_convolve): slow,
+                            the yardstick of the other two; sources above 32 are reduced first */
 } rd_blur_method;
 
 /* RENDERING.md section 1; the same struct feeds the CPU reference (shade_ref.h). */
