@@ -186,7 +186,9 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
                 probe = NULL; /* nothing captured yet: drawn plain this frame */
         }
         int variant = (t ? RD_LIT_TEXTURED : 0) | (probe ? RD_LIT_REFLECTING : 0) |
-                      (probe && o->material.per_vertex_reflection ? RD_LIT_PER_VERTEX : 0) |
+                      (probe && (o->material.per_vertex_reflection || scene->reflection.per_vertex)
+                           ? RD_LIT_PER_VERTEX
+                           : 0) |
                       (probe && o->material.sphere_map && probe->sphere_map && pass->view_rot
                            ? RD_LIT_SPHERE_MAP
                            : 0);

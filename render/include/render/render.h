@@ -235,6 +235,7 @@ typedef struct rd_reflection_defaults {
     int max_resolution;               /* cap for auto; 0 = 256 (stills raise it: print quality) */
     float hdr_clamp;                  /* radiance clamp before blurring; 0 = 64 */
     rd_ambient_model ambient;         /* RENDERING.md section 7 */
+    int per_vertex;                   /* 1: every reflective object per vertex (seed 003) */
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
