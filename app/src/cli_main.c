@@ -20,6 +20,7 @@ static void usage(FILE *f)
             "      (--probes every-frame|once|on-change|time-sliced, --blur prefiltered|box-mips)\n"
             "  tessera probe-bench [--size WxH] [--frames N] [--csv FILE]\n"
             "      what reflection probes cost: per update by resolution, per object\n"
+            "  tessera catalog search|show|import|export|info|bench ... (tessera catalog --help)\n"
             "\n"
             "The OpenGL backend is EGL (Mesa surfaceless) unless --backend or TESSERA_GL says\n"
             "otherwise; OSMesa is the fallback.\n");
@@ -40,6 +41,8 @@ int app_cli_main(int argc, char **argv)
         return app_cli_bench(argc, argv);
     if (!strcmp(argv[1], "probe-bench"))
         return app_cli_probe_bench(argc, argv);
+    if (!strcmp(argv[1], "catalog"))
+        return app_cli_catalog(argc, argv);
     if (!strcmp(argv[1], "--version")) {
         printf("tessera 0.1.0\n");
         return 0;

@@ -1,0 +1,46 @@
+/* One SQLite connection with Tessera's settings, and running SQL with a message on failure. */
+#include "db_internal.h"
+
+#include <stdio.h>
+
+cat_db_result catdb_connect(const char *path, int flags, sqlite3 **out, char *err, size_t err_size)
+{
+    *out = NULL;
+    sqlite3 *sql = NULL;
+    int rc = sqlite3_open_v2(path, &sql, flags | SQLITE_OPEN_NOMUTEX, NULL);
+    if (rc != SQLITE_OK) {
+        cat_db_result r = catdb_sql_fail(sql, path, err, err_size, "cannot open the catalog");
+        sqlite3_close(sql);
+        return r;
+    }
+    sqlite3_extended_result_codes(sql, 1);
+    sqlite3_busy_timeout(sql, 10000);
+    /* Foreign keys keep variants and tiles tied to their product (ON DELETE CASCADE). */
+    cat_db_result r =
+        catdb_exec(sql, path, "cannot set up the connection",
+                   "PRAGMA foreign_keys = ON; PRAGMA cache_size = -65536", err, err_size);
+    if (r == CAT_DB_OK && !catdb_register_rank(sql))
+        r = catdb_fail(err, err_size, CAT_DB_ERR_DATABASE,
+                       "%s: this SQLite has no FTS5 full-text search (SQLite %s)", path,
+                       sqlite3_libversion());
+    if (r != CAT_DB_OK) {
+        sqlite3_close(sql);
+        return r;
+    }
+    *out = sql;
+    return CAT_DB_OK;
+}
+
+cat_db_result catdb_exec(sqlite3 *sql, const char *path, const char *what, const char *text,
+                         char *err, size_t err_size)
+{
+    if (sqlite3_exec(sql, text, NULL, NULL, NULL) != SQLITE_OK)
+        return catdb_sql_fail(sql, path, err, err_size, what);
+    return CAT_DB_OK;
+}
+
+void catdb_recover(cat_db *db)
+{
+    if (db && db->sql && !sqlite3_get_autocommit(db->sql))
+        sqlite3_exec(db->sql, "ROLLBACK", NULL, NULL, NULL);
+}

@@ -1,0 +1,76 @@
+# The catalog database tests (catalog.db_*), include()d from tests/catalog/CMakeLists.txt.
+# Plain C executables linking tessera_catalog (and SQLite, to look behind the API), and CLI
+# tests that run the tessera binary on catalogs in this build folder.
+set(CAT_DB_SOURCE "${CMAKE_SOURCE_DIR}/assets/catalog")
+
+foreach(name test_db_schema test_db_import test_db_hostile test_db_search test_db_shipped test_db_faults
+             test_db_roundtrip)
+  add_executable(${name} ${CMAKE_CURRENT_LIST_DIR}/${name}.c)
+  target_link_libraries(${name} PRIVATE tessera_catalog)
+  target_include_directories(${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/common)
+  target_compile_definitions(${name} PRIVATE TESSERA_CATALOG_SOURCE="${CAT_DB_SOURCE}")
+  string(REPLACE "test_db_" "db_" test_name ${name})
+  add_test(NAME catalog.${test_name} COMMAND ${name})
+  set_tests_properties(catalog.${test_name} PROPERTIES LABELS unit)
+endforeach()
+
+# The command line, each test on a catalog file of its own (built on first use).
+set(CAT_DB_CLI ${CMAKE_CURRENT_BINARY_DIR}/db-cli)
+file(MAKE_DIRECTORY ${CAT_DB_CLI})
+file(WRITE ${CAT_DB_CLI}/bad-rows.csv
+     "manufacturer,article,gtin,category,name,width_mm,depth_mm,height_mm,list_price\n"
+     "Cli,C-1,4006381333931,basins,Good basin,600,550,175,259.00\n"
+     "Cli,C-2,4006381333932,basins,Bad GTIN,600,550,175,259.00\n"
+     "Cli,C-3,,sinks,Bad category,600,550,175,259.00\n")
+set(CAT_DB_EXPECT_ERROR ${CMAKE_SOURCE_DIR}/tests/cli/expect_error.sh)
+set(CAT_DB_SANITIZER "AddressSanitizer|LeakSanitizer|runtime error:")
+
+add_test(NAME catalog.db_cli_search
+         COMMAND tessera catalog search thermostatic bath --category taps_mixers --max-width 400
+                 --limit 5 --db ${CAT_DB_CLI}/search.sqlite)
+set_tests_properties(catalog.db_cli_search PROPERTIES LABELS unit FAIL_REGULAR_EXPRESSION "${CAT_DB_SANITIZER}"
+                     PASS_REGULAR_EXPRESSION "thermostatic bath mixer, exposed +taps_mixers +300 x 195 x 110")
+add_test(NAME catalog.db_cli_show
+         COMMAND tessera catalog show NK-51244.00 --manufacturer nordkeram
+                 --db ${CAT_DB_CLI}/show.sqlite)
+set_tests_properties(catalog.db_cli_show PROPERTIES LABELS unit FAIL_REGULAR_EXPRESSION "${CAT_DB_SANITIZER}"
+                     PASS_REGULAR_EXPRESSION "Fjord back-to-wall WC, rimless.*GTIN +7351234[0-9]+.*variants \\(3\\)")
+add_test(NAME catalog.db_cli_import_bad
+         COMMAND ${CAT_DB_EXPECT_ERROR}
+                 "bad-rows.csv:3: column gtin: check digit|bad-rows.csv:4: column category|2 problems in 3 rows; nothing was imported"
+                 $<TARGET_FILE:tessera> catalog import ${CAT_DB_CLI}/bad-rows.csv
+                 --db ${CAT_DB_CLI}/import.sqlite)
+set_tests_properties(catalog.db_cli_import_bad PROPERTIES LABELS unit)
+add_test(NAME catalog.db_cli_export_import
+         COMMAND sh -c "\"$0\" catalog export -o \"$1/export.csv\" --db \"$1/rt.sqlite\" && \"$0\" catalog import \"$1/export.csv\" --db \"$1/rt.sqlite\""
+                 $<TARGET_FILE:tessera> ${CAT_DB_CLI})
+set_tests_properties(catalog.db_cli_export_import PROPERTIES LABELS unit FAIL_REGULAR_EXPRESSION "${CAT_DB_SANITIZER}"
+                     PASS_REGULAR_EXPRESSION "rows, 0 products added, [1-9][0-9]* updated")
+add_test(NAME catalog.db_cli_bad_option
+         COMMAND ${CAT_DB_EXPECT_ERROR} "unknown option \"--colour\""
+                 $<TARGET_FILE:tessera> catalog search tap --colour red)
+set_tests_properties(catalog.db_cli_bad_option PROPERTIES LABELS unit)
+add_test(NAME catalog.db_cli_not_found
+         COMMAND ${CAT_DB_EXPECT_ERROR} "no product with article number or GTIN \"NO-SUCH-1\""
+                 $<TARGET_FILE:tessera> catalog show NO-SUCH-1 --db ${CAT_DB_CLI}/show.sqlite)
+set_tests_properties(catalog.db_cli_not_found PROPERTIES LABELS unit)
+
+# clang: the fuzz targets compile the catalog's sources themselves, so they need SQLite too
+# (fuzz_gltf above), and the CSV import gets a libFuzzer target of its own, run like
+#   build/tests/catalog/fuzz_db_csv -max_total_time=60 assets/catalog
+if(CMAKE_C_COMPILER_ID MATCHES "Clang" AND CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+  pkg_check_modules(CAT_DB_SQLITE3 REQUIRED IMPORTED_TARGET sqlite3)
+  if(TARGET fuzz_gltf)
+    target_link_libraries(fuzz_gltf PRIVATE PkgConfig::CAT_DB_SQLITE3)
+  endif()
+  get_target_property(CAT_DB_FUZZ_SOURCES tessera_catalog SOURCES)
+  get_target_property(CAT_DB_FUZZ_DIR tessera_catalog SOURCE_DIR)
+  list(FILTER CAT_DB_FUZZ_SOURCES INCLUDE REGEX "(^|/)db_[a-z_]+\\.c$")
+  list(TRANSFORM CAT_DB_FUZZ_SOURCES PREPEND "${CAT_DB_FUZZ_DIR}/" REGEX "^[^/]")
+  add_executable(fuzz_db_csv ${CMAKE_CURRENT_LIST_DIR}/test_db_fuzz_csv.c ${CAT_DB_FUZZ_SOURCES})
+  target_include_directories(fuzz_db_csv PRIVATE ${CAT_DB_FUZZ_DIR}/include ${CAT_DB_FUZZ_DIR}/src)
+  target_link_libraries(fuzz_db_csv PRIVATE PkgConfig::CAT_DB_SQLITE3 m)
+  target_compile_options(fuzz_db_csv PRIVATE -fsanitize=fuzzer,address,undefined
+                                             -fno-omit-frame-pointer)
+  target_link_options(fuzz_db_csv PRIVATE -fsanitize=fuzzer,address,undefined)
+endif()
