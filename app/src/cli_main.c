@@ -1,4 +1,5 @@
 #include "app/cli.h"
+#include "app/cli_ref.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -20,6 +21,12 @@ static void usage(FILE *f)
             "      (--probes every-frame|once|on-change|time-sliced, --blur prefiltered|box-mips)\n"
             "  tessera probe-bench [--size WxH] [--frames N] [--csv FILE]\n"
             "      what reflection probes cost: per update by resolution, per object\n"
+            "  tessera reference PROJECT -o OUT.exr [--camera NAME] [--size WxH] [--samples N]\n"
+            "      the ground truth: a CPU ray tracer (Embree) with the same shading\n"
+            "  tessera compare A B [--mask M] [--heatmap OUT.png]\n"
+            "      RMSE and PSNR in linear RGB, over all pixels and the masked ones\n"
+            "  tessera sweep PROJECT [--size WxH] [--samples N] [--csv FILE] [--plot FILE.png]\n"
+            "      the speed/accuracy trade: each reflection setting timed and compared\n"
             "  tessera catalog search|show|import|export|info|bench ... (tessera catalog --help)\n"
             "\n"
             "The OpenGL backend is EGL (Mesa surfaceless) unless --backend or TESSERA_GL says\n"
@@ -41,6 +48,12 @@ int app_cli_main(int argc, char **argv)
         return app_cli_bench(argc, argv);
     if (!strcmp(argv[1], "probe-bench"))
         return app_cli_probe_bench(argc, argv);
+    if (!strcmp(argv[1], "reference"))
+        return app_cli_reference(argc, argv);
+    if (!strcmp(argv[1], "compare"))
+        return app_cli_compare(argc, argv);
+    if (!strcmp(argv[1], "sweep"))
+        return app_cli_sweep(argc, argv);
     if (!strcmp(argv[1], "catalog"))
         return app_cli_catalog(argc, argv);
     if (!strcmp(argv[1], "--version")) {

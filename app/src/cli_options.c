@@ -101,6 +101,12 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             o->camera = v;
         else if (!strcmp(name, "csv"))
             o->csv = v;
+        else if (!strcmp(name, "plot"))
+            o->plot = v;
+        else if (!strcmp(name, "animate"))
+            o->animate = v;
+        else if (!strcmp(name, "samples"))
+            ok = parse_int(v, 1, 1 << 20, &o->samples);
         else if (!strcmp(name, "size"))
             ok = cli_parse_size(v, &o->width, &o->height);
         else if (!strcmp(name, "supersample"))

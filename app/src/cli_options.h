@@ -13,6 +13,9 @@ typedef struct cli_options {
     const char *output;
     const char *camera;
     const char *csv;
+    const char *plot;    /* --plot: a PNG of the sweep */
+    const char *animate; /* --animate: the object the sweep moves */
+    int samples;         /* --samples: Monte-Carlo rays per glossy lookup (reference) */
     int width, height;
     int supersample;
     int frames, warmup;

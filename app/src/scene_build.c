@@ -209,6 +209,7 @@ void app_scene_release(rd_context *ctx, app_scene *s)
         rd_texture_destroy(ctx, s->textures[i]);
     rd_scene_destroy(s->scene);
     free(s->meshes);
+    free(s->object_parts);
     free(s->textures);
     free(s->texture_paths);
     memset(s, 0, sizeof *s);

@@ -218,8 +218,13 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
 app_result app_scene_add_objects(rd_context *ctx, const app_project *p, app_scene *s, char *err,
                                  size_t err_size)
 {
+    s->object_parts =
+        calloc((size_t)(p->object_count ? p->object_count : 1), sizeof *s->object_parts);
+    if (!s->object_parts)
+        return APP_ERR_OUT_OF_MEMORY;
     for (int i = 0; i < p->object_count; i++) {
         rd_material m;
+        s->object_parts[i][0] = rd_scene_object_count(s->scene);
         app_result r = app_scene_material(ctx, p, s, p->objects[i].material, &m, err, err_size);
         if (r == APP_OK)
             r = p->objects[i].shape == APP_SHAPE_MODEL
@@ -227,6 +232,7 @@ app_result app_scene_add_objects(rd_context *ctx, const app_project *p, app_scen
                     : add_primitive(ctx, p, s, i, &m, err, err_size);
         if (r != APP_OK)
             return r;
+        s->object_parts[i][1] = rd_scene_object_count(s->scene) - s->object_parts[i][0];
     }
     return APP_OK;
 }

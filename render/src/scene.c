@@ -113,6 +113,14 @@ int rd_scene_object_count(const rd_scene *s)
     return s ? s->object_count : 0;
 }
 
+rd_result rd_scene_object_desc(const rd_scene *s, int index, rd_object_desc *out)
+{
+    if (!s || !out || index < 0 || index >= s->object_count)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_object_desc: no object %d", index);
+    *out = s->objects[index];
+    return RD_OK;
+}
+
 rd_result rd_scene_set_transform(rd_scene *s, int index, const float transform[16])
 {
     if (!s || !transform || index < 0 || index >= s->object_count)

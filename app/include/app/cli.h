@@ -12,6 +12,7 @@ int app_cli_render(int argc, char **argv);
 int app_cli_demo(int argc, char **argv);
 int app_cli_bench(int argc, char **argv);
 int app_cli_probe_bench(int argc, char **argv);
+int app_cli_sweep(int argc, char **argv);
 int app_cli_catalog(int argc, char **argv);
 
 #ifdef __cplusplus

@@ -20,7 +20,9 @@ typedef struct app_scene {
     rd_cubemap *cubemaps; /* static probe maps, loaded once per file pattern */
     char (*cubemap_paths)[1024];
     int cubemap_count, cubemap_capacity;
-    rd_mesh unit_meshes[2][5]; /* shared primitives: [coarse][app_shape] (models excluded) */
+    rd_mesh unit_meshes[2][5];
+    /* Per project object: its first renderer object and how many parts it has (to move it). */
+    int (*object_parts)[2]; /* shared primitives: [coarse][app_shape] (models excluded) */
 } app_scene;
 
 /* Uploads the room, the objects (primitives and glTF/GLB models), the textures and the

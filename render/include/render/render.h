@@ -212,6 +212,8 @@ rd_result rd_scene_add_object(rd_scene *scene, const rd_object_desc *desc);
 rd_result rd_scene_add_light(rd_scene *scene, const rd_light *light);
 void rd_scene_set_ambient(rd_scene *scene, const float intensity[3]); /* I_a */
 int rd_scene_object_count(const rd_scene *scene);
+/* A copy of object `index`'s description as it stands (its transform after moves). */
+rd_result rd_scene_object_desc(const rd_scene *scene, int index, rd_object_desc *out);
 
 /* Moves object `index` (in the order added); probes that see it are captured again under
  * RD_PROBE_ON_CHANGE. */

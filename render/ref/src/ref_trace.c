@@ -1,0 +1,490 @@
+/* One primary ray: first hit, direct light (RENDERING.md section 1, rd_ref_shade) and, on a
+ * surface the GPU gives a probe, reflection and transmission traced into the real geometry and
+ * blended as render/shaders/lit.frag blends its probe lookups (sections 2, 5, 6, 9). */
+#include "ref_internal.h"
+
+#include "render/reflect_ref.h"
+#include "render/shade_ref.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+/* The GPU asks for 8x anisotropic filtering of its textures (render/src/resources.c). */
+#define REF_MAX_ANISO 8
+
+/* An Embree intersect context that carries the tracer's rules to the filter below. */
+typedef struct trace_ctx {
+    struct RTCIntersectContext rtc; /* first: Embree hands the filter a pointer to it */
+    const ref_scene *scene;
+    unsigned skip_geom, skip_prim; /* the triangle a secondary ray leaves from */
+    int secondary;                 /* reflected and transmitted rays do not see glass */
+} trace_ctx;
+
+/* Rejects what the GPU would not draw: back faces of closed meshes (culled), and for secondary
+ * rays glass (probes skip it, draw.c) and the triangle the ray starts on. */
+static void hit_filter(const struct RTCFilterFunctionNArguments *a)
+{
+    const trace_ctx *c = (const trace_ctx *)a->context;
+    const float *ray = (const float *)a->ray;
+    const unsigned *hit = (const unsigned *)a->hit;
+    unsigned n = a->N;
+    for (unsigned i = 0; i < n; i++) {
+        if (a->valid[i] == 0)
+            continue;
+        unsigned prim = hit[5 * n + i], geom = hit[6 * n + i];
+        const ref_mesh *m = &c->scene->meshes[geom];
+        int reject = geom == c->skip_geom && prim == c->skip_prim;
+        if (c->secondary && m->glass)
+            reject = 1;
+        if (!reject && !m->double_sided) {
+            const float *ng = m->tri_normals + 3 * (size_t)prim;
+            float d = ng[0] * ray[4 * n + i] + ng[1] * ray[5 * n + i] + ng[2] * ray[6 * n + i];
+            reject = !(d < 0.0f); /* back-facing or edge-on: not rasterised */
+        }
+        if (reject)
+            a->valid[i] = 0;
+    }
+}
+
+typedef struct surface {
+    const ref_mesh *mesh;
+    unsigned geom, prim;
+    float t;
+    float p[3];
+    float n[3]; /* shading normal as lit.frag makes it: unit (or V), flipped on back faces */
+    float uv[2];
+    int front;
+} surface;
+
+static int intersect(const ref_scene *s, const float org[3], const float dir[3], float tnear,
+                     unsigned skip_geom, unsigned skip_prim, int secondary, surface *out,
+                     ref_trace_stats *stats)
+{
+    trace_ctx c;
+    rtcInitIntersectContext(&c.rtc);
+    c.rtc.filter = hit_filter;
+    c.scene = s;
+    c.skip_geom = skip_geom;
+    c.skip_prim = skip_prim;
+    c.secondary = secondary;
+    struct RTCRayHit rh;
+    memset(&rh, 0, sizeof rh);
+    rh.ray.org_x = org[0];
+    rh.ray.org_y = org[1];
+    rh.ray.org_z = org[2];
+    rh.ray.dir_x = dir[0];
+    rh.ray.dir_y = dir[1];
+    rh.ray.dir_z = dir[2];
+    rh.ray.tnear = tnear;
+    rh.ray.tfar = INFINITY;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(s->rtc, &c.rtc, &rh);
+    if (stats)
+        stats->rays++;
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+        return 0;
+    const ref_mesh *m = &s->meshes[rh.hit.geomID];
+    const uint32_t *tri = m->indices + 3 * (size_t)rh.hit.primID;
+    float b1 = rh.hit.u, b2 = rh.hit.v, b0 = 1.0f - b1 - b2;
+    float n[3];
+    for (int k = 0; k < 3; k++) {
+        out->p[k] = b0 * m->positions[3 * tri[0] + (unsigned)k] +
+                    b1 * m->positions[3 * tri[1] + (unsigned)k] +
+                    b2 * m->positions[3 * tri[2] + (unsigned)k];
+        n[k] = b0 * m->normals[3 * tri[0] + (unsigned)k] +
+               b1 * m->normals[3 * tri[1] + (unsigned)k] +
+               b2 * m->normals[3 * tri[2] + (unsigned)k];
+    }
+    for (int k = 0; k < 2; k++)
+        out->uv[k] = b0 * m->uvs[2 * tri[0] + (unsigned)k] + b1 * m->uvs[2 * tri[1] + (unsigned)k] +
+                     b2 * m->uvs[2 * tri[2] + (unsigned)k];
+    out->mesh = m;
+    out->geom = rh.hit.geomID;
+    out->prim = rh.hit.primID;
+    out->t = rh.ray.tfar;
+    out->front = ref_dot(m->tri_normals + 3 * (size_t)rh.hit.primID, dir) < 0.0f;
+    /* lit.frag: V = normalize(eye - P) (or +Z); N = normalize(n) (or V), negated on back faces. */
+    float v[3] = {org[0] - out->p[0], org[1] - out->p[1], org[2] - out->p[2]};
+    float v_len = sqrtf(ref_dot(v, v));
+    float n_len = sqrtf(ref_dot(n, n));
+    for (int k = 0; k < 3; k++) {
+        v[k] = v_len > 0.0f ? v[k] / v_len : (k == 2 ? 1.0f : 0.0f);
+        out->n[k] = n_len > 1e-20f ? n[k] / n_len : v[k];
+        if (!out->front)
+            out->n[k] = -out->n[k];
+    }
+    return 1;
+}
+
+/* A ray's two neighbours, one subpixel to the right and one below, carried as whole rays so that
+ * a footprint survives a bounce (a ray differential, Igehy 1999, in finite form): on a mirror
+ * they reflect about the normals interpolated where they meet the mirror's plane, as a probe
+ * looked up with screen-space derivatives would be filtered. */
+typedef struct ray_fan {
+    int valid;
+    float org_x[3], dir_x[3], org_y[3], dir_y[3];
+} ray_fan;
+
+/* Where the ray meets the plane of triangle `prim` ahead of its origin: the point and its
+ * barycentric coordinates (it need not lie inside). 0 when it does not (parallel, behind). */
+static int bary_on_plane(const ref_mesh *m, unsigned prim, const float org[3], const float dir[3],
+                         float b[3], float p[3])
+{
+    const uint32_t *tri = m->indices + 3 * (size_t)prim;
+    const float *p0 = m->positions + 3 * tri[0], *p1 = m->positions + 3 * tri[1],
+                *p2 = m->positions + 3 * tri[2];
+    const float *ng = m->tri_normals + 3 * (size_t)prim;
+    float denom = ref_dot(dir, ng);
+    if (!(fabsf(denom) > 0.0f))
+        return 0;
+    float w0[3] = {p0[0] - org[0], p0[1] - org[1], p0[2] - org[2]};
+    float t = ref_dot(w0, ng) / denom;
+    if (!(t > 0.0f) || !isfinite(t))
+        return 0;
+    float e1[3], e2[3], w[3];
+    for (int k = 0; k < 3; k++) {
+        p[k] = org[k] + t * dir[k];
+        e1[k] = p1[k] - p0[k];
+        e2[k] = p2[k] - p0[k];
+        w[k] = p[k] - p0[k];
+    }
+    float d00 = ref_dot(e1, e1), d01 = ref_dot(e1, e2), d11 = ref_dot(e2, e2);
+    float d20 = ref_dot(w, e1), d21 = ref_dot(w, e2);
+    float det = d00 * d11 - d01 * d01;
+    if (!(fabsf(det) > 0.0f))
+        return 0;
+    b[1] = (d11 * d20 - d01 * d21) / det;
+    b[2] = (d00 * d21 - d01 * d20) / det;
+    b[0] = 1.0f - b[1] - b[2];
+    return isfinite(b[1]) && isfinite(b[2]);
+}
+
+/* Attribute `attr` (dim floats per vertex) of triangle `prim` at barycentrics b. */
+static void interpolate(const ref_mesh *m, unsigned prim, const float *attr, int dim,
+                        const float b[3], float *out)
+{
+    const uint32_t *tri = m->indices + 3 * (size_t)prim;
+    for (int k = 0; k < dim; k++)
+        out[k] = b[0] * attr[(size_t)dim * tri[0] + (size_t)k] +
+                 b[1] * attr[(size_t)dim * tri[1] + (size_t)k] +
+                 b[2] * attr[(size_t)dim * tri[2] + (size_t)k];
+}
+
+static int uv_on_plane(const ref_mesh *m, unsigned prim, const float org[3], const float dir[3],
+                       float uv[2])
+{
+    float b[3], p[3];
+    if (!bary_on_plane(m, prim, org, dir, b, p))
+        return 0;
+    interpolate(m, prim, m->uvs, 2, b, uv);
+    return isfinite(uv[0]) && isfinite(uv[1]);
+}
+
+/* Section 1 at a hit of the ray (org, dir), seen from `eye`. With the ray's neighbours the
+ * texture is filtered over the footprint they span (the GPU's derivatives); without, level 0.
+ * raw_lit = 1 leaves out the emissive max, which lit.frag applies only after the blend. */
+static void shade_direct(const ref_scene *s, const surface *sf, const float eye[3],
+                         const float org[3], const float dir[3], const ray_fan *fan, int raw_lit,
+                         float out[3])
+{
+    const ref_mesh *m = sf->mesh;
+    float albedo[3];
+    if (m->texture) {
+        const ref_texture *t = &s->textures[m->texture - 1];
+        float uv[2] = {sf->uv[0] * m->uv_scale[0], sf->uv[1] * m->uv_scale[1]};
+        float base[2], ux[2], uy[2];
+        if (fan && fan->valid && uv_on_plane(m, sf->prim, org, dir, base) &&
+            uv_on_plane(m, sf->prim, fan->org_x, fan->dir_x, ux) &&
+            uv_on_plane(m, sf->prim, fan->org_y, fan->dir_y, uy)) {
+            float dx[2] = {(ux[0] - base[0]) * m->uv_scale[0], (ux[1] - base[1]) * m->uv_scale[1]};
+            float dy[2] = {(uy[0] - base[0]) * m->uv_scale[0], (uy[1] - base[1]) * m->uv_scale[1]};
+            ref_texture_sample_footprint(t, uv, dx, dy, REF_MAX_ANISO, albedo);
+        } else {
+            ref_texture_sample(t, uv[0], uv[1], 0.0f, albedo);
+        }
+    }
+    rd_material mat = m->material;
+    if (raw_lit)
+        for (int k = 0; k < 3; k++)
+            mat.emissive[k] = -FLT_MAX; /* max(-FLT_MAX, lit) = lit */
+    rd_ref_shade(&mat, m->texture ? albedo : NULL, sf->p, sf->n, eye, s->lights, s->light_count,
+                 s->ambient, out);
+}
+
+typedef enum bounce { BOUNCE_REFLECT, BOUNCE_STRAIGHT, BOUNCE_REFRACT } bounce;
+
+/* The direction a ray leaves `sf` in, by lit.frag's rules: from the view vector V (toward the
+ * ray's origin) and the shading normal N, R = reflect(-V, N), T = -V through a thin sheet or
+ * refract(-V, N, eta). 0 on total internal reflection. */
+static int bounce_dir(bounce kind, const float v[3], const float n[3], float eta, float out[3])
+{
+    float minus_v[3] = {-v[0], -v[1], -v[2]};
+    if (kind == BOUNCE_REFLECT) {
+        rd_ref_reflect(minus_v, n, out);
+        return 1;
+    }
+    if (kind == BOUNCE_STRAIGHT) {
+        memcpy(out, minus_v, sizeof minus_v);
+        return 1;
+    }
+    return rd_ref_refract(minus_v, n, eta, out);
+}
+
+/* One neighbour through the bounce: where it meets the surface's plane, the normal there
+ * (lit.frag's rules: interpolated, normalised or V, flipped on a back face), its new ray. */
+static int bounce_neighbour(const surface *sf, const float org[3], const float dir[3], bounce kind,
+                            float eta, float new_org[3], float new_dir[3])
+{
+    float b[3], n[3], v[3];
+    if (!bary_on_plane(sf->mesh, sf->prim, org, dir, b, new_org))
+        return 0;
+    interpolate(sf->mesh, sf->prim, sf->mesh->normals, 3, b, n);
+    for (int k = 0; k < 3; k++)
+        v[k] = org[k] - new_org[k];
+    float v_len = sqrtf(ref_dot(v, v)), n_len = sqrtf(ref_dot(n, n));
+    if (!(v_len > 0.0f))
+        return 0;
+    for (int k = 0; k < 3; k++) {
+        v[k] /= v_len;
+        n[k] = n_len > 1e-20f ? n[k] / n_len : v[k];
+        if (!sf->front)
+            n[k] = -n[k];
+    }
+    return bounce_dir(kind, v, n, eta, new_dir);
+}
+
+static void bounce_fan(const surface *sf, const ray_fan *in, bounce kind, float eta, ray_fan *out)
+{
+    out->valid = in && in->valid &&
+                 bounce_neighbour(sf, in->org_x, in->dir_x, kind, eta, out->org_x, out->dir_x) &&
+                 bounce_neighbour(sf, in->org_y, in->dir_y, kind, eta, out->org_y, out->dir_y);
+}
+
+/* What a probe would show in direction dir from the surface: the first non-glass surface, lit
+ * by direct light only (one bounce: reflective objects appear plain in reflections), black on a
+ * miss. fan: the ray's neighbours for texture filtering, or NULL. */
+static void secondary_radiance(const ref_scene *s, const surface *from, const float dir[3],
+                               const ray_fan *fan, float out[3], ref_trace_stats *stats)
+{
+    surface sf;
+    if (!intersect(s, from->p, dir, s->epsilon, from->geom, from->prim, 1, &sf, stats)) {
+        out[0] = out[1] = out[2] = 0.0f;
+        return;
+    }
+    shade_direct(s, &sf, from->p, from->p, dir, fan, 0, out);
+}
+
+/* splitmix64's finaliser: a well-mixed 64-bit hash. */
+static uint64_t mix64(uint64_t z)
+{
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+static float uniform01(uint64_t key, uint64_t index)
+{
+    return (float)(mix64(key + 0x9E3779B97F4A7C15ull * (index + 1)) >> 40) * (1.0f / 16777216.0f);
+}
+
+/* An orthonormal basis around unit a (Duff et al. 2017, "Building an orthonormal basis,
+ * revisited"). */
+static void basis(const float a[3], float t[3], float b[3])
+{
+    float sign = copysignf(1.0f, a[2]);
+    float p = -1.0f / (sign + a[2]);
+    float q = a[0] * a[1] * p;
+    t[0] = 1.0f + sign * a[0] * a[0] * p;
+    t[1] = sign * q;
+    t[2] = -sign * a[0];
+    b[0] = q;
+    b[1] = sign + a[1] * a[1] * p;
+    b[2] = -a[1];
+}
+
+/* The reflection (or transmission) along `axis` through the gloss lobe: one ray for a mirror;
+ * else the mean of `samples` rays drawn from the normalised Phong lobe
+ * ((n + 1) / 2 pi) cos^n around the axis, n = rd_ref_gloss_exponent(g) -- importance sampled,
+ * so the estimate is a plain mean: cos = u^(1 / (n + 1)), phi = 2 pi v. u is stratified
+ * ((k + jitter) / samples) and v a randomly shifted golden-ratio sequence, both keyed by `key`
+ * alone, so a pixel's samples never depend on the thread that traces it. */
+static void lobe_radiance(const ref_scene *s, const surface *from, const float axis_in[3],
+                          const ray_fan *fan, float glossiness, int samples, uint64_t key,
+                          float out[3], ref_trace_stats *stats)
+{
+    float axis[3] = {axis_in[0], axis_in[1], axis_in[2]};
+    float len = sqrtf(ref_dot(axis, axis));
+    if (!(len > 0.0f) || !isfinite(len)) {
+        out[0] = out[1] = out[2] = 0.0f;
+        return;
+    }
+    for (int k = 0; k < 3; k++)
+        axis[k] /= len;
+    if (glossiness >= 1.0f) {
+        secondary_radiance(s, from, axis, fan, out, stats);
+        return;
+    }
+    float n = rd_ref_gloss_exponent(glossiness);
+    float inv = 1.0f / (n + 1.0f);
+    float t[3], b[3];
+    basis(axis, t, b);
+    float shift = uniform01(key, 0xFFFFFFFFull);
+    double sum[3] = {0, 0, 0};
+    for (int i = 0; i < samples; i++) {
+        float u = ((float)i + uniform01(key, (uint64_t)i)) / (float)samples;
+        double vd = (double)shift + (double)i * 0.6180339887498949; /* exact for large i */
+        float v = (float)(vd - floor(vd));
+        float cos_t = powf(fmaxf(1.0f - u, 1e-30f), inv);
+        float sin_t = sqrtf(fmaxf(0.0f, 1.0f - cos_t * cos_t));
+        float phi = 6.28318530718f * v;
+        float cp = cosf(phi) * sin_t, sp = sinf(phi) * sin_t;
+        float d[3];
+        for (int k = 0; k < 3; k++)
+            d[k] = cos_t * axis[k] + cp * t[k] + sp * b[k];
+        float c[3];
+        secondary_radiance(s, from, d, NULL, c, stats); /* the lobe blurs more than a pixel */
+        for (int k = 0; k < 3; k++)
+            sum[k] += c[k];
+    }
+    for (int k = 0; k < 3; k++)
+        out[k] = (float)(sum[k] / samples);
+}
+
+static float clamp01(float x)
+{
+    return fminf(fmaxf(x, 0.0f), 1.0f); /* NaN -> 0, as the GPU's uniforms are set (draw.c) */
+}
+
+/* lit.frag's HAS_REFLECTION block, line for line, with every probe lookup replaced by a traced
+ * lobe: reflection along R = reflect(-V, N); glass mixes in what lies behind (straight through a
+ * double-sided sheet, refracted otherwise, per channel with dispersion, the reflected lookup on
+ * total internal reflection) by its transparency; then the blend and the emissive max. `fan`:
+ * the primary ray's neighbours (or NULL), bounced along for mirror and clear lookups. */
+static void shade_reflective(const ref_scene *s, const surface *sf, const float eye[3],
+                             const ray_fan *fan, const float lit_in[3], int samples, uint64_t key,
+                             float out[3], ref_trace_stats *stats)
+{
+    const rd_material *m = &sf->mesh->material;
+    float v[3] = {eye[0] - sf->p[0], eye[1] - sf->p[1], eye[2] - sf->p[2]};
+    float v_len = sqrtf(ref_dot(v, v));
+    for (int k = 0; k < 3; k++)
+        v[k] = v_len > 0.0f ? v[k] / v_len : (k == 2 ? 1.0f : 0.0f);
+    const float *n = sf->n;
+    float g = m->glossiness, r[3], refl[3];
+    bounce_dir(BOUNCE_REFLECT, v, n, 1.0f, r);
+    ray_fan bounced = {0};
+    if (g >= 1.0f)
+        bounce_fan(sf, fan, BOUNCE_REFLECT, 1.0f, &bounced);
+    lobe_radiance(s, sf, r, &bounced, g, samples, mix64(key ^ 0x5EF1ull), refl, stats);
+    float lit[3] = {lit_in[0], lit_in[1], lit_in[2]};
+    float tr = clamp01(m->transparency);
+    if (tr > 0.0f) {
+        float ior = m->ior > 0.0f ? m->ior : 1.5f;
+        float disp = fmaxf(m->dispersion, 0.0f);
+        bounce kind = sf->mesh->double_sided ? BOUNCE_STRAIGHT : BOUNCE_REFRACT;
+        float refr[3];
+        for (int ch = 0; ch < 3; ch++) {
+            float eta = 1.0f / (ior + ((float)ch - 1.0f) * 0.5f * disp);
+            float t[3], c[3];
+            if (!bounce_dir(kind, v, n, eta, t)) {
+                memcpy(c, refl, sizeof c); /* total internal reflection: the reflected lookup */
+            } else {
+                bounced.valid = 0;
+                if (g >= 1.0f)
+                    bounce_fan(sf, fan, kind, eta, &bounced);
+                lobe_radiance(s, sf, t, &bounced, g, samples,
+                              mix64(key ^ (0x7A11ull + (uint64_t)ch)), c, stats);
+            }
+            refr[ch] = c[ch];
+            if (disp <= 0.0f) {
+                memcpy(refr, c, sizeof refr);
+                break;
+            }
+        }
+        for (int k = 0; k < 3; k++)
+            lit[k] = lit[k] * (1.0f - tr) + refr[k] * tr; /* GLSL mix */
+    }
+    rd_ref_blend((rd_blend_mode)m->blend, clamp01(m->reflectivity), m->specular, lit, refl,
+                 ref_dot(n, v), m->emissive, out);
+}
+
+void ref_trace_primary(const ref_scene *s, const float origin[3], const float dir[3],
+                       const ref_ray_diff *diff, int samples, uint64_t rng_key, float out[3],
+                       int *reflective, ref_trace_stats *stats)
+{
+    surface sf;
+    *reflective = 0;
+    if (!intersect(s, origin, dir, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0, &sf,
+                   stats)) {
+        out[0] = out[1] = out[2] = 0.0f; /* the GPU clears to black */
+        return;
+    }
+    ray_fan fan = {.valid = diff != NULL};
+    if (diff)
+        for (int k = 0; k < 3; k++) {
+            fan.org_x[k] = fan.org_y[k] = origin[k];
+            fan.dir_x[k] = diff->dir_dx[k];
+            fan.dir_y[k] = diff->dir_dy[k];
+        }
+    if (!sf.mesh->reflective) {
+        shade_direct(s, &sf, origin, origin, dir, &fan, 0, out);
+        return;
+    }
+    *reflective = 1;
+    float lit[3];
+    shade_direct(s, &sf, origin, origin, dir, &fan, 1, lit);
+    shade_reflective(s, &sf, origin, &fan, lit, samples, rng_key, out, stats);
+}
+
+int ref_scene_intersect(ref_scene *s, const float origin[3], const float dir[3], ref_hit *hit)
+{
+    if (!s || !origin || !dir || !hit) {
+        ref_fail(REF_ERR_INVALID_ARGUMENT, "ref_scene_intersect: missing argument");
+        return 0;
+    }
+    if (ref_scene_commit(s) != REF_OK)
+        return 0;
+    float d[3] = {dir[0], dir[1], dir[2]};
+    float len = sqrtf(ref_dot(d, d));
+    if (!(len > 0.0f) || !isfinite(len))
+        return 0;
+    for (int k = 0; k < 3; k++)
+        d[k] /= len;
+    surface sf;
+    if (!intersect(s, origin, d, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0, &sf,
+                   NULL))
+        return 0;
+    hit->t = sf.t;
+    memcpy(hit->position, sf.p, sizeof hit->position);
+    memcpy(hit->normal, sf.n, sizeof hit->normal);
+    memcpy(hit->uv, sf.uv, sizeof hit->uv);
+    hit->mesh = (int)sf.geom;
+    hit->triangle = (int)sf.prim;
+    hit->front = sf.front;
+    return 1;
+}
+
+ref_result ref_trace_ray(ref_scene *s, const float origin[3], const float dir[3], int samples,
+                         uint32_t seed, float out[3])
+{
+    if (!s || !origin || !dir || !out)
+        return ref_fail(REF_ERR_INVALID_ARGUMENT, "ref_trace_ray: missing argument");
+    if (samples < 0)
+        return ref_fail(REF_ERR_INVALID_ARGUMENT, "ref_trace_ray: samples %d < 0", samples);
+    ref_result r = ref_scene_commit(s);
+    if (r != REF_OK)
+        return r;
+    float d[3] = {dir[0], dir[1], dir[2]};
+    float len = sqrtf(ref_dot(d, d));
+    if (!(len > 0.0f) || !isfinite(len))
+        return ref_fail(REF_ERR_INVALID_ARGUMENT, "ref_trace_ray: direction is zero");
+    for (int k = 0; k < 3; k++)
+        d[k] /= len;
+    int reflective;
+    ref_trace_primary(s, origin, d, NULL, samples ? samples : 64, mix64(seed), out, &reflective,
+                      NULL);
+    return REF_OK;
+}
