@@ -440,9 +440,8 @@ static void test_blend(void)
                     int same = 1;
                     for (int ch = 0; ch < 3; ch++)
                         same &= out[ch] == want[ch] || (isnan(out[ch]) && isnan(want[ch]));
-                    CHECK_MSG(same,
-                              "mode %d lit %d emissive %d kr %g: not max(emissive, lit)", m, l, e,
-                              krs[k]);
+                    CHECK_MSG(same, "mode %d lit %d emissive %d kr %g: not max(emissive, lit)", m,
+                              l, e, krs[k]);
                 }
 
     /* Fresnel: f0 at N.V = 1, 1 at N.V = 0 and below, finite everywhere. */
