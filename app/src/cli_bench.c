@@ -33,7 +33,7 @@ int app_cli_bench(int argc, char **argv)
 {
     cli_options o = {.frames = 30, .warmup = 5};
     int rc = cli_parse(argc, argv, 2, "bench",
-                       "camera size frames warmup backend csv probes blur ambient", &o);
+                       "camera size frames warmup backend csv probes blur ambient quality", &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project) {

@@ -1,5 +1,7 @@
 #include "cli_options.h"
 
+#include "app/quality.h"
+
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -101,6 +103,8 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             o->camera = v;
         else if (!strcmp(name, "csv"))
             o->csv = v;
+        else if (!strcmp(name, "quality"))
+            ok = (o->quality = app_quality_find(v)) != NULL;
         else if (!strcmp(name, "plot"))
             o->plot = v;
         else if (!strcmp(name, "animate"))
@@ -132,6 +136,7 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
                         ? " (expected every-frame, once, on-change or time-sliced)"
                     : !strcmp(name, "blur")    ? " (expected prefiltered, box-mips or reference)"
                     : !strcmp(name, "ambient") ? " (expected constant or sh9)"
+                    : !strcmp(name, "quality") ? " (expected draft, interactive, final or print)"
                                                : "");
             return CLI_USAGE;
         }

@@ -8,7 +8,7 @@ int app_cli_render(int argc, char **argv)
 {
     cli_options o = {0};
     int rc = cli_parse(argc, argv, 2, "render",
-                       "output camera size supersample backend probes blur ambient", &o);
+                       "output camera size supersample backend probes blur ambient quality", &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project || !o.output) {

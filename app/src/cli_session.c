@@ -1,5 +1,6 @@
 #include "cli_options.h"
 
+#include "app/quality.h"
 #include "render/image_io.h"
 
 #include <errno.h>
@@ -57,6 +58,9 @@ int cli_session_open(const cli_options *o, cli_session *s)
         cli_session_close(s);
         return r == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
     }
+    /* A preset first, so that explicit --probes/--blur/--ambient refine it. */
+    if (o->quality)
+        app_quality_apply(o->quality, s->scene.scene);
     if (o->probes || o->blur || o->ambient) {
         rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
         if (o->ambient)
@@ -88,6 +92,8 @@ int cli_session_view(const cli_session *s, const cli_options *o, const char *cam
         fprintf(stderr, "tessera: %s\n", err);
         return CLI_USAGE;
     }
+    if (o->quality)
+        out->supersample = o->quality->supersample;
     if (o->supersample)
         out->supersample = o->supersample;
     return CLI_OK;
