@@ -260,6 +260,7 @@ int app_cli_sweep(int argc, char **argv)
             if (points[i].on_front)
                 printf("  %-11s %-11s %8.2f ms  %6.2f dB\n", points[i].factor, points[i].label,
                        points[i].ms, points[i].psnr);
+        fflush(stdout);
         if (o.plot) {
             char title[512];
             snprintf(title, sizeof title, "%s, %dx%d, %s: reference %d samples", s.project.name,
