@@ -107,6 +107,8 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             ok = (o->quality = app_quality_find(v)) != NULL;
         else if (!strcmp(name, "plot"))
             o->plot = v;
+        else if (!strcmp(name, "markdown"))
+            o->markdown = v;
         else if (!strcmp(name, "animate"))
             o->animate = v;
         else if (!strcmp(name, "samples"))

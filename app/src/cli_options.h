@@ -13,9 +13,10 @@ typedef struct cli_options {
     const char *output;
     const char *camera;
     const char *csv;
-    const char *plot;    /* --plot: a PNG of the sweep */
-    const char *animate; /* --animate: the object the sweep moves */
-    int samples;         /* --samples: Monte-Carlo rays per glossy lookup (reference) */
+    const char *plot;     /* --plot: a PNG of the sweep */
+    const char *markdown; /* --markdown: the sweep's table */
+    const char *animate;  /* --animate: the object the sweep moves */
+    int samples;          /* --samples: Monte-Carlo rays per glossy lookup (reference) */
     const struct app_quality *quality; /* --quality: a preset (app/quality.h) */
     int width, height;
     int supersample;

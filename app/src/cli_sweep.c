@@ -5,6 +5,7 @@
 #include "app/cli.h"
 #include "app/cli_ref.h"
 #include "app/image_compare.h"
+#include "app/quality.h"
 #include "app/ref_scene_build.h"
 #include "app/stats.h"
 #include "app/sweep_plot.h"
@@ -25,15 +26,18 @@ typedef struct sweep_setting {
     int every_n; /* 1 every frame, N every N-th, 0 once (static), -1 time-sliced */
     int per_vertex;
     rd_ambient_model ambient;
+    int max_resolution; /* cap of auto; 0 = the renderer's */
+    int supersample;    /* 1 = none (the reference is traced at the same) */
 } sweep_setting;
 
-enum { SETTINGS = 18 };
+enum { FACTOR_SETTINGS = 18, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
 
 /* The baseline is what the renderer does by default; every other setting changes one factor. */
 static void make_settings(sweep_setting out[SETTINGS])
 {
-    const sweep_setting base = {"baseline",          "auto", 0, RD_CORRECTION_BOX,
-                                RD_BLUR_PREFILTERED, 1,      0, RD_AMBIENT_CONSTANT};
+    const sweep_setting base = {
+        "baseline",          "auto", 0, RD_CORRECTION_BOX, RD_BLUR_PREFILTERED, 1, 0,
+        RD_AMBIENT_CONSTANT, 0,      1};
     static const char *const res_labels[7] = {"16", "32", "64", "128", "256", "512", "1024"};
     int k = 0;
     out[k++] = base;
@@ -65,6 +69,21 @@ static void make_settings(sweep_setting out[SETTINGS])
     out[15].every_n = -1; /* time-sliced */
     out[16].per_vertex = 1;
     out[17].ambient = RD_AMBIENT_SH9;
+    /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
+     * against a reference traced with the same. */
+    static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
+    for (int i = 0; i < PRESETS; i++) {
+        const app_quality *q = app_quality_find(presets[i]);
+        sweep_setting *st = &out[FACTOR_SETTINGS + i];
+        *st = base;
+        st->factor = "preset";
+        st->label = q->name;
+        st->resolution = q->resolution;
+        st->blur = q->blur;
+        st->every_n = q->update == RD_PROBE_ONCE ? 0 : q->update == RD_PROBE_TIME_SLICED ? -1 : 1;
+        st->max_resolution = q->max_resolution;
+        st->supersample = q->supersample;
+    }
 }
 
 /* Frames run before the measured one. A moving object slides in a straight line and arrives
@@ -86,6 +105,7 @@ static void apply(rd_scene *scene, const rd_reflection_defaults *base, const swe
     d.every_n = s->every_n > 0 ? s->every_n : 0;
     d.per_vertex = s->per_vertex;
     d.ambient = s->ambient;
+    d.max_resolution = s->max_resolution;
     rd_scene_set_reflection_defaults(scene, &d);
 }
 
@@ -123,11 +143,34 @@ static void place(cli_session *s, int object, const float (*rest)[16], float off
     }
 }
 
+typedef struct sweep_row {
+    double ms_mean, ms_median, psnr_all, psnr_reflective, rmse_reflective;
+} sweep_row;
+
+/* The table as Markdown, the front in bold (issue 4: a CSV, a Markdown table and a plot). */
+static int write_markdown(const char *path, const app_sweep_point *p, const sweep_row *r, int n)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        perror(path);
+        return -1;
+    }
+    fprintf(f, "| factor | setting | ms mean | ms median | PSNR all (dB) | PSNR reflective (dB) "
+               "| RMSE reflective |\n|---|---|---|---|---|---|---|\n");
+    for (int i = 0; i < n; i++)
+        fprintf(f, "| %s | %s%s%s | %.1f | %.1f | %.2f | %s%.2f%s | %.4f |\n", p[i].factor,
+                p[i].on_front ? "**" : "", p[i].label, p[i].on_front ? "**" : "", r[i].ms_mean,
+                r[i].ms_median, r[i].psnr_all, p[i].on_front ? "**" : "", r[i].psnr_reflective,
+                p[i].on_front ? "**" : "", r[i].rmse_reflective);
+    fprintf(f, "\nBold: the Pareto front (no other setting is both faster and more accurate).\n");
+    return fclose(f) == 0 ? 0 : -1;
+}
+
 int app_cli_sweep(int argc, char **argv)
 {
     cli_options o = {.frames = 6, .warmup = 2};
     int rc = cli_parse(argc, argv, 2, "sweep",
-                       "camera size frames warmup backend csv samples plot animate", &o);
+                       "camera size frames warmup backend csv samples plot animate markdown", &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project) {
@@ -150,16 +193,8 @@ int app_cli_sweep(int argc, char **argv)
         rc = CLI_FAILED;
     }
     /* The ground truth of the project as it stands (the moving object at rest). */
-    ref_image truth = {0};
-    if (rc == CLI_OK) {
-        fprintf(stderr, "tessera sweep: reference %dx%d, %d samples per glossy lookup\n",
-                view.width, view.height, o.samples ? o.samples : 64);
-        ref_render_desc rdesc = {.view = view, .samples = o.samples, .seed = 1, .progress = 1};
-        if (ref_render(ref, &rdesc, &truth) != REF_OK) {
-            fprintf(stderr, "tessera sweep: %s\n", ref_last_error());
-            rc = CLI_FAILED;
-        }
-    }
+    /* The ground truth per supersampling (the presets use their own), traced on first use. */
+    ref_image truth[5] = {{0}};
     size_t n = (size_t)view.width * (size_t)view.height;
     float *image = malloc(n * 4 * sizeof *image), *mask = malloc(n * sizeof *mask);
     float(*rest)[16] = NULL;
@@ -172,8 +207,6 @@ int app_cli_sweep(int argc, char **argv)
         rc = CLI_USAGE;
     }
     if (rc == CLI_OK) {
-        for (size_t i = 0; i < n; i++)
-            mask[i] = truth.mask[i] ? 1.0f : 0.0f;
         int parts = s.scene.object_parts[moving][1];
         rest = calloc((size_t)(parts ? parts : 1), sizeof *rest);
         for (int k = 0; rest && k < parts; k++) {
@@ -194,6 +227,7 @@ int app_cli_sweep(int argc, char **argv)
         fprintf(csv, "factor,setting,ms_mean,ms_median,rmse_all,psnr_all,rmse_reflective,"
                      "psnr_reflective,reflective_pixels\n");
     app_sweep_point points[SETTINGS];
+    sweep_row rows[SETTINGS];
     int count = 0;
     rd_reflection_defaults base = rd_scene_reflection_defaults(s.scene.scene);
     sweep_setting settings[SETTINGS];
@@ -204,6 +238,25 @@ int app_cli_sweep(int argc, char **argv)
     for (int k = 0; rc == CLI_OK && k < SETTINGS; k++) {
         const sweep_setting *st = &settings[k];
         apply(s.scene.scene, &base, st);
+        rd_view view_k = view;
+        view_k.supersample = st->supersample;
+        ref_image *tr = &truth[st->supersample];
+        if (!tr->linear) {
+            fprintf(stderr,
+                    "\rtessera sweep: reference %dx%d, %dx%d supersampling, %d samples "
+                    "per glossy lookup\n",
+                    view.width, view.height, st->supersample, st->supersample,
+                    o.samples ? o.samples : 64);
+            ref_render_desc rdesc = {
+                .view = view_k, .samples = o.samples, .seed = 1, .progress = 1};
+            if (ref_render(ref, &rdesc, tr) != REF_OK) {
+                fprintf(stderr, "tessera sweep: %s\n", ref_last_error());
+                rc = CLI_FAILED;
+                break;
+            }
+        }
+        for (size_t i = 0; i < n; i++)
+            mask[i] = tr->mask[i] ? 1.0f : 0.0f;
         /* The update policies are measured with the object moving over ANIMATION_FRAMES; the
          * other factors, whose cost does not depend on motion, over warm-up + frames with
          * the probes updated every frame. */
@@ -218,7 +271,7 @@ int app_cli_sweep(int argc, char **argv)
             place(&s, moving, (const float(*)[16])rest,
                   animated ? (float)(f - (frames - 1)) * SLIDE_PER_FRAME_M : 0.0f);
             double t0 = cli_now_ms();
-            if (rd_render(s.ctx, s.scene.scene, &view) != RD_OK) {
+            if (rd_render(s.ctx, s.scene.scene, &view_k) != RD_OK) {
                 fprintf(stderr, "tessera sweep: %s\n", rd_last_error());
                 rc = CLI_FAILED;
                 break;
@@ -228,8 +281,8 @@ int app_cli_sweep(int argc, char **argv)
         }
         app_image_metrics all = {0}, refl = {0};
         if (rc == CLI_OK && rd_read_linear(s.ctx, image, n * 4) == RD_OK) {
-            app_image_metrics_compute(image, truth.linear, view.width, view.height, NULL, &all);
-            app_image_metrics_compute(image, truth.linear, view.width, view.height, mask, &refl);
+            app_image_metrics_compute(image, tr->linear, view.width, view.height, NULL, &all);
+            app_image_metrics_compute(image, tr->linear, view.width, view.height, mask, &refl);
         }
         /* Timing: the last frames (the first ones of a setting build its probes and shaders);
          * the mean, since every-N policies put their work on one frame in N. */
@@ -241,6 +294,7 @@ int app_cli_sweep(int argc, char **argv)
         double mean = sum / (double)(frames - from);
         double median = app_stats_of(t + from, frames - from).median;
         free(t);
+        rows[count] = (sweep_row){mean, median, all.psnr, refl.psnr, refl.rmse};
         points[count++] = (app_sweep_point){st->factor, st->label, mean, refl.psnr, 0};
         printf("%-11s %-11s %9.2f %9.2f %9.2f %9.2f %9.5f\n", st->factor, st->label, mean, median,
                all.psnr, refl.psnr, refl.rmse);
@@ -255,6 +309,8 @@ int app_cli_sweep(int argc, char **argv)
         fclose(csv);
     if (rc == CLI_OK) {
         app_sweep_mark_front(points, count);
+        if (o.markdown && write_markdown(o.markdown, points, rows, count) != 0)
+            rc = CLI_FAILED;
         printf("\nPareto front (faster or more accurate than every other setting):\n");
         for (int i = 0; i < count; i++)
             if (points[i].on_front)
@@ -277,7 +333,8 @@ int app_cli_sweep(int argc, char **argv)
     free(rest);
     free(image);
     free(mask);
-    ref_image_free(&truth);
+    for (int i = 0; i < 5; i++)
+        ref_image_free(&truth[i]);
     ref_scene_destroy(ref);
     cli_session_close(&s);
     return rc;
