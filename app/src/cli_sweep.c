@@ -27,17 +27,22 @@ typedef struct sweep_setting {
     int per_vertex;
     rd_ambient_model ambient;
     int max_resolution; /* cap of auto; 0 = the renderer's */
+    int no_specular;    /* probes capture without highlights */
     int supersample;    /* 1 = none (the reference is traced at the same) */
 } sweep_setting;
 
-enum { FACTOR_SETTINGS = 18, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
+enum { FACTOR_SETTINGS = 19, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
 
 /* The baseline is what the renderer does by default; every other setting changes one factor. */
 static void make_settings(sweep_setting out[SETTINGS])
 {
-    const sweep_setting base = {
-        "baseline",          "auto", 0, RD_CORRECTION_BOX, RD_BLUR_PREFILTERED, 1, 0,
-        RD_AMBIENT_CONSTANT, 0,      1};
+    const sweep_setting base = {.factor = "baseline",
+                                .label = "auto",
+                                .correction = RD_CORRECTION_BOX,
+                                .blur = RD_BLUR_PREFILTERED,
+                                .every_n = 1,
+                                .ambient = RD_AMBIENT_CONSTANT,
+                                .supersample = 1};
     static const char *const res_labels[7] = {"16", "32", "64", "128", "256", "512", "1024"};
     int k = 0;
     out[k++] = base;
@@ -69,6 +74,10 @@ static void make_settings(sweep_setting out[SETTINGS])
     out[15].every_n = -1; /* time-sliced */
     out[16].per_vertex = 1;
     out[17].ambient = RD_AMBIENT_SH9;
+    out[18] = base;
+    out[18].factor = "highlights";
+    out[18].label = "not in probes";
+    out[18].no_specular = 1;
     /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
      * against a reference traced with the same. */
     static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
@@ -106,6 +115,7 @@ static void apply(rd_scene *scene, const rd_reflection_defaults *base, const swe
     d.per_vertex = s->per_vertex;
     d.ambient = s->ambient;
     d.max_resolution = s->max_resolution;
+    d.probe_no_specular = s->no_specular;
     rd_scene_set_reflection_defaults(scene, &d);
 }
 

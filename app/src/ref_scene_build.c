@@ -116,81 +116,29 @@ static app_result material_of(const app_project *p, ref_scene *s, texture_cache 
     return APP_OK;
 }
 
-/* scene_room.c's rectangle: origin, u and v axes (metres), normal u x v into the room. */
-typedef struct quad {
-    float origin[3], u_axis[3], v_axis[3];
-    float u_len, v_len;
-} quad;
-
-static app_result add_quad(ref_scene *s, const quad *q, const float tex_size_m[2],
-                           const rd_material *m, int texture)
-{
-    float pos[12], nrm[12], uv[8];
-    float n[3] = {q->u_axis[1] * q->v_axis[2] - q->u_axis[2] * q->v_axis[1],
-                  q->u_axis[2] * q->v_axis[0] - q->u_axis[0] * q->v_axis[2],
-                  q->u_axis[0] * q->v_axis[1] - q->u_axis[1] * q->v_axis[0]};
-    for (int c = 0; c < 4; c++) {
-        float su = (float)(c & 1), sv = (float)(c >> 1);
-        for (int k = 0; k < 3; k++) {
-            pos[c * 3 + k] =
-                q->origin[k] + su * q->u_len * q->u_axis[k] + sv * q->v_len * q->v_axis[k];
-            nrm[c * 3 + k] = n[k];
-        }
-        uv[c * 2] = su * q->u_len / tex_size_m[0];
-        uv[c * 2 + 1] = -sv * q->v_len / tex_size_m[1]; /* image rows run down, v runs up */
-    }
-    static const uint32_t idx[6] = {0, 1, 3, 0, 3, 2};
-    ref_mesh_desc d = {.positions = pos,
-                       .normals = nrm,
-                       .uvs = uv,
-                       .indices = idx,
-                       .vertex_count = 4,
-                       .index_count = 6,
-                       .material = *m,
-                       .texture = texture};
-    return ref_scene_add_mesh(s, &d) == REF_OK ? APP_OK : APP_ERR_OUT_OF_MEMORY;
-}
-
-/* app_scene_add_room: six inward rectangles, closed (back faces culled). */
+/* app_scene_add_room's rectangles (app_room_surface: the same geometry for both renderers),
+ * closed (back faces culled). */
 static app_result add_room(const app_project *p, ref_scene *s, texture_cache *c, char *err,
                            size_t err_size)
 {
-    float w = (float)(p->room.width_mm * 1e-3), d = (float)(p->room.depth_mm * 1e-3),
-          h = (float)(p->room.height_mm * 1e-3);
-    const quad quads[6] = {
-        {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, w, d},  /* floor, normal +Z */
-        {{0, d, h}, {1, 0, 0}, {0, -1, 0}, w, d}, /* ceiling, normal -Z */
-        {{0, 0, 0}, {0, 0, 1}, {1, 0, 0}, h, w},  /* wall y = 0, normal +Y (u up, v along) */
-        {{w, d, 0}, {0, 0, 1}, {-1, 0, 0}, h, w}, /* wall y = d, normal -Y */
-        {{0, d, 0}, {0, 0, 1}, {0, -1, 0}, h, d}, /* wall x = 0, normal +X */
-        {{w, 0, 0}, {0, 0, 1}, {0, 1, 0}, h, d},  /* wall x = w, normal -X */
-    };
     for (int i = 0; i < 6; i++) {
-        int mi = i == 0   ? p->room.floor_material
-                 : i == 1 ? p->room.ceiling_material
-                          : p->room.wall_material;
-        const app_material *am = &p->materials[mi];
+        app_room_quad q;
+        int mi;
+        app_room_surface(p, i, &q, &mi);
         rd_material m;
         int texture;
         app_result r = material_of(p, s, c, mi, &m, &texture, err, err_size);
         if (r != APP_OK)
             return r;
-        float tex[2] = {am->texture_size_mm[0] * 1e-3f, am->texture_size_mm[1] * 1e-3f};
-        quad q = quads[i];
-        if (i >= 2) {
-            /* Walls: u along the wall, v up it, same normal (scene_room.c). */
-            quad t = q;
-            memcpy(t.u_axis, q.v_axis, sizeof t.u_axis);
-            memcpy(t.v_axis, q.u_axis, sizeof t.v_axis);
-            t.u_len = q.v_len;
-            t.v_len = q.u_len;
-            for (int k = 0; k < 3; k++) {
-                t.origin[k] = q.origin[k] + q.v_len * q.v_axis[k];
-                t.u_axis[k] = -q.v_axis[k];
-            }
-            q = t;
-        }
-        if (add_quad(s, &q, tex, &m, texture) != APP_OK) {
+        ref_mesh_desc d = {.positions = q.positions,
+                           .normals = q.normals,
+                           .uvs = q.uvs,
+                           .indices = q.indices,
+                           .vertex_count = 4,
+                           .index_count = 6,
+                           .material = m,
+                           .texture = texture};
+        if (ref_scene_add_mesh(s, &d) != REF_OK) {
             char where[1100];
             snprintf(where, sizeof where, "%s: room surface %d", p->path, i);
             return ref_error(APP_ERR_OUT_OF_MEMORY, where, err, err_size);

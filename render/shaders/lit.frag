@@ -7,6 +7,7 @@ in vec2 v_uv;
 
 uniform vec3 u_eye;
 uniform vec3 u_ambient_light; // I_a
+uniform float u_specular_scale; // 1; 0 in probe captures that leave highlights out
 uniform int u_ambient_model;  // 0 constant I_a, 1 SH9 irradiance (section 7)
 uniform vec3 u_sh[9];         // L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (world, Z up)
 
@@ -120,7 +121,8 @@ void main()
             continue; // no diffuse and no specular from behind the surface
         vec3 H = normalize(L + V);
         lit += k * c_d * u_light_diffuse[i] * n_dot_l;                                      // eq. 2
-        lit += k * u_mat_specular * u_light_specular[i] * blinn_phong_power(dot(N, H), u_mat_shininess); // eq. 3-5
+        lit += u_specular_scale * k * u_mat_specular * u_light_specular[i] *
+               blinn_phong_power(dot(N, H), u_mat_shininess); // eq. 3-5
     }
 #ifdef HAS_REFLECTION
     // Sections 2-6: R = I - 2 (N.I) N with I = -V; the lookup starts at the capture centre.

@@ -1,6 +1,7 @@
 /* View and projection matrices for an rd_view, with near/far fitted to the scene so that
  * scenes from 1 mm to 10 km keep usable depth precision (RENDERING.md section 11). */
 #include "camera.h"
+#include "probe.h"
 #include "render_internal.h"
 
 #include <cglm/cglm.h>
@@ -14,20 +15,11 @@ static void world_bounds(const rd_context *ctx, const rd_scene_view_input *in, f
         hi[k] = -INFINITY;
     }
     for (int i = 0; i < in->object_count; i++) {
-        const rd_object_desc *o = &in->objects[i];
-        const rd_mesh_slot *m = rd_mesh_lookup((rd_context *)ctx, o->mesh);
-        if (!m)
-            continue;
-        for (int c = 0; c < 8; c++) {
-            vec4 p = {c & 1 ? m->bounds_max[0] : m->bounds_min[0],
-                      c & 2 ? m->bounds_max[1] : m->bounds_min[1],
-                      c & 4 ? m->bounds_max[2] : m->bounds_min[2], 1.0f};
-            vec4 w;
-            glm_mat4_mulv((vec4 *)o->transform, p, w);
-            for (int k = 0; k < 3; k++) {
-                lo[k] = fminf(lo[k], w[k]);
-                hi[k] = fmaxf(hi[k], w[k]);
-            }
+        float a[3], b[3];
+        rd_object_world_bounds((rd_context *)ctx, &in->objects[i], a, b);
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fminf(lo[k], a[k]);
+            hi[k] = fmaxf(hi[k], b[k]);
         }
     }
 }

@@ -40,6 +40,7 @@ void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float v
     }
     glUniform1i(p->u_diffuse_texture, 0);
     glUniform1i(p->u_ambient_model, (int)s->reflection.ambient);
+    glUniform1f(p->u_specular_scale, 1.0f);
     if (s->reflection.ambient == RD_AMBIENT_SH9)
         glUniform3fv(p->u_sh, 9, &s->sh9[0][0]);
 }
@@ -199,6 +200,10 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
         }
         if (!frame_uniforms_set[variant]) {
             rd_set_frame_uniforms(p, scene, pass->view_proj, pass->eye);
+            /* A highlight depends on where it is seen from; a probe sees from its centre, not
+             * from the reflecting surface, so it may leave highlights out (section 8). */
+            if (pass->specular_off)
+                glUniform1f(p->u_specular_scale, 0.0f);
             frame_uniforms_set[variant] = 1;
         } else {
             glUseProgram(p->id);

@@ -12,6 +12,7 @@ typedef struct rd_pass {
     int exclude_key;        /* objects of this probe key are left out (a probe's owner); 0 = none */
     int reflections;        /* 1: reflective objects use their probes; 0: drawn plain (in probes) */
     float min_solid_radius; /* skip objects whose radius / distance is below this; 0 = none */
+    int specular_off;       /* draw without the Blinn-Phong highlight term */
 } rd_pass;
 
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);

@@ -324,7 +324,8 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
                                       .eye = p->centre,
                                       .exclude_key = p->key,
                                       .reflections = 0,
-                                      .min_solid_radius = 0.25f / (float)p->size});
+                                      .min_solid_radius = 0.25f / (float)p->size,
+                                      .specular_off = s->reflection.probe_no_specular});
 }
 
 /* Which faces this frame's policy captures (a bit each). */

@@ -104,6 +104,7 @@ static void locate_lit(rd_program *p)
     p->u_diffuse_texture = glGetUniformLocation(id, "u_diffuse_texture");
     p->u_uv_scale = glGetUniformLocation(id, "u_uv_scale");
     p->u_ambient_model = glGetUniformLocation(id, "u_ambient_model");
+    p->u_specular_scale = glGetUniformLocation(id, "u_specular_scale");
     p->u_sphere_map = glGetUniformLocation(id, "u_sphere_map");
     p->u_view_rot = glGetUniformLocation(id, "u_view_rot");
     p->u_sh = glGetUniformLocation(id, "u_sh");

@@ -233,11 +233,12 @@ typedef struct rd_reflection_defaults {
     rd_blur_method blur;      /* DEFAULT = prefiltered */
     rd_probe_update update;   /* DEFAULT = every frame */
     int every_n;
-    int resolution;                   /* 0 = auto */
-    int max_resolution;               /* cap for auto; 0 = 256 (stills raise it: print quality) */
-    float hdr_clamp;                  /* radiance clamp before blurring; 0 = 64 */
-    rd_ambient_model ambient;         /* RENDERING.md section 7 */
-    int per_vertex;                   /* 1: every reflective object per vertex (seed 003) */
+    int resolution;           /* 0 = auto */
+    int max_resolution;       /* cap for auto; 0 = 256 (stills raise it: print quality) */
+    float hdr_clamp;          /* radiance clamp before blurring; 0 = 64 */
+    rd_ambient_model ambient; /* RENDERING.md section 7 */
+    int per_vertex;           /* 1: every reflective object per vertex (seed 003) */
+    int probe_no_specular;    /* 1: captures leave highlights out (they are view-dependent) */
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
