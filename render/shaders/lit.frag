@@ -8,8 +8,11 @@ in vec2 v_uv;
 uniform vec3 u_eye;
 uniform vec3 u_ambient_light; // I_a
 uniform float u_specular_scale; // 1; 0 in probe captures that leave highlights out
-uniform int u_ambient_model;  // 0 constant I_a, 1 SH9 irradiance (section 7)
-uniform vec3 u_sh[9];         // L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (world, Z up)
+#ifdef SH9_AMBIENT
+// A variant of its own: even behind a uniform branch llvmpipe pays for the SH code on every
+// pixel, so the constant model's programs do not contain it (section 8).
+uniform vec3 u_sh[9]; // L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (world, Z up)
+#endif
 
 uniform int u_light_count;
 uniform int u_light_type[MAX_LIGHTS]; // 0 point, 1 spot, 2 directional
@@ -52,6 +55,7 @@ uniform int u_thin; // a double-sided sheet: light passes straight through
 
 out vec4 frag_color;
 
+#ifdef SH9_AMBIENT
 // Irradiance from nine SH coefficients, Ramamoorthi and Hanrahan 2001 eq. 13, with their
 // c5 = 0.247708 (seed 001 misprints it as 0.429043). CPU twin: rd_ref_sh9_irradiance.
 vec3 sh9_irradiance(vec3 n)
@@ -61,6 +65,7 @@ vec3 sh9_irradiance(vec3 n)
            c5 * u_sh[6] + 2.0 * c1 * (u_sh[4] * n.x * n.y + u_sh[7] * n.x * n.z + u_sh[5] * n.y * n.z) +
            2.0 * c2 * (u_sh[3] * n.x + u_sh[1] * n.y + u_sh[2] * n.z);
 }
+#endif
 
 // max(N.H, 0)^n with pow(0, 0) and n = 0 defined as 1 and n up to 1e6 finite (section 1).
 float blinn_phong_power(float n_dot_h, float n)
@@ -100,8 +105,11 @@ void main()
     vec3 c_d = u_mat_diffuse * albedo_scale;
 
     // eq. 1; with SH9 the ambient intensity is the irradiance over pi (a Lambertian surface)
-    vec3 lit = c_a * (u_ambient_model == 1 ? max(sh9_irradiance(N), vec3(0.0)) / 3.14159265
-                                           : u_ambient_light);
+#ifdef SH9_AMBIENT
+    vec3 lit = c_a * max(sh9_irradiance(N), vec3(0.0)) / 3.14159265;
+#else
+    vec3 lit = c_a * u_ambient_light;
+#endif
     for (int i = 0; i < u_light_count; i++) {
         vec3 L;
         float k = 1.0;

@@ -39,7 +39,6 @@ void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float v
         glUniform2fv(p->u_light_spot, n, &spot[0][0]);
     }
     glUniform1i(p->u_diffuse_texture, 0);
-    glUniform1i(p->u_ambient_model, (int)s->reflection.ambient);
     glUniform1f(p->u_specular_scale, 1.0f);
     if (s->reflection.ambient == RD_AMBIENT_SH9)
         glUniform3fv(p->u_sh, 9, &s->sh9[0][0]);
@@ -187,6 +186,7 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
                 probe = NULL; /* nothing captured yet: drawn plain this frame */
         }
         int variant = (t ? RD_LIT_TEXTURED : 0) | (probe ? RD_LIT_REFLECTING : 0) |
+                      (scene->reflection.ambient == RD_AMBIENT_SH9 ? RD_LIT_SH9 : 0) |
                       (probe && (o->material.per_vertex_reflection || scene->reflection.per_vertex)
                            ? RD_LIT_PER_VERTEX
                            : 0) |

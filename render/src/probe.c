@@ -242,7 +242,10 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
         if (n > gloss_cap)
             n = gloss_cap;
     }
-    return n < 8 ? 8 : n > cap ? cap : n;
+    /* Below 64 texels a face costs about the same (the capture is its fixed overhead:
+     * tessera probe-bench), while bright surroundings bleed across its coarse texels: 64 is
+     * the floor (docs/accuracy.md). */
+    return n < 64 ? (cap < 64 ? cap : 64) : n > cap ? cap : n;
 }
 
 int rd_level_count(int size)

@@ -103,7 +103,6 @@ static void locate_lit(rd_program *p)
     p->u_mat_shininess = glGetUniformLocation(id, "u_mat_shininess");
     p->u_diffuse_texture = glGetUniformLocation(id, "u_diffuse_texture");
     p->u_uv_scale = glGetUniformLocation(id, "u_uv_scale");
-    p->u_ambient_model = glGetUniformLocation(id, "u_ambient_model");
     p->u_specular_scale = glGetUniformLocation(id, "u_specular_scale");
     p->u_sphere_map = glGetUniformLocation(id, "u_sphere_map");
     p->u_view_rot = glGetUniformLocation(id, "u_view_rot");
@@ -131,12 +130,13 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
     int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
     int sphere = reflecting && (variant & RD_LIT_SPHERE_MAP);
-    char defines[224];
-    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s", RD_MAX_LIGHTS,
+    char defines[256];
+    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s", RD_MAX_LIGHTS,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
              per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "",
-             sphere ? "#define SPHERE_MAP 1\n" : "");
+             sphere ? "#define SPHERE_MAP 1\n" : "",
+             (variant & RD_LIT_SH9) ? "#define SH9_AMBIENT 1\n" : "");
     p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
                  reflecting ? "reflect.glsl lit.frag" : "lit.frag", defines);
     if (!p->id)

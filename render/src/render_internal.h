@@ -54,7 +54,7 @@ typedef struct rd_program {
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
     int u_diffuse_texture, u_uv_scale;
     int u_specular_scale;
-    int u_ambient_model, u_sh, u_sphere_map, u_view_rot;
+    int u_sh, u_sphere_map, u_view_rot;
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
         u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
 } rd_program;
@@ -65,7 +65,8 @@ enum {
     RD_LIT_REFLECTING = 2,
     RD_LIT_PER_VERTEX = 4,
     RD_LIT_SPHERE_MAP = 8,
-    RD_LIT_VARIANTS = 16
+    RD_LIT_SH9 = 16,
+    RD_LIT_VARIANTS = 32
 };
 
 struct rd_context {
