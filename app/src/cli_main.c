@@ -28,6 +28,8 @@ static void usage(FILE *f)
             "      RMSE and PSNR in linear RGB, over all pixels and the masked ones\n"
             "  tessera sweep PROJECT [--size WxH] [--samples N] [--csv FILE] [--plot FILE.png]\n"
             "      the speed/accuracy trade: each reflection setting timed and compared\n"
+            "  tessera extremes [--size WxH] [--samples N] [--markdown FILE]\n"
+            "      RENDERING.md section 11: every extreme finite on the GPU and in the reference\n"
             "  tessera catalog search|show|import|export|info|bench ... (tessera catalog --help)\n"
             "\n"
             "The OpenGL backend is EGL (Mesa surfaceless) unless --backend or TESSERA_GL says\n"
@@ -55,6 +57,8 @@ int app_cli_main(int argc, char **argv)
         return app_cli_compare(argc, argv);
     if (!strcmp(argv[1], "sweep"))
         return app_cli_sweep(argc, argv);
+    if (!strcmp(argv[1], "extremes"))
+        return app_cli_extremes(argc, argv);
     if (!strcmp(argv[1], "catalog"))
         return app_cli_catalog(argc, argv);
     if (!strcmp(argv[1], "--version")) {

@@ -13,6 +13,7 @@ int app_cli_demo(int argc, char **argv);
 int app_cli_bench(int argc, char **argv);
 int app_cli_probe_bench(int argc, char **argv);
 int app_cli_sweep(int argc, char **argv);
+int app_cli_extremes(int argc, char **argv);
 int app_cli_catalog(int argc, char **argv);
 
 #ifdef __cplusplus
