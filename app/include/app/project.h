@@ -11,6 +11,8 @@
 #ifndef APP_PROJECT_H
 #define APP_PROJECT_H
 
+#include "app/room.h"
+
 #include <stddef.h>
 
 #ifdef __cplusplus
@@ -96,6 +98,9 @@ typedef struct app_object {
     int material;           /* index into app_project.materials */
     char group[64];         /* parts of one fixture share a group name ("" = none): one
                                reflection probe for all of them, none of them in it */
+    int has_product;        /* version 2: 1 = a placed catalog product (app/room.h); its model,
+                               size and material come from the catalog */
+    app_product_ref product;
 } app_object;
 
 typedef enum app_light_type {
@@ -146,7 +151,10 @@ typedef struct app_project {
     char name[128];
     char path[1024]; /* the file it was read from, absolute ("" after app_project_parse
                         without a path) */
-    app_room room;
+    app_room room;      /* version 1 box; kept in step with plan's bounding box */
+    app_room_plan plan; /* version 2 floor plan (a v1 file migrates to 4 corners) */
+    app_tiling *tilings;
+    int tiling_count;
     app_material *materials;
     int material_count;
     app_object *objects;
