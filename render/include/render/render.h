@@ -296,6 +296,13 @@ rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *view)
 rd_result rd_read_rgba8(rd_context *ctx, uint8_t *out, size_t out_size);
 rd_result rd_read_linear(rd_context *ctx, float *out, size_t out_count);
 
+/* RD_BACKEND_ADOPT: draw the last render's tone-mapped image scaled to the caller's window
+ * (framebuffer 0) with linear filtering, and read the window back (RGBA, top row first) for
+ * screenshots that include the caller's own drawing on top. */
+rd_result rd_present(rd_context *ctx, int window_width, int window_height);
+rd_result rd_read_window_rgba8(rd_context *ctx, int width, int height, uint8_t *out,
+                               size_t out_size);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,35 @@
+#!/bin/sh
+# A planner session under Xvfb (issue 8): open the demo, orbit, walk, switch quality, take
+# screenshots; the app must exit 0 and every screenshot must show the room, not a blank or
+# single-colour window.  usage: session.sh TESSERA OUTDIR GOLDEN_TOOL
+set -e
+tessera=$1
+out=$2
+mkdir -p "$out"
+cat >"$out/session.txt" <<SCRIPT
+wait 2
+screenshot $out/open.png
+orbit 240 40 frames 20
+screenshot $out/orbit.png
+mode walk
+walk 600 0 frames 10
+walk 20000 0 frames 20
+screenshot $out/walk.png
+camera basin
+quality draft
+wait 3
+screenshot $out/draft.png
+quality print
+wait 1
+screenshot $out/print.png
+quit
+SCRIPT
+xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open --size 640x360 --script "$out/session.txt" \
+    --frame-log "$out/frames.csv"
+for shot in open orbit walk draft print; do
+    test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
+done
+# Each screenshot has many colours (a rendered room), and the orbit changed the picture.
+"$3" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/draft.png"
+"$3" "$out/draft.png" "$out/print.png"
+test "$(wc -l <"$out/frames.csv")" -gt 40 || { echo "FAIL: frame log too short"; exit 1; }

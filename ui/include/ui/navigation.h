@@ -1,0 +1,53 @@
+/* Moving the 3D view: orbit around a point, and walk through the room at eye height without
+ * passing through walls (issue 8, item 2). Pure math on app's room plan, no GL, no window:
+ * tested in tests/ui. Millimetres, Z up, angles in degrees. */
+#ifndef UI_NAVIGATION_H
+#define UI_NAVIGATION_H
+
+#include "app/room.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct ui_orbit {
+    double target[3];   /* the point looked at */
+    double distance_mm; /* from the target, clamped to [200, 50000] */
+    double yaw_deg;     /* about +Z, 0 = looking along +Y */
+    double pitch_deg;   /* above the horizon, clamped to [-85, 85] */
+} ui_orbit;
+
+typedef struct ui_walk {
+    double eye[3];    /* eye height in eye[2] */
+    double yaw_deg;   /* about +Z, 0 = looking along +Y */
+    double pitch_deg; /* clamped to [-80, 80] */
+} ui_walk;
+
+/* Body radius of the walker: how close the eye may come to a wall. */
+#define UI_WALK_RADIUS_MM 200.0
+
+/* An orbit that frames the plan's bounding box from its south-west, from above. */
+ui_orbit ui_orbit_framing(const app_room_plan *plan);
+void ui_orbit_eye(const ui_orbit *o, double eye[3]);
+/* Mouse drag in pixels: 0.3 degrees per pixel. */
+void ui_orbit_drag(ui_orbit *o, double dx_px, double dy_px);
+/* Wheel steps: each step 10 % closer (positive) or farther. */
+void ui_orbit_zoom(ui_orbit *o, double steps);
+
+/* A walker standing at the plan's centre (or its first interior point found) at 1600 mm. */
+ui_walk ui_walk_start(const app_room_plan *plan);
+void ui_walk_target(const ui_walk *w, double target[3]);
+void ui_walk_look(ui_walk *w, double dx_px, double dy_px);
+/* Moves forward/right (mm) in the walker's heading; the move is cut short or slid along the
+ * wall so the eye stays inside the plan polygon at least UI_WALK_RADIUS_MM from every wall.
+ * Door openings let the walker pass only if the plan continues there, which a single room
+ * does not: the room is closed. Returns 1 when the full move was made, 0 when blocked. */
+int ui_walk_move(ui_walk *w, const app_room_plan *plan, double forward_mm, double right_mm);
+
+/* 1 when (x, y) is inside the plan polygon and at least radius from each wall. */
+int ui_plan_point_free(const app_room_plan *plan, double x, double y, double radius);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,35 @@
+/* ui/: the interactive planner window (GLFW + Dear ImGui over app/ and render/; issue 8).
+ * ui draws app's state and sends app's commands; no planning logic lives here. */
+#ifndef UI_UI_H
+#define UI_UI_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct ui_options {
+    const char *project;   /* the project to open (NULL = the shipped demo) */
+    const char *script;    /* a file of UI actions to run, then quit (tests, measurements) */
+    const char *quality;   /* "draft", "interactive" (default), "final", "print" */
+    const char *frame_log; /* CSV of per-frame times, NULL = none */
+    int width, height;     /* window size; 0 = 1280 x 720 */
+    int fullscreen;
+} ui_options;
+
+/* 1 when a display is there to open a window on; otherwise 0 and why in `why`. */
+int ui_display_available(char *why, size_t why_size);
+
+/* Runs the planner until the window closes or the script ends. Returns the process exit code:
+ * 0 fine, 1 a failure (message on stderr), 2 bad options. */
+int ui_run(const ui_options *o);
+
+/* `tessera open [PROJECT] [--script FILE] [--quality Q] [--size WxH] [--fullscreen]
+ * [--frame-log FILE]` */
+int ui_cli_open(int argc, char **argv);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

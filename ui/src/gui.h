@@ -1,0 +1,46 @@
+/* The thin C seam over Dear ImGui (C++; ARCHITECTURE.md "the C/C++ seam"): the widgets the
+ * planner's panels use, nothing more. Implemented in gui_imgui.cpp with the GLFW and OpenGL 3
+ * backends that ship with Debian's libimgui-dev. Every function is a no-op returning 0 before
+ * ui_gui_init. */
+#ifndef UI_GUI_H
+#define UI_GUI_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+struct GLFWwindow;
+
+/* 0 on success; err gets the reason otherwise. */
+int ui_gui_init(struct GLFWwindow *window, char *err, size_t err_size);
+void ui_gui_shutdown(void);
+void ui_gui_new_frame(void);
+/* Draws the frame's widgets into the current framebuffer (after the 3D view). */
+void ui_gui_render(void);
+/* 1 when the pointer or the keyboard belong to a widget, not to the 3D view. */
+int ui_gui_wants_mouse(void);
+int ui_gui_wants_keyboard(void);
+
+/* A panel at a fixed place the first time it is shown. Always pair with ui_gui_end. */
+int ui_gui_begin(const char *title, float x, float y, float width, float height);
+void ui_gui_end(void);
+/* A borderless, input-transparent overlay (frame time, product card). */
+int ui_gui_begin_overlay(const char *id, float x, float y, float alpha);
+
+void ui_gui_text(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
+void ui_gui_separator(void);
+void ui_gui_same_line(void);
+int ui_gui_button(const char *label);
+int ui_gui_combo(const char *label, int *current, const char *const *items, int count);
+int ui_gui_slider_float(const char *label, float *value, float lo, float hi);
+int ui_gui_input_text(const char *label, char *buf, size_t size);
+int ui_gui_selectable(const char *label, int selected);
+void ui_gui_plot_lines(const char *label, const float *values, int count, float lo, float hi,
+                       float width, float height);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,159 @@
+// The C seam over Dear ImGui (ui/src/gui.h): widgets forwarded one to one, no logic here.
+#include "gui.h"
+
+#include <GLFW/glfw3.h>
+#include <cstdarg>
+#include <cstdio>
+#include <exception>
+
+#include "imgui.h"
+#include "backends/imgui_impl_glfw.h"
+#include "backends/imgui_impl_opengl3.h"
+
+static bool g_ready = false;
+
+extern "C" int ui_gui_init(GLFWwindow *window, char *err, size_t err_size)
+{
+    try {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGuiIO &io = ImGui::GetIO();
+        io.IniFilename = nullptr; // the planner keeps no imgui.ini next to the user's files
+        ImGui::StyleColorsDark();
+        if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) {
+            std::snprintf(err, err_size, "Dear ImGui: the GLFW backend failed to start");
+            ImGui::DestroyContext();
+            return 1;
+        }
+        if (!ImGui_ImplOpenGL3_Init("#version 330 core")) {
+            std::snprintf(err, err_size, "Dear ImGui: the OpenGL 3 backend failed to start");
+            ImGui_ImplGlfw_Shutdown();
+            ImGui::DestroyContext();
+            return 1;
+        }
+        g_ready = true;
+        return 0;
+    } catch (const std::exception &e) {
+        std::snprintf(err, err_size, "Dear ImGui: %s", e.what());
+        return 1;
+    }
+}
+
+extern "C" void ui_gui_shutdown(void)
+{
+    if (!g_ready)
+        return;
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+    g_ready = false;
+}
+
+extern "C" void ui_gui_new_frame(void)
+{
+    if (!g_ready)
+        return;
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+}
+
+extern "C" void ui_gui_render(void)
+{
+    if (!g_ready)
+        return;
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+extern "C" int ui_gui_wants_mouse(void)
+{
+    return g_ready && ImGui::GetIO().WantCaptureMouse;
+}
+
+extern "C" int ui_gui_wants_keyboard(void)
+{
+    return g_ready && ImGui::GetIO().WantCaptureKeyboard;
+}
+
+extern "C" int ui_gui_begin(const char *title, float x, float y, float width, float height)
+{
+    if (!g_ready)
+        return 0;
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_FirstUseEver);
+    return ImGui::Begin(title);
+}
+
+extern "C" void ui_gui_end(void)
+{
+    if (g_ready)
+        ImGui::End();
+}
+
+extern "C" int ui_gui_begin_overlay(const char *id, float x, float y, float alpha)
+{
+    if (!g_ready)
+        return 0;
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(alpha);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration |
+                                   ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoInputs |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    return ImGui::Begin(id, nullptr, flags);
+}
+
+extern "C" void ui_gui_text(const char *fmt, ...)
+{
+    if (!g_ready)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    ImGui::TextV(fmt, ap);
+    va_end(ap);
+}
+
+extern "C" void ui_gui_separator(void)
+{
+    if (g_ready)
+        ImGui::Separator();
+}
+
+extern "C" void ui_gui_same_line(void)
+{
+    if (g_ready)
+        ImGui::SameLine();
+}
+
+extern "C" int ui_gui_button(const char *label)
+{
+    return g_ready && ImGui::Button(label);
+}
+
+extern "C" int ui_gui_combo(const char *label, int *current, const char *const *items, int count)
+{
+    return g_ready && ImGui::Combo(label, current, items, count);
+}
+
+extern "C" int ui_gui_slider_float(const char *label, float *value, float lo, float hi)
+{
+    return g_ready && ImGui::SliderFloat(label, value, lo, hi);
+}
+
+extern "C" int ui_gui_input_text(const char *label, char *buf, size_t size)
+{
+    return g_ready && ImGui::InputText(label, buf, size);
+}
+
+extern "C" int ui_gui_selectable(const char *label, int selected)
+{
+    return g_ready && ImGui::Selectable(label, selected != 0);
+}
+
+extern "C" void ui_gui_plot_lines(const char *label, const float *values, int count, float lo,
+                                  float hi, float width, float height)
+{
+    if (g_ready)
+        ImGui::PlotLines(label, values, count, 0, nullptr, lo, hi, ImVec2(width, height));
+}

@@ -1,0 +1,13 @@
+/* The `tessera` program: the planner window with no arguments or `open`, the command line
+ * (app/src/cli_main.c) otherwise. */
+#include "app/cli.h"
+#include "ui/ui.h"
+
+#include <string.h>
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || !strcmp(argv[1], "open"))
+        return ui_cli_open(argc, argv);
+    return app_cli_main(argc, argv);
+}

@@ -1,0 +1,274 @@
+/* The planner window: GLFW makes the window and its OpenGL context, the renderer adopts that
+ * context, Dear ImGui draws the panels on top of the 3D view (issue 8). */
+#include "planner.h"
+
+#include "gui.h"
+
+#include <GLFW/glfw3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *const ui_quality_names[4] = {"draft", "interactive", "final", "print"};
+
+static void *gl_proc(const char *name)
+{
+    __extension__ void *p = (void *)glfwGetProcAddress(name);
+    return p;
+}
+
+static void glfw_error(int code, const char *text)
+{
+    fprintf(stderr, "tessera: window system error 0x%x: %s\n", code, text);
+}
+
+void planner_set_quality(planner *p, int index)
+{
+    if (index < 0 || index > 3)
+        return;
+    p->quality = index;
+    const app_quality *q = app_quality_find(ui_quality_names[index]);
+    if (q && p->scene_ready)
+        app_quality_apply(q, p->scene.scene);
+    /* Draft and interactive keep the frame budget by rendering fewer pixels; final and print
+     * show every pixel and take the time they need. */
+    p->adaptive_scale = index <= 1;
+    p->budget_ms = index == 0 ? 25.0f : 33.0f;
+    if (!p->adaptive_scale)
+        p->render_scale = 1.0f;
+}
+
+void planner_jump_to_camera(planner *p, int index)
+{
+    if (index < 0 || index >= p->project.camera_count)
+        return;
+    const app_camera *c = &p->project.cameras[index];
+    p->camera = index;
+    /* An orbit around the camera's target that reproduces the stored view exactly. */
+    double d[3] = {c->target_mm[0] - c->position_mm[0], c->target_mm[1] - c->position_mm[1],
+                   c->target_mm[2] - c->position_mm[2]};
+    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (len <= 0)
+        return;
+    p->mode = UI_MODE_ORBIT;
+    memcpy(p->orbit.target, c->target_mm, sizeof p->orbit.target);
+    p->orbit.distance_mm = len;
+    p->orbit.yaw_deg = atan2(d[0], d[1]) * 180.0 / 3.14159265358979323846;
+    p->orbit.pitch_deg = asin(-d[2] / len) * 180.0 / 3.14159265358979323846;
+}
+
+const app_room_plan *planner_plan(const planner *p, app_point2 box[4], app_room_plan *fallback)
+{
+    if (p->project.plan.corner_count >= 3)
+        return &p->project.plan;
+    /* Until a project carries its version 2 plan, its room box is the plan. */
+    const app_room *r = &p->project.room;
+    box[0] = (app_point2){0, 0};
+    box[1] = (app_point2){r->width_mm, 0};
+    box[2] = (app_point2){r->width_mm, r->depth_mm};
+    box[3] = (app_point2){0, r->depth_mm};
+    *fallback = (app_room_plan){.corners = box, .corner_count = 4, .height_mm = r->height_mm};
+    return fallback;
+}
+
+static void current_view(const planner *p, int width, int height, rd_view *v)
+{
+    double eye[3], target[3];
+    if (p->mode == UI_MODE_WALK) {
+        memcpy(eye, p->walk.eye, sizeof eye);
+        ui_walk_target(&p->walk, target);
+    } else {
+        ui_orbit_eye(&p->orbit, eye);
+        memcpy(target, p->orbit.target, sizeof target);
+    }
+    memset(v, 0, sizeof *v);
+    for (int k = 0; k < 3; k++) {
+        v->eye[k] = (float)(eye[k] * 1e-3);
+        v->target[k] = (float)(target[k] * 1e-3);
+    }
+    v->up[2] = 1;
+    v->fov_y_deg = p->camera >= 0 ? (float)p->project.cameras[p->camera].fov_deg : 60.0f;
+    v->width = width;
+    v->height = height;
+    v->exposure_ev = p->project.render.exposure_ev;
+    v->white = p->project.render.white;
+    const app_quality *q = app_quality_find(ui_quality_names[p->quality]);
+    v->supersample = q && q->supersample > 1 ? q->supersample : 1;
+}
+
+static int open_project(planner *p, const ui_options *o)
+{
+    char err[1024];
+    char demo[1024];
+    const char *path = o->project;
+    if (!path) {
+        snprintf(demo, sizeof demo, "%s/assets/projects/demo-bathroom.json", TESSERA_SOURCE_DIR);
+        path = demo;
+    }
+    if (app_project_read(path, &p->project, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return 1;
+    }
+    if (app_scene_build(p->ctx, &p->project, &p->scene, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return 1;
+    }
+    p->scene_ready = 1;
+    app_point2 box[4];
+    app_room_plan fallback;
+    const app_room_plan *plan = planner_plan(p, box, &fallback);
+    p->orbit = ui_orbit_framing(plan);
+    p->walk = ui_walk_start(plan);
+    p->camera = -1;
+    if (p->project.camera_count > 0)
+        planner_jump_to_camera(p, 0);
+    return 0;
+}
+
+/* Moves the render scale towards the frame budget: the 3D view is the frame's cost, and its
+ * cost is close to proportional to its pixels on llvmpipe. */
+static void adapt_scale(planner *p, float render_ms)
+{
+    if (!p->adaptive_scale || render_ms <= 0)
+        return;
+    float want = p->budget_ms * 0.8f; /* leave room for the panels and the swap */
+    float s = p->render_scale * sqrtf(want / render_ms);
+    s = p->render_scale + 0.3f * (s - p->render_scale); /* damped: no flicker */
+    p->render_scale = s < 0.35f ? 0.35f : s > 1.0f ? 1.0f : s;
+}
+
+static int frame(planner *p)
+{
+    int fw, fh;
+    glfwGetFramebufferSize(p->window, &fw, &fh);
+    if (fw <= 0 || fh <= 0) {
+        glfwWaitEventsTimeout(0.1); /* minimised */
+        return 0;
+    }
+    double now = glfwGetTime();
+    double dt = now - p->last_time;
+    p->last_time = now;
+    planner_handle_input(p, dt);
+
+    int rw = (int)lroundf(fw * p->render_scale), rh = (int)lroundf(fh * p->render_scale);
+    rd_view v;
+    current_view(p, rw < 1 ? 1 : rw, rh < 1 ? 1 : rh, &v);
+    double t0 = glfwGetTime();
+    if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK || rd_present(p->ctx, fw, fh) != RD_OK) {
+        fprintf(stderr, "tessera: rendering the 3D view failed: %s\n", rd_last_error());
+        return 1;
+    }
+    rd_finish(p->ctx);
+    float render_ms = (float)((glfwGetTime() - t0) * 1e3);
+
+    ui_gui_new_frame();
+    planner_draw_panels(p, fw, fh);
+    ui_gui_render();
+    if (p->script.count && planner_script_step(p))
+        return 1;
+    glfwSwapBuffers(p->window);
+
+    int i = (int)(p->frame_count % UI_FRAME_HISTORY);
+    p->frame_ms[i] = (float)(dt * 1e3);
+    p->render_ms[i] = render_ms;
+    if (p->frame_log && p->frame_count > 0)
+        fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d\n", p->frame_count,
+                ui_quality_names[p->quality], p->dragging ? "drag" : "idle", dt * 1e3, render_ms,
+                p->render_scale, rw, rh);
+    p->frame_count++;
+    adapt_scale(p, render_ms);
+    return 0;
+}
+
+int ui_run(const ui_options *o)
+{
+    planner p;
+    memset(&p, 0, sizeof p);
+    p.render_scale = 1.0f;
+    p.exit_code = 0;
+    char err[1024];
+    if (o->script && ui_script_read(o->script, &p.script, err, sizeof err)) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return 2;
+    }
+    if (o->frame_log) {
+        p.frame_log = fopen(o->frame_log, "w");
+        if (!p.frame_log) {
+            fprintf(stderr, "tessera: %s: cannot write the frame log\n", o->frame_log);
+            ui_script_free(&p.script);
+            return 1;
+        }
+        fprintf(p.frame_log, "frame,quality,state,frame_ms,render_ms,render_scale,width,height\n");
+    }
+    glfwSetErrorCallback(glfw_error);
+    if (!glfwInit()) {
+        fprintf(stderr, "tessera: the window system did not start (is the display reachable?)\n");
+        ui_script_free(&p.script);
+        return 1;
+    }
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    int w = o->width > 0 ? o->width : 1280, h = o->height > 0 ? o->height : 720;
+    GLFWmonitor *mon = o->fullscreen ? glfwGetPrimaryMonitor() : NULL;
+    if (mon) {
+        const GLFWvidmode *mode = glfwGetVideoMode(mon);
+        w = mode->width;
+        h = mode->height;
+    }
+    p.window = glfwCreateWindow(w, h, "Tessera", mon, NULL);
+    int rc = 1;
+    if (!p.window) {
+        fprintf(stderr, "tessera: cannot open a %dx%d window with OpenGL 3.3\n", w, h);
+        goto done;
+    }
+    glfwMakeContextCurrent(p.window);
+    glfwSwapInterval(0); /* measured frame times are the renderer's, not the display's */
+    glfwSetWindowUserPointer(p.window, &p);
+    if (rd_context_create(&(rd_context_desc){.backend = RD_BACKEND_ADOPT,
+                                             .get_proc_address = gl_proc},
+                          &p.ctx) != RD_OK) {
+        fprintf(stderr, "tessera: the renderer cannot use the window's OpenGL: %s\n",
+                rd_last_error());
+        goto done;
+    }
+    if (ui_gui_init(p.window, err, sizeof err)) {
+        fprintf(stderr, "tessera: %s\n", err);
+        goto done;
+    }
+    if (open_project(&p, o))
+        goto done;
+    int qi = 1;
+    for (int i = 0; o->quality && i < 4; i++)
+        if (!strcmp(o->quality, ui_quality_names[i]))
+            qi = i;
+    planner_set_quality(&p, qi);
+    p.last_time = glfwGetTime();
+    rc = 0;
+    while (!p.quit && !glfwWindowShouldClose(p.window)) {
+        glfwPollEvents();
+        if (frame(&p)) {
+            rc = 1;
+            break;
+        }
+        if (p.script.count && p.action >= p.script.count)
+            break;
+    }
+    if (!rc)
+        rc = p.exit_code;
+done:
+    ui_gui_shutdown();
+    if (p.scene_ready)
+        app_scene_release(p.ctx, &p.scene);
+    if (p.ctx)
+        rd_context_destroy(p.ctx);
+    app_project_free(&p.project);
+    if (p.window)
+        glfwDestroyWindow(p.window);
+    glfwTerminate();
+    ui_script_free(&p.script);
+    if (p.frame_log)
+        fclose(p.frame_log);
+    return rc;
+}

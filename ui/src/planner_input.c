@@ -1,0 +1,76 @@
+/* Mouse and keyboard to navigation: left drag orbits (or looks around when walking), the wheel
+ * zooms, W A S D walk at 1.2 m/s (shift: 2.5 m/s), Tab switches orbit and walk, 1-4 pick the
+ * quality, F1-F9 jump to stored viewpoints. Widgets get the input first. */
+#include "planner.h"
+
+#include "gui.h"
+
+#include <GLFW/glfw3.h>
+
+static void on_scroll(GLFWwindow *w, double dx, double dy)
+{
+    (void)dx;
+    planner *p = glfwGetWindowUserPointer(w);
+    if (p && !ui_gui_wants_mouse() && p->mode == UI_MODE_ORBIT)
+        ui_orbit_zoom(&p->orbit, dy);
+}
+
+static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
+{
+    (void)scancode;
+    (void)mods;
+    planner *p = glfwGetWindowUserPointer(w);
+    if (!p || action != GLFW_PRESS || ui_gui_wants_keyboard())
+        return;
+    if (key == GLFW_KEY_TAB)
+        p->mode = p->mode == UI_MODE_ORBIT ? UI_MODE_WALK : UI_MODE_ORBIT;
+    else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4)
+        planner_set_quality(p, key - GLFW_KEY_1);
+    else if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F9)
+        planner_jump_to_camera(p, key - GLFW_KEY_F1);
+}
+
+void planner_handle_input(planner *p, double dt)
+{
+    GLFWwindow *w = p->window;
+    /* Callbacks are chained after ImGui's (installed first by ui_gui_init). */
+    static GLFWwindow *hooked;
+    if (hooked != w) {
+        glfwSetScrollCallback(w, on_scroll);
+        glfwSetKeyCallback(w, on_key);
+        hooked = w;
+    }
+    double x, y;
+    glfwGetCursorPos(w, &x, &y);
+    int down = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    if (down && !p->dragging && !ui_gui_wants_mouse())
+        p->dragging = 1;
+    else if (!down)
+        p->dragging = 0;
+    if (p->dragging) {
+        double dx = x - p->mouse_x, dy = y - p->mouse_y;
+        if (p->mode == UI_MODE_ORBIT)
+            ui_orbit_drag(&p->orbit, dx, dy);
+        else
+            ui_walk_look(&p->walk, dx, dy);
+    }
+    p->mouse_x = x;
+    p->mouse_y = y;
+    if (p->mode != UI_MODE_WALK || ui_gui_wants_keyboard() || dt <= 0 || dt > 0.5)
+        return;
+    double speed = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ? 2500 : 1200;
+    double f = 0, r = 0;
+    if (glfwGetKey(w, GLFW_KEY_W) == GLFW_PRESS)
+        f += speed * dt;
+    if (glfwGetKey(w, GLFW_KEY_S) == GLFW_PRESS)
+        f -= speed * dt;
+    if (glfwGetKey(w, GLFW_KEY_D) == GLFW_PRESS)
+        r += speed * dt;
+    if (glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS)
+        r -= speed * dt;
+    if (f != 0 || r != 0) {
+        app_point2 box[4];
+        app_room_plan fallback;
+        ui_walk_move(&p->walk, planner_plan(p, box, &fallback), f, r);
+    }
+}

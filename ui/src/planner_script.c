@@ -1,0 +1,113 @@
+/* Running a UI script (ui/src/script.h) one frame at a time, as input a user would give, and
+ * the window screenshots it asks for. */
+#include "planner.h"
+
+#include "render/image_io.h"
+
+#include <GLFW/glfw3.h>
+#include <stdlib.h>
+#include <string.h>
+
+int planner_screenshot(planner *p, const char *path)
+{
+    int w, h;
+    glfwGetFramebufferSize(p->window, &w, &h);
+    size_t size = (size_t)w * (size_t)h * 4;
+    unsigned char *px = malloc(size);
+    if (!px) {
+        fprintf(stderr, "tessera: screenshot %s: out of memory\n", path);
+        return 1;
+    }
+    char err[1024];
+    int rc = 0;
+    if (rd_read_window_rgba8(p->ctx, w, h, px, size) != RD_OK) {
+        fprintf(stderr, "tessera: screenshot %s: %s\n", path, rd_last_error());
+        rc = 1;
+    } else if (rd_image_write_rgba8(path, w, h, px, err, sizeof err) != RD_IMAGE_OK) {
+        fprintf(stderr, "tessera: screenshot: %s\n", err);
+        rc = 1;
+    } else {
+        fprintf(stderr, "tessera: screenshot %s (%dx%d)\n", path, w, h);
+    }
+    free(px);
+    return rc;
+}
+
+static int find_camera(const planner *p, const char *name)
+{
+    for (int i = 0; i < p->project.camera_count; i++)
+        if (!strcmp(p->project.cameras[i].name, name))
+            return i;
+    return -1;
+}
+
+/* This frame's share of a spread action: the whole amount divided over its frames. */
+static int apply(planner *p, const ui_action *a)
+{
+    double share = 1.0 / a->frames;
+    switch (a->kind) {
+    case UI_ACT_WAIT:
+        return 0;
+    case UI_ACT_ORBIT:
+        p->mode = UI_MODE_ORBIT;
+        p->dragging = 1; /* logged as a drag: the measured state of issue 8 */
+        ui_orbit_drag(&p->orbit, a->a * share, a->b * share);
+        return 0;
+    case UI_ACT_ZOOM:
+        ui_orbit_zoom(&p->orbit, a->a * share);
+        return 0;
+    case UI_ACT_MODE:
+        p->mode = strcmp(a->text, "walk") ? UI_MODE_ORBIT : UI_MODE_WALK;
+        return 0;
+    case UI_ACT_WALK: {
+        app_point2 box[4];
+        app_room_plan fallback;
+        p->mode = UI_MODE_WALK;
+        ui_walk_move(&p->walk, planner_plan(p, box, &fallback), a->a * share, a->b * share);
+        return 0;
+    }
+    case UI_ACT_CAMERA: {
+        int i = find_camera(p, a->text);
+        if (i < 0) {
+            fprintf(stderr, "tessera: script line %d: the project has no viewpoint \"%s\"\n",
+                    a->line, a->text);
+            return 1;
+        }
+        planner_jump_to_camera(p, i);
+        return 0;
+    }
+    case UI_ACT_QUALITY:
+        for (int i = 0; i < 4; i++)
+            if (!strcmp(a->text, ui_quality_names[i])) {
+                planner_set_quality(p, i);
+                return 0;
+            }
+        fprintf(stderr, "tessera: script line %d: unknown quality \"%s\"\n", a->line, a->text);
+        return 1;
+    case UI_ACT_SCREENSHOT:
+        return planner_screenshot(p, a->text);
+    case UI_ACT_QUIT:
+        p->quit = 1;
+        return 0;
+    }
+    return 0;
+}
+
+int planner_script_step(planner *p)
+{
+    if (p->action >= p->script.count)
+        return 0;
+    const ui_action *a = &p->script.actions[p->action];
+    p->dragging = 0;
+    /* wait N spreads nothing over N frames; every other action takes at least one. */
+    int frames = a->kind == UI_ACT_WAIT ? (int)a->a : a->frames;
+    if (frames > 0 && apply(p, a)) {
+        p->exit_code = 1;
+        return 1;
+    }
+    if (++p->action_frame >= frames) {
+        p->action++;
+        p->action_frame = 0;
+    }
+    return 0;
+}

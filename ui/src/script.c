@@ -1,0 +1,156 @@
+/* Reading UI scripts (ui/src/script.h). */
+#include "script.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_ACTIONS 100000
+
+static const struct {
+    const char *word;
+    ui_action_kind kind;
+    int numbers; /* how many numbers follow */
+    int text;    /* 1: one word of text follows */
+} verbs[] = {
+    {"wait", UI_ACT_WAIT, 1, 0},       {"orbit", UI_ACT_ORBIT, 2, 0},
+    {"zoom", UI_ACT_ZOOM, 1, 0},       {"mode", UI_ACT_MODE, 0, 1},
+    {"walk", UI_ACT_WALK, 2, 0},       {"camera", UI_ACT_CAMERA, 0, 1},
+    {"quality", UI_ACT_QUALITY, 0, 1}, {"screenshot", UI_ACT_SCREENSHOT, 0, 1},
+    {"quit", UI_ACT_QUIT, 0, 0},
+};
+
+static int parse_number(const char *tok, double *out)
+{
+    if (!tok)
+        return 0;
+    char *end;
+    errno = 0;
+    double v = strtod(tok, &end);
+    if (end == tok || *end || errno || !isfinite(v) || fabs(v) > 1e7)
+        return 0;
+    *out = v;
+    return 1;
+}
+
+static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
+{
+    char *save = NULL, *verb = strtok_r(line, " \t\r\n", &save);
+    size_t v = 0;
+    for (; v < sizeof verbs / sizeof verbs[0]; v++)
+        if (!strcmp(verb, verbs[v].word))
+            break;
+    if (v == sizeof verbs / sizeof verbs[0]) {
+        snprintf(why, why_size, "unknown action \"%s\"", verb);
+        return 0;
+    }
+    a->kind = verbs[v].kind;
+    a->frames = 1;
+    double *nums[2] = {&a->a, &a->b};
+    for (int i = 0; i < verbs[v].numbers; i++)
+        if (!parse_number(strtok_r(NULL, " \t\r\n", &save), nums[i])) {
+            snprintf(why, why_size, "%s needs %d number%s", verb, verbs[v].numbers,
+                     verbs[v].numbers > 1 ? "s" : "");
+            return 0;
+        }
+    if (verbs[v].text) {
+        char *t = strtok_r(NULL, " \t\r\n", &save);
+        if (!t || strlen(t) >= sizeof a->text) {
+            snprintf(why, why_size, "%s needs a %s", verb,
+                     a->kind == UI_ACT_SCREENSHOT ? "file name" : "name");
+            return 0;
+        }
+        strcpy(a->text, t);
+    }
+    char *t = strtok_r(NULL, " \t\r\n", &save);
+    if (t && !strcmp(t, "frames")) {
+        double f;
+        if (!parse_number(strtok_r(NULL, " \t\r\n", &save), &f) || f < 1 || f > 100000) {
+            snprintf(why, why_size, "frames needs a count from 1 to 100000");
+            return 0;
+        }
+        a->frames = (int)f;
+        t = strtok_r(NULL, " \t\r\n", &save);
+    }
+    if (t) {
+        snprintf(why, why_size, "unexpected \"%s\" after %s", t, verb);
+        return 0;
+    }
+    if (a->kind == UI_ACT_WAIT && (a->a < 0 || a->a > 100000)) {
+        snprintf(why, why_size, "wait needs a frame count from 0 to 100000");
+        return 0;
+    }
+    if (a->kind == UI_ACT_MODE && strcmp(a->text, "orbit") && strcmp(a->text, "walk")) {
+        snprintf(why, why_size, "mode is orbit or walk, not \"%s\"", a->text);
+        return 0;
+    }
+    return 1;
+}
+
+int ui_script_read(const char *path, ui_script *out, char *err, size_t err_size)
+{
+    memset(out, 0, sizeof *out);
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        snprintf(err, err_size, "%s: cannot open: %s", path, strerror(errno));
+        return 1;
+    }
+    char line[2048];
+    int lineno = 0, cap = 0, rc = 0;
+    while (fgets(line, sizeof line, f)) {
+        lineno++;
+        if (!strchr(line, '\n') && !feof(f)) {
+            snprintf(err, err_size, "%s:%d: line longer than %zu bytes", path, lineno,
+                     sizeof line - 1);
+            rc = 1;
+            break;
+        }
+        char *p = line + strspn(line, " \t");
+        if (*p == '#' || *p == '\n' || *p == '\r' || !*p)
+            continue;
+        if (out->count == cap) {
+            if (cap >= MAX_ACTIONS) {
+                snprintf(err, err_size, "%s:%d: more than %d actions", path, lineno, MAX_ACTIONS);
+                rc = 1;
+                break;
+            }
+            int ncap = cap ? cap * 2 : 32;
+            ui_action *n = realloc(out->actions, (size_t)ncap * sizeof *n);
+            if (!n) {
+                snprintf(err, err_size, "%s: out of memory", path);
+                rc = 1;
+                break;
+            }
+            out->actions = n;
+            cap = ncap;
+        }
+        ui_action *a = &out->actions[out->count];
+        memset(a, 0, sizeof *a);
+        a->line = lineno;
+        char why[600];
+        if (!parse_line(p, a, why, sizeof why)) {
+            snprintf(err, err_size, "%s:%d: %s", path, lineno, why);
+            rc = 1;
+            break;
+        }
+        out->count++;
+    }
+    if (!rc && ferror(f)) {
+        snprintf(err, err_size, "%s: read error", path);
+        rc = 1;
+    }
+    fclose(f);
+    if (rc)
+        ui_script_free(out);
+    return rc;
+}
+
+void ui_script_free(ui_script *s)
+{
+    if (!s)
+        return;
+    free(s->actions);
+    memset(s, 0, sizeof *s);
+}

@@ -1,0 +1,50 @@
+/* UI scripts: a file of actions the planner runs one after the other, as a user would, so a
+ * test (and a measurement) can drive the window under Xvfb. One action per line; blank lines
+ * and lines starting with # are skipped:
+ *   wait N                 let N frames pass
+ *   orbit DX DY            drag the orbit view by DX, DY pixels (repeats over `frames`)
+ *   zoom STEPS             wheel steps, positive = closer
+ *   mode orbit|walk        the 3D navigation mode
+ *   walk FORWARD RIGHT     walk (mm); walls stop the walker
+ *   camera NAME            jump to a stored viewpoint
+ *   quality NAME           draft, interactive, final, print
+ *   screenshot FILE.png    the whole window, panels included
+ *   expect-fps-log         (nothing; reserved)
+ *   quit                   close the window (exit 0)
+ * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
+#ifndef UI_SCRIPT_H
+#define UI_SCRIPT_H
+
+#include <stddef.h>
+
+typedef enum ui_action_kind {
+    UI_ACT_WAIT,
+    UI_ACT_ORBIT,
+    UI_ACT_ZOOM,
+    UI_ACT_MODE,
+    UI_ACT_WALK,
+    UI_ACT_CAMERA,
+    UI_ACT_QUALITY,
+    UI_ACT_SCREENSHOT,
+    UI_ACT_QUIT
+} ui_action_kind;
+
+typedef struct ui_action {
+    ui_action_kind kind;
+    double a, b;    /* numbers of the action */
+    int frames;     /* frames the action is spread over (>= 1) */
+    char text[512]; /* file, name or mode */
+    int line;       /* in the script, for messages */
+} ui_action;
+
+typedef struct ui_script {
+    ui_action *actions;
+    int count;
+} ui_script;
+
+/* Reads and checks the whole script first, so a typo on line 30 is reported before the
+ * window opens. 0 on success; else err holds "FILE:LINE: problem". */
+int ui_script_read(const char *path, ui_script *out, char *err, size_t err_size);
+void ui_script_free(ui_script *s);
+
+#endif
