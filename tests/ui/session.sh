@@ -15,6 +15,11 @@ mode walk
 walk 600 0 frames 10
 walk 20000 0 frames 20
 screenshot $out/walk.png
+search basin
+expect-hits 5
+select 1
+wait 1
+screenshot $out/search.png
 camera basin
 quality draft
 wait 3
@@ -24,12 +29,12 @@ wait 1
 screenshot $out/print.png
 quit
 SCRIPT
-xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open --size 640x360 --script "$out/session.txt" \
+xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open --size 1024x576 --script "$out/session.txt" \
     --frame-log "$out/frames.csv"
-for shot in open orbit walk draft print; do
+for shot in open orbit walk search draft print; do
     test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
 done
 # Each screenshot has many colours (a rendered room), and the orbit changed the picture.
-"$3" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/draft.png"
-"$3" "$out/draft.png" "$out/print.png"
+"$3" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/search.png" "$out/draft.png"
+"$3" "$out/print.png"
 test "$(wc -l <"$out/frames.csv")" -gt 40 || { echo "FAIL: frame log too short"; exit 1; }

@@ -38,8 +38,8 @@ int main(void)
     CHECK(s.count == 9);
     if (s.count == 9) {
         CHECK(s.actions[0].kind == UI_ACT_WAIT && s.actions[0].a == 3);
-        CHECK(s.actions[1].kind == UI_ACT_ORBIT && s.actions[1].a == 120 &&
-              s.actions[1].b == -30 && s.actions[1].frames == 40 && s.actions[1].line == 4);
+        CHECK(s.actions[1].kind == UI_ACT_ORBIT && s.actions[1].a == 120 && s.actions[1].b == -30 &&
+              s.actions[1].frames == 40 && s.actions[1].line == 4);
         CHECK(s.actions[3].kind == UI_ACT_MODE && !strcmp(s.actions[3].text, "walk"));
         CHECK(s.actions[6].kind == UI_ACT_QUALITY && !strcmp(s.actions[6].text, "print"));
         CHECK(s.actions[7].kind == UI_ACT_SCREENSHOT && !strcmp(s.actions[7].text, "out.png"));
@@ -56,6 +56,14 @@ int main(void)
     expect_error("wait -4\n", "wait needs a frame count");
     expect_error("orbit 1 2 frames 0\n", "frames needs a count");
     expect_error("quit now\n", "unexpected \"now\" after quit");
+    expect_error("search\n", "search needs a text");
+    expect_error("select 0\n", "select needs a whole number");
+    expect_error("expect-hits 2.5\n", "expect-hits needs a whole number");
+    rc = read_text("search wall-hung  basin 600\nselect 2\nexpect-hits 3\n", &s, err, sizeof err);
+    CHECK_MSG(rc == 0, "%s", err);
+    CHECK(s.count == 3 && !strcmp(s.actions[0].text, "wall-hung  basin 600") &&
+          s.actions[1].kind == UI_ACT_SELECT && s.actions[1].a == 2);
+    ui_script_free(&s);
     CHECK(ui_script_read("/nonexistent/script.txt", &s, err, sizeof err) == 1 &&
           strstr(err, "/nonexistent/script.txt: cannot open"));
     remove("ui_script_test.txt");

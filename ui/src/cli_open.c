@@ -30,8 +30,7 @@ int ui_cli_open(int argc, char **argv)
     int i = argc >= 2 && !strcmp(argv[1], "open") ? 2 : 1;
     for (; i < argc; i++) {
         const char *a = argv[i], *next = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h"))
-        {
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             usage();
             return 0;
         }

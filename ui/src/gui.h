@@ -37,6 +37,12 @@ int ui_gui_combo(const char *label, int *current, const char *const *items, int 
 int ui_gui_slider_float(const char *label, float *value, float lo, float hi);
 int ui_gui_input_text(const char *label, char *buf, size_t size);
 int ui_gui_selectable(const char *label, int selected);
+void ui_gui_text_wrapped(const char *text);
+int ui_gui_input_float(const char *label, float *value, float step);
+/* A row of the list being drawn; returns 1 when clicked. */
+int ui_gui_list_row(const char *label, int selected);
+int ui_gui_begin_child(const char *id, float width, float height);
+void ui_gui_end_child(void);
 void ui_gui_plot_lines(const char *label, const float *values, int count, float lo, float hi,
                        float width, float height);
 

@@ -157,3 +157,30 @@ extern "C" void ui_gui_plot_lines(const char *label, const float *values, int co
     if (g_ready)
         ImGui::PlotLines(label, values, count, 0, nullptr, lo, hi, ImVec2(width, height));
 }
+
+extern "C" void ui_gui_text_wrapped(const char *text)
+{
+    if (g_ready)
+        ImGui::TextWrapped("%s", text);
+}
+
+extern "C" int ui_gui_input_float(const char *label, float *value, float step)
+{
+    return g_ready && ImGui::InputFloat(label, value, step, step * 10.0f, "%.0f");
+}
+
+extern "C" int ui_gui_list_row(const char *label, int selected)
+{
+    return g_ready && ImGui::Selectable(label, selected != 0, ImGuiSelectableFlags_SpanAllColumns);
+}
+
+extern "C" int ui_gui_begin_child(const char *id, float width, float height)
+{
+    return g_ready && ImGui::BeginChild(id, ImVec2(width, height), true);
+}
+
+extern "C" void ui_gui_end_child(void)
+{
+    if (g_ready)
+        ImGui::EndChild();
+}

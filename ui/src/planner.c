@@ -226,9 +226,9 @@ int ui_run(const ui_options *o)
     glfwMakeContextCurrent(p.window);
     glfwSwapInterval(0); /* measured frame times are the renderer's, not the display's */
     glfwSetWindowUserPointer(p.window, &p);
-    if (rd_context_create(&(rd_context_desc){.backend = RD_BACKEND_ADOPT,
-                                             .get_proc_address = gl_proc},
-                          &p.ctx) != RD_OK) {
+    if (rd_context_create(
+            &(rd_context_desc){.backend = RD_BACKEND_ADOPT, .get_proc_address = gl_proc}, &p.ctx) !=
+        RD_OK) {
         fprintf(stderr, "tessera: the renderer cannot use the window's OpenGL: %s\n",
                 rd_last_error());
         goto done;
@@ -239,6 +239,7 @@ int ui_run(const ui_options *o)
     }
     if (open_project(&p, o))
         goto done;
+    ui_catalog_browser_open(&p.browser);
     int qi = 1;
     for (int i = 0; o->quality && i < 4; i++)
         if (!strcmp(o->quality, ui_quality_names[i]))
@@ -258,6 +259,7 @@ int ui_run(const ui_options *o)
     if (!rc)
         rc = p.exit_code;
 done:
+    ui_catalog_browser_close(&p.browser);
     ui_gui_shutdown();
     if (p.scene_ready)
         app_scene_release(p.ctx, &p.scene);

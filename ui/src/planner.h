@@ -7,6 +7,7 @@
 #include "app/project.h"
 #include "app/quality.h"
 #include "app/scene_build.h"
+#include "catalog_browser.h"
 #include "render/render.h"
 #include "script.h"
 #include "ui/navigation.h"
@@ -26,21 +27,23 @@ typedef struct planner {
     app_scene scene;
     int scene_ready;
 
-    int quality;       /* index into ui_quality_names */
-    int mode;          /* UI_MODE_* */
+    int quality; /* index into ui_quality_names */
+    int mode;    /* UI_MODE_* */
     ui_orbit orbit;
     ui_walk walk;
-    int camera;        /* stored viewpoint last jumped to, -1 = none */
+    int camera;         /* stored viewpoint last jumped to, -1 = none */
     float render_scale; /* 3D view pixels per window pixel, adapted to the frame budget */
     int adaptive_scale; /* 1: render_scale follows the frame budget */
     float budget_ms;    /* the frame budget the adaptive scale aims for */
 
-    float frame_ms[UI_FRAME_HISTORY]; /* whole frames, wall clock */
+    float frame_ms[UI_FRAME_HISTORY];  /* whole frames, wall clock */
     float render_ms[UI_FRAME_HISTORY]; /* the 3D view alone, GPU finished */
     int frame_index;
     long frame_count;
     double last_time;
     FILE *frame_log;
+
+    ui_catalog_browser browser;
 
     ui_script script;
     int action, action_frame;

@@ -59,5 +59,6 @@ void planner_draw_panels(planner *p, int width, int height)
 {
     view_panel(p);
     project_panel(p, height);
+    ui_catalog_browser_draw(&p->browser, (float)width - 350.0f, 130.0f);
     frame_overlay(p, width);
 }

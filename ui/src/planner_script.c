@@ -41,6 +41,12 @@ static int find_camera(const planner *p, const char *name)
     return -1;
 }
 
+static int fail(const ui_action *a, const char *why)
+{
+    fprintf(stderr, "tessera: script line %d: %s\n", a->line, why);
+    return 1;
+}
+
 /* This frame's share of a spread action: the whole amount divided over its frames. */
 static int apply(planner *p, const ui_action *a)
 {
@@ -86,6 +92,25 @@ static int apply(planner *p, const ui_action *a)
         return 1;
     case UI_ACT_SCREENSHOT:
         return planner_screenshot(p, a->text);
+    case UI_ACT_SEARCH:
+        /* The script reader keeps search texts under 128 bytes. */
+        memcpy(p->browser.text, a->text, sizeof p->browser.text - 1);
+        p->browser.text[sizeof p->browser.text - 1] = 0;
+        return ui_catalog_browser_refresh(&p->browser) ? fail(a, p->browser.error) : 0;
+    case UI_ACT_SELECT:
+        ui_catalog_browser_refresh(&p->browser);
+        if (ui_catalog_browser_select(&p->browser, (int)a->a - 1))
+            return fail(a, "no such hit in the catalog browser");
+        return 0;
+    case UI_ACT_EXPECT_HITS:
+        ui_catalog_browser_refresh(&p->browser);
+        if (p->browser.hit_count < (int)a->a) {
+            char why[128];
+            snprintf(why, sizeof why, "the catalog browser shows %d hits, expected at least %d",
+                     p->browser.hit_count, (int)a->a);
+            return fail(a, why);
+        }
+        return 0;
     case UI_ACT_QUIT:
         p->quit = 1;
         return 0;

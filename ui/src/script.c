@@ -13,12 +13,19 @@ static const struct {
     const char *word;
     ui_action_kind kind;
     int numbers; /* how many numbers follow */
-    int text;    /* 1: one word of text follows */
+    int text;    /* 1: one word of text follows; 2: the rest of the line */
 } verbs[] = {
-    {"wait", UI_ACT_WAIT, 1, 0},       {"orbit", UI_ACT_ORBIT, 2, 0},
-    {"zoom", UI_ACT_ZOOM, 1, 0},       {"mode", UI_ACT_MODE, 0, 1},
-    {"walk", UI_ACT_WALK, 2, 0},       {"camera", UI_ACT_CAMERA, 0, 1},
-    {"quality", UI_ACT_QUALITY, 0, 1}, {"screenshot", UI_ACT_SCREENSHOT, 0, 1},
+    {"wait", UI_ACT_WAIT, 1, 0},
+    {"orbit", UI_ACT_ORBIT, 2, 0},
+    {"zoom", UI_ACT_ZOOM, 1, 0},
+    {"mode", UI_ACT_MODE, 0, 1},
+    {"walk", UI_ACT_WALK, 2, 0},
+    {"camera", UI_ACT_CAMERA, 0, 1},
+    {"quality", UI_ACT_QUALITY, 0, 1},
+    {"screenshot", UI_ACT_SCREENSHOT, 0, 1},
+    {"search", UI_ACT_SEARCH, 0, 2},
+    {"select", UI_ACT_SELECT, 1, 0},
+    {"expect-hits", UI_ACT_EXPECT_HITS, 1, 0},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 
@@ -55,6 +62,16 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
                      verbs[v].numbers > 1 ? "s" : "");
             return 0;
         }
+    if (verbs[v].text == 2) {
+        char *rest = strtok_r(NULL, "\r\n", &save);
+        rest = rest ? rest + strspn(rest, " \t") : NULL;
+        if (!rest || !*rest || strlen(rest) >= 128) {
+            snprintf(why, why_size, "%s needs a text of 1 to 127 bytes", verb);
+            return 0;
+        }
+        strcpy(a->text, rest);
+        return 1;
+    }
     if (verbs[v].text) {
         char *t = strtok_r(NULL, " \t\r\n", &save);
         if (!t || strlen(t) >= sizeof a->text) {
@@ -80,6 +97,11 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
     }
     if (a->kind == UI_ACT_WAIT && (a->a < 0 || a->a > 100000)) {
         snprintf(why, why_size, "wait needs a frame count from 0 to 100000");
+        return 0;
+    }
+    if ((a->kind == UI_ACT_SELECT || a->kind == UI_ACT_EXPECT_HITS) &&
+        (a->a < 1 || a->a > 200 || a->a != (int)a->a)) {
+        snprintf(why, why_size, "%s needs a whole number from 1 to 200", verb);
         return 0;
     }
     if (a->kind == UI_ACT_MODE && strcmp(a->text, "orbit") && strcmp(a->text, "walk")) {

@@ -9,7 +9,9 @@
  *   camera NAME            jump to a stored viewpoint
  *   quality NAME           draft, interactive, final, print
  *   screenshot FILE.png    the whole window, panels included
- *   expect-fps-log         (nothing; reserved)
+ *   search TEXT...         type into the catalog browser's search field (the rest of the line)
+ *   select N               pick the N-th hit (from 1) of the catalog browser
+ *   expect-hits N          fail unless the catalog browser shows at least N hits
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -26,6 +28,9 @@ typedef enum ui_action_kind {
     UI_ACT_CAMERA,
     UI_ACT_QUALITY,
     UI_ACT_SCREENSHOT,
+    UI_ACT_SEARCH,
+    UI_ACT_SELECT,
+    UI_ACT_EXPECT_HITS,
     UI_ACT_QUIT
 } ui_action_kind;
 
