@@ -27,14 +27,22 @@ screenshot $out/draft.png
 quality print
 wait 1
 screenshot $out/print.png
+quality interactive
+fly door 1
+wait 20
+present on
+turntable on
+wait 10
+screenshot $out/present.png
+print-shot $out/print-shot.png
 quit
 SCRIPT
 xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open --size 1024x576 --script "$out/session.txt" \
     --frame-log "$out/frames.csv"
-for shot in open orbit walk search draft print; do
+for shot in open orbit walk search draft print present print-shot; do
     test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
 done
 # Each screenshot has many colours (a rendered room), and the orbit changed the picture.
 "$3" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/search.png" "$out/draft.png"
-"$3" "$out/print.png"
+"$3" "$out/print.png" "$out/present.png" "$out/print-shot.png"
 test "$(wc -l <"$out/frames.csv")" -gt 40 || { echo "FAIL: frame log too short"; exit 1; }

@@ -65,6 +65,20 @@ int main(void)
     }
     CHECK_MSG(inside, "the walker left the L-shaped room");
 
+    /* An orbit made from a view reproduces that view's eye. */
+    double eye0[3] = {300, 250, 1700}, tgt0[3] = {1200, 2900, 1000}, e[3], t[3];
+    ui_orbit fv = ui_orbit_from_view(eye0, tgt0);
+    ui_orbit_eye(&fv, e);
+    CHECK_MSG(dist(e, eye0) < 1e-6, "eye off by %g mm", dist(e, eye0));
+    /* Flights start and end exactly at their views, with zero speed at both ends. */
+    double eye1[3] = {2000, 400, 1500}, tgt1[3] = {100, 2000, 900};
+    ui_view_blend(eye0, tgt0, eye1, tgt1, 0, e, t);
+    CHECK(dist(e, eye0) == 0 && dist(t, tgt0) == 0);
+    ui_view_blend(eye0, tgt0, eye1, tgt1, 1, e, t);
+    CHECK(dist(e, eye1) < 1e-9 && dist(t, tgt1) < 1e-9);
+    CHECK(ui_ease(0.001) < 1e-5 && 1 - ui_ease(0.999) < 1e-5 && fabs(ui_ease(0.5) - 0.5) < 1e-12);
+    CHECK(ui_ease(NAN) == 1 && ui_ease(-3) == 0 && ui_ease(7) == 1);
+
     /* Nonsense never passes. */
     CHECK(!ui_plan_point_free(&room, NAN, 10, 0));
     app_room_plan empty = {0};

@@ -47,7 +47,7 @@ int main(void)
     }
     ui_script_free(&s);
 
-    expect_error("wait 1\nfly 3\n", ":2: unknown action \"fly\"");
+    expect_error("wait 1\nhover 3\n", ":2: unknown action \"hover\"");
     expect_error("orbit 10\n", ":1: orbit needs 2 numbers");
     expect_error("orbit 10 nan\n", "orbit needs 2 numbers");
     expect_error("zoom 1e300\n", "zoom needs 1 number");
@@ -56,6 +56,16 @@ int main(void)
     expect_error("wait -4\n", "wait needs a frame count");
     expect_error("orbit 1 2 frames 0\n", "frames needs a count");
     expect_error("quit now\n", "unexpected \"now\" after quit");
+    expect_error("fly door\n", "fly needs a viewpoint name and seconds");
+    expect_error("fly door 99\n", "fly needs a viewpoint name and seconds");
+    expect_error("present maybe\n", "present is on or off");
+    expect_error("print-shot\n", "print-shot needs a file name");
+    rc = read_text("fly bath 1.5\npresent on\ntour off\nturntable on\nprint-shot a.png\n", &s, err,
+                   sizeof err);
+    CHECK_MSG(rc == 0, "%s", err);
+    CHECK(s.count == 5 && s.actions[0].kind == UI_ACT_FLY && !strcmp(s.actions[0].text, "bath") &&
+          s.actions[0].a == 1.5 && s.actions[4].kind == UI_ACT_PRINT_SHOT);
+    ui_script_free(&s);
     expect_error("search\n", "search needs a text");
     expect_error("select 0\n", "select needs a whole number");
     expect_error("expect-hits 2.5\n", "expect-hits needs a whole number");

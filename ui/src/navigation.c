@@ -59,6 +59,34 @@ void ui_orbit_zoom(ui_orbit *o, double steps)
     o->distance_mm = clampd(o->distance_mm * pow(0.9, steps), 200, 50000);
 }
 
+ui_orbit ui_orbit_from_view(const double eye[3], const double target[3])
+{
+    double d[3] = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]};
+    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    ui_orbit o = {{target[0], target[1], target[2]}, clampd(len, 200, 50000), 0, 0};
+    if (len > 0) {
+        o.yaw_deg = atan2(d[0], d[1]) / DEG;
+        o.pitch_deg = clampd(asin(clampd(-d[2] / len, -1, 1)) / DEG, -85, 85);
+    }
+    return o;
+}
+
+double ui_ease(double t)
+{
+    t = clampd(isfinite(t) ? t : 1, 0, 1);
+    return t * t * (3 - 2 * t);
+}
+
+void ui_view_blend(const double eye0[3], const double target0[3], const double eye1[3],
+                   const double target1[3], double t, double eye[3], double target[3])
+{
+    double s = ui_ease(t);
+    for (int k = 0; k < 3; k++) {
+        eye[k] = eye0[k] + s * (eye1[k] - eye0[k]);
+        target[k] = target0[k] + s * (target1[k] - target0[k]);
+    }
+}
+
 /* Point-to-segment distance in the plan. */
 static double segment_distance(double px, double py, const app_point2 *a, const app_point2 *b)
 {

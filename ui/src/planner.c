@@ -44,17 +44,9 @@ void planner_jump_to_camera(planner *p, int index)
         return;
     const app_camera *c = &p->project.cameras[index];
     p->camera = index;
-    /* An orbit around the camera's target that reproduces the stored view exactly. */
-    double d[3] = {c->target_mm[0] - c->position_mm[0], c->target_mm[1] - c->position_mm[1],
-                   c->target_mm[2] - c->position_mm[2]};
-    double len = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    if (len <= 0)
-        return;
     p->mode = UI_MODE_ORBIT;
-    memcpy(p->orbit.target, c->target_mm, sizeof p->orbit.target);
-    p->orbit.distance_mm = len;
-    p->orbit.yaw_deg = atan2(d[0], d[1]) * 180.0 / 3.14159265358979323846;
-    p->orbit.pitch_deg = asin(-d[2] / len) * 180.0 / 3.14159265358979323846;
+    p->flight.active = 0;
+    p->orbit = ui_orbit_from_view(c->position_mm, c->target_mm);
 }
 
 const app_room_plan *planner_plan(const planner *p, app_point2 box[4], app_room_plan *fallback)
@@ -71,16 +63,10 @@ const app_room_plan *planner_plan(const planner *p, app_point2 box[4], app_room_
     return fallback;
 }
 
-static void current_view(const planner *p, int width, int height, rd_view *v)
+void planner_view(const planner *p, int width, int height, rd_view *v)
 {
     double eye[3], target[3];
-    if (p->mode == UI_MODE_WALK) {
-        memcpy(eye, p->walk.eye, sizeof eye);
-        ui_walk_target(&p->walk, target);
-    } else {
-        ui_orbit_eye(&p->orbit, eye);
-        memcpy(target, p->orbit.target, sizeof target);
-    }
+    planner_view_points(p, eye, target);
     memset(v, 0, sizeof *v);
     for (int k = 0; k < 3; k++) {
         v->eye[k] = (float)(eye[k] * 1e-3);
@@ -149,10 +135,11 @@ static int frame(planner *p)
     double dt = now - p->last_time;
     p->last_time = now;
     planner_handle_input(p, dt);
+    planner_animate(p, p->fixed_dt > 0 ? p->fixed_dt : dt);
 
     int rw = (int)lroundf(fw * p->render_scale), rh = (int)lroundf(fh * p->render_scale);
     rd_view v;
-    current_view(p, rw < 1 ? 1 : rw, rh < 1 ? 1 : rh, &v);
+    planner_view(p, rw < 1 ? 1 : rw, rh < 1 ? 1 : rh, &v);
     double t0 = glfwGetTime();
     if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK || rd_present(p->ctx, fw, fh) != RD_OK) {
         fprintf(stderr, "tessera: rendering the 3D view failed: %s\n", rd_last_error());
@@ -162,7 +149,10 @@ static int frame(planner *p)
     float render_ms = (float)((glfwGetTime() - t0) * 1e3);
 
     ui_gui_new_frame();
-    planner_draw_panels(p, fw, fh);
+    if (p->presenting)
+        planner_draw_presentation(p, fw, fh);
+    else
+        planner_draw_panels(p, fw, fh);
     ui_gui_render();
     if (p->script.count && planner_script_step(p))
         return 1;
@@ -187,6 +177,7 @@ int ui_run(const ui_options *o)
     p.render_scale = 1.0f;
     p.exit_code = 0;
     char err[1024];
+    p.fixed_dt = o->script ? 1.0 / 30.0 : 0.0;
     if (o->script && ui_script_read(o->script, &p.script, err, sizeof err)) {
         fprintf(stderr, "tessera: %s\n", err);
         return 2;

@@ -1,11 +1,14 @@
 /* Mouse and keyboard to navigation: left drag orbits (or looks around when walking), the wheel
  * zooms, W A S D walk at 1.2 m/s (shift: 2.5 m/s), Tab switches orbit and walk, 1-4 pick the
- * quality, F1-F9 jump to stored viewpoints. Widgets get the input first. */
+ * quality, F1-F9 fly to stored viewpoints. Presentation: P shows or hides the UI, T starts or
+ * stops the tour, R the turntable, F11 fullscreen, F12 a print-quality screenshot. Widgets get
+ * the input first. */
 #include "planner.h"
 
 #include "gui.h"
 
 #include <GLFW/glfw3.h>
+#include <time.h>
 
 static void on_scroll(GLFWwindow *w, double dx, double dy)
 {
@@ -27,7 +30,24 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
     else if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4)
         planner_set_quality(p, key - GLFW_KEY_1);
     else if (key >= GLFW_KEY_F1 && key <= GLFW_KEY_F9)
-        planner_jump_to_camera(p, key - GLFW_KEY_F1);
+        planner_fly_to_camera(p, key - GLFW_KEY_F1, 1.0);
+    else if (key == GLFW_KEY_P)
+        p->presenting = !p->presenting;
+    else if (key == GLFW_KEY_T) {
+        p->touring = !p->touring;
+        p->tour_clock = 1e9; /* leave for the next viewpoint at once */
+    } else if (key == GLFW_KEY_R)
+        p->turntable = !p->turntable;
+    else if (key == GLFW_KEY_F11)
+        planner_toggle_fullscreen(p);
+    else if (key == GLFW_KEY_F12) {
+        char name[256];
+        time_t t = time(NULL);
+        struct tm tm;
+        localtime_r(&t, &tm);
+        strftime(name, sizeof name, "tessera-%Y%m%d-%H%M%S.png", &tm);
+        planner_print_shot(p, name);
+    }
 }
 
 void planner_handle_input(planner *p, double dt)

@@ -39,7 +39,18 @@ static void view_panel(planner *p)
         ui_gui_text("Viewpoints");
         for (int i = 0; i < p->project.camera_count; i++)
             if (ui_gui_selectable(p->project.cameras[i].name, i == p->camera))
-                planner_jump_to_camera(p, i);
+                planner_fly_to_camera(p, i, 1.0);
+        ui_gui_separator();
+        if (ui_gui_button("Present (P)"))
+            p->presenting = 1;
+        ui_gui_same_line();
+        if (ui_gui_button(p->touring ? "Stop tour" : "Tour (T)")) {
+            p->touring = !p->touring;
+            p->tour_clock = 1e9;
+        }
+        ui_gui_same_line();
+        if (ui_gui_button(p->turntable ? "Stop turning" : "Turn (R)"))
+            p->turntable = !p->turntable;
     }
     ui_gui_end();
 }

@@ -111,6 +111,25 @@ static int apply(planner *p, const ui_action *a)
             return fail(a, why);
         }
         return 0;
+    case UI_ACT_FLY: {
+        int i = find_camera(p, a->text);
+        if (i < 0)
+            return fail(a, "the project has no such viewpoint");
+        planner_fly_to_camera(p, i, a->a);
+        return 0;
+    }
+    case UI_ACT_PRESENT:
+        p->presenting = !strcmp(a->text, "on");
+        return 0;
+    case UI_ACT_TOUR:
+        p->touring = !strcmp(a->text, "on");
+        p->tour_clock = 1e9;
+        return 0;
+    case UI_ACT_TURNTABLE:
+        p->turntable = !strcmp(a->text, "on");
+        return 0;
+    case UI_ACT_PRINT_SHOT:
+        return planner_print_shot(p, a->text);
     case UI_ACT_QUIT:
         p->quit = 1;
         return 0;

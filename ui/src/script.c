@@ -26,6 +26,11 @@ static const struct {
     {"search", UI_ACT_SEARCH, 0, 2},
     {"select", UI_ACT_SELECT, 1, 0},
     {"expect-hits", UI_ACT_EXPECT_HITS, 1, 0},
+    {"fly", UI_ACT_FLY, -1, 1}, /* a name, then seconds */
+    {"present", UI_ACT_PRESENT, 0, 1},
+    {"tour", UI_ACT_TOUR, 0, 1},
+    {"turntable", UI_ACT_TURNTABLE, 0, 1},
+    {"print-shot", UI_ACT_PRINT_SHOT, 0, 1},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 
@@ -76,10 +81,21 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
         char *t = strtok_r(NULL, " \t\r\n", &save);
         if (!t || strlen(t) >= sizeof a->text) {
             snprintf(why, why_size, "%s needs a %s", verb,
-                     a->kind == UI_ACT_SCREENSHOT ? "file name" : "name");
+                     a->kind == UI_ACT_SCREENSHOT || a->kind == UI_ACT_PRINT_SHOT ? "file name"
+                                                                                  : "name");
             return 0;
         }
         strcpy(a->text, t);
+    }
+    if (verbs[v].numbers < 0 &&
+        (!parse_number(strtok_r(NULL, " \t\r\n", &save), &a->a) || a->a < 0 || a->a > 60)) {
+        snprintf(why, why_size, "%s needs a viewpoint name and seconds from 0 to 60", verb);
+        return 0;
+    }
+    if ((a->kind == UI_ACT_PRESENT || a->kind == UI_ACT_TOUR || a->kind == UI_ACT_TURNTABLE) &&
+        strcmp(a->text, "on") && strcmp(a->text, "off")) {
+        snprintf(why, why_size, "%s is on or off, not \"%s\"", verb, a->text);
+        return 0;
     }
     char *t = strtok_r(NULL, " \t\r\n", &save);
     if (t && !strcmp(t, "frames")) {

@@ -12,6 +12,11 @@
  *   search TEXT...         type into the catalog browser's search field (the rest of the line)
  *   select N               pick the N-th hit (from 1) of the catalog browser
  *   expect-hits N          fail unless the catalog browser shows at least N hits
+ *   fly NAME SECONDS       a smooth flight to a stored viewpoint
+ *   present on|off         presentation mode: the UI hidden
+ *   tour on|off            the automatic tour through the viewpoints
+ *   turntable on|off       turn the view about its target
+ *   print-shot FILE        a print-quality screenshot (twice the window size)
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -31,6 +36,11 @@ typedef enum ui_action_kind {
     UI_ACT_SEARCH,
     UI_ACT_SELECT,
     UI_ACT_EXPECT_HITS,
+    UI_ACT_FLY,
+    UI_ACT_PRESENT,
+    UI_ACT_TOUR,
+    UI_ACT_TURNTABLE,
+    UI_ACT_PRINT_SHOT,
     UI_ACT_QUIT
 } ui_action_kind;
 

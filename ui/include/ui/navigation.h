@@ -34,6 +34,15 @@ void ui_orbit_drag(ui_orbit *o, double dx_px, double dy_px);
 /* Wheel steps: each step 10 % closer (positive) or farther. */
 void ui_orbit_zoom(ui_orbit *o, double steps);
 
+/* The orbit that looks from eye at target (distance, yaw, pitch from the two points). */
+ui_orbit ui_orbit_from_view(const double eye[3], const double target[3]);
+
+/* Smooth camera flights (presentation mode, issue 8 item 7): eye and target each move on a
+ * straight line with smoothstep easing (zero speed at both ends); t in [0, 1]. */
+double ui_ease(double t);
+void ui_view_blend(const double eye0[3], const double target0[3], const double eye1[3],
+                   const double target1[3], double t, double eye[3], double target[3]);
+
 /* A walker standing at the plan's centre (or its first interior point found) at 1600 mm. */
 ui_walk ui_walk_start(const app_room_plan *plan);
 void ui_walk_target(const ui_walk *w, double target[3]);
