@@ -67,3 +67,27 @@ void pj_default_render(app_render_settings *r)
     r->height = 720;
     r->supersample = 1;
 }
+
+void pj_default_plan(app_room_plan *plan)
+{
+    memset(plan, 0, sizeof *plan);
+    plan->wall_thickness_mm = APP_ROOM_DEFAULT_WALL_THICKNESS_MM;
+}
+
+/* Windows let daylight in unless told otherwise (app_opening.light); doors none. */
+void pj_default_opening(app_opening *o, app_opening_type type)
+{
+    memset(o, 0, sizeof *o);
+    o->type = type;
+    o->swing = APP_SWING_IN_LEFT;
+    if (type == APP_OPENING_WINDOW)
+        set3f(o->light, 1.0f, 1.0f, 1.0f);
+}
+
+void pj_default_tiling(app_tiling *t)
+{
+    memset(t, 0, sizeof *t);
+    t->pattern = APP_PATTERN_STRAIGHT;
+    t->align = APP_ALIGN_CENTRED;
+    set3f(t->grout_color, 0.6f, 0.6f, 0.58f); /* a light grey cement grout */
+}

@@ -12,6 +12,11 @@ void app_project_free(app_project *p)
     free(p->objects);
     free(p->lights);
     free(p->cameras);
+    free(p->plan.corners);
+    free(p->plan.openings);
+    free(p->plan.prewalls);
+    free(p->plan.niches);
+    free(p->tilings);
     memset(p, 0, sizeof *p);
 }
 

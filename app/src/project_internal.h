@@ -101,6 +101,9 @@ void pj_default_object(app_object *o);
 void pj_default_light(app_light *l);
 void pj_default_camera(app_camera *cam);
 void pj_default_render(app_render_settings *r);
+void pj_default_plan(app_room_plan *plan);
+void pj_default_opening(app_opening *o, app_opening_type type);
+void pj_default_tiling(app_tiling *t);
 
 /* ---- sections (project_read_*.c); each reads one top-level member of the root -------------- */
 
@@ -109,13 +112,33 @@ app_result pj_read_materials(pj_ctx *c, const cJSON *root);
 app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material *m);
 /* The names of the APP_BLEND_*, APP_CORRECTION_* and APP_PROBE_* values in the file. */
 extern const char *const pj_blend_names[3];
-extern const char *const pj_correction_names[4];
+extern const char *const pj_correction_names[5];
 extern const char *const pj_probe_update_names[6];
 app_result pj_read_room(pj_ctx *c, const cJSON *root);
 app_result pj_read_objects(pj_ctx *c, const cJSON *root);
 app_result pj_read_lights(pj_ctx *c, const cJSON *root);
 app_result pj_read_cameras(pj_ctx *c, const cJSON *root);
 app_result pj_read_render(pj_ctx *c, const cJSON *root);
+/* Version 2: $.plan (project_read_plan.c, checked by project_plan_check.c), $.tilings
+ * (project_read_tilings.c), a product reference {"manufacturer","article","variant"} (the
+ * member `key` of obj; project_read_tilings.c). */
+app_result pj_read_plan(pj_ctx *c, const cJSON *root);
+app_result pj_read_tilings(pj_ctx *c, const cJSON *root);
+app_result pj_read_product_ref(pj_ctx *c, const cJSON *obj, const char *key, int required,
+                               app_product_ref *out);
+/* The plan's geometric rules: a simple counter-clockwise polygon without zero-length walls;
+ * openings, pre-walls and niches inside their wall; openings not overlapping; the slope
+ * inside the room; pre-wall names unique. The message names the path below $.plan. */
+app_result pj_check_plan(pj_ctx *c, const app_room_plan *plan);
+/* Sets p->room's width, depth and height from the plan's bounding box and height. */
+void pj_room_from_plan(app_project *p);
+/* A string member that must be one of names[0..count-1]; *out = its index. */
+app_result pj_get_enum(pj_ctx *c, const cJSON *obj, const char *key, int required,
+                       const char *const *names, int count, int *out);
+extern const char *const pj_opening_type_names[2];
+extern const char *const pj_swing_names[5];
+extern const char *const pj_pattern_names[6];
+extern const char *const pj_align_names[3];
 
 /* A material reference (the member `key` of obj): a name, or an inline material object which
  * is added as `inline_name`. Absent: the material "default" (added if the file has none).
@@ -162,6 +185,12 @@ void *pj_realloc(void *ptr, size_t size);
 
 /* Checks p and builds the JSON tree; paths relative to dest_dir (absolute) when non-NULL. */
 app_result pj_project_to_json(pj_ctx *c, const app_project *p, const char *dest_dir, cJSON **out);
+/* Adds "plan" and "tilings" to root (project_plan_to_json.c). A project without a plan
+ * (corner_count 0, built in memory by version 1 code) is written with its room box as four
+ * corners. */
+app_result pj_plan_to_json(pj_ctx *c, const app_project *p, cJSON *root);
+app_result pj_tilings_to_json(pj_ctx *c, const app_project *p, cJSON *root);
+cJSON *pj_product_ref_to_json(const app_product_ref *ref);
 /* Numbers printed with the fewest digits that read back to exactly the same value. */
 cJSON *pj_json_double(double v);
 cJSON *pj_json_float(float v);

@@ -1,4 +1,5 @@
-/* $.objects: primitives ("shape") and imported models ("model") placed in the room. */
+/* $.objects: primitives ("shape"), imported models ("model") and catalog products ("product",
+ * version 2) placed in the room. */
 #include "project_internal.h"
 
 #include <math.h>
@@ -85,13 +86,20 @@ static app_result read_object(pj_ctx *c, const cJSON *item, int index, app_objec
 
     const cJSON *shape = cJSON_GetObjectItemCaseSensitive(item, "shape");
     const cJSON *model = cJSON_GetObjectItemCaseSensitive(item, "model");
-    if (!shape == !model)
-        return pj_fail(c, APP_ERR_SCHEMA, "%s (an object has exactly one of the two)",
-                       shape ? "has both \"shape\" and \"model\""
-                             : "needs a \"shape\" or a \"model\"");
+    const cJSON *product = cJSON_GetObjectItemCaseSensitive(item, "product");
+    if ((shape != NULL) + (model != NULL) + (product != NULL) != 1)
+        return pj_fail(c, APP_ERR_SCHEMA, "%s (an object has exactly one of the three)",
+                       shape || model || product
+                           ? "has more than one of \"shape\", \"model\" and \"product\""
+                           : "needs a \"shape\", a \"model\" or a \"product\"");
     if (shape) {
         if ((r = read_shape(c, shape, o)) != APP_OK || (r = read_size(c, item, o)) != APP_OK)
             return r;
+    } else if (product) {
+        /* A catalog product: its model, size and material are looked up at scene build. */
+        if ((r = pj_read_product_ref(c, item, "product", 1, &o->product)) != APP_OK)
+            return r;
+        o->has_product = 1;
     } else {
         char rel[sizeof o->model];
         if ((r = pj_get_string(c, item, "model", 1, 0, rel, sizeof rel)) != APP_OK)

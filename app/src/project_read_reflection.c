@@ -6,7 +6,7 @@
 #include <string.h>
 
 const char *const pj_blend_names[3] = {"mix", "add", "fresnel"};
-const char *const pj_correction_names[4] = {"default", "none", "box", "sphere"};
+const char *const pj_correction_names[5] = {"default", "none", "box", "sphere", "depth"};
 const char *const pj_probe_update_names[6] = {"default",   "every-frame", "once",
                                               "on-change", "time-sliced", "static"};
 
@@ -97,7 +97,7 @@ app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material 
     if ((r = pj_member(c, item, "probe", cJSON_Object, 0, &probe)) != APP_OK || !probe)
         return r;
     size_t mark = pj_path_key(c, "probe");
-    if ((r = get_enum(c, probe, "correction", pj_correction_names, 4, &m->correction)) != APP_OK ||
+    if ((r = get_enum(c, probe, "correction", pj_correction_names, 5, &m->correction)) != APP_OK ||
         (r = get_enum(c, probe, "update", pj_probe_update_names, 6, &m->probe_update)) != APP_OK ||
         (r = pj_get_int(c, probe, "every", 0, 0, 1000000, &m->probe_every)) != APP_OK ||
         (r = pj_get_float(c, probe, "proxy_radius", 0, PJ_FLOAT_NONNEG, &m->proxy_radius_mm)) !=

@@ -163,7 +163,7 @@ static void put_reflection(jb *b, cJSON *o, const app_material *m)
         !m->probe_per_vertex)
         return;
     cJSON *probe = put_container(b, o, "probe", 0);
-    if (m->correction > 0 && m->correction < 4)
+    if (m->correction > 0 && m->correction < 5)
         put_str(b, probe, "correction", pj_correction_names[m->correction], 32);
     if (m->probe_update > 0 && m->probe_update < 6)
         put_str(b, probe, "update", pj_probe_update_names[m->probe_update], 32);
@@ -215,9 +215,6 @@ static void put_room(jb *b, cJSON *root)
     const app_room *room = &b->p->room;
     cJSON *o = put_container(b, root, "room", 0);
     size_t mark = pj_path_key(b->c, "room");
-    put_num(b, o, "width", room->width_mm, 0);
-    put_num(b, o, "depth", room->depth_mm, 0);
-    put_num(b, o, "height", room->height_mm, 0);
     put_material_ref(b, o, "floor", room->floor_material);
     put_material_ref(b, o, "walls", room->wall_material);
     put_material_ref(b, o, "ceiling", room->ceiling_material);
@@ -235,7 +232,16 @@ static void put_object(jb *b, cJSON *list, const app_object *obj)
         put_str(b, o, "group", obj->group, sizeof obj->group);
     if (b->r != APP_OK)
         return;
-    if (obj->shape == APP_SHAPE_MODEL) {
+    if (obj->has_product) {
+        cJSON *ref = pj_product_ref_to_json(&obj->product);
+        if (!ref && b->r == APP_OK) {
+            pj_path_key(b->c, "product");
+            b->r = pj_fail(b->c, APP_ERR_SCHEMA,
+                           "a product reference string is not terminated (or out of memory)");
+            return;
+        }
+        attach(b, o, "product", ref);
+    } else if (obj->shape == APP_SHAPE_MODEL) {
         put_path(b, o, "model", obj->model, sizeof obj->model);
     } else if ((unsigned)obj->shape < sizeof shape_names / sizeof shape_names[0]) {
         attach(b, o, "shape", cJSON_CreateString(shape_names[obj->shape]));
@@ -247,7 +253,7 @@ static void put_object(jb *b, cJSON *list, const app_object *obj)
     put_vec(b, o, "position", obj->position_mm, NULL, 3);
     put_vec(b, o, "rotation", obj->rotation_deg, NULL, 3);
     put_vec(b, o, "scale", obj->scale, NULL, 3);
-    if (obj->shape != APP_SHAPE_MODEL)
+    if (obj->shape != APP_SHAPE_MODEL && !obj->has_product)
         put_vec(b, o, "size", obj->size_mm, NULL, 3);
     put_material_ref(b, o, "material", obj->material);
 }
@@ -338,6 +344,10 @@ app_result pj_project_to_json(pj_ctx *c, const app_project *p, const char *dest_
     attach(&b, root, "version", cJSON_CreateNumber(APP_PROJECT_VERSION));
     put_str(&b, root, "name", p->name, sizeof p->name);
     put_room(&b, root);
+    if (b.r == APP_OK)
+        b.r = pj_plan_to_json(c, p, root);
+    if (b.r == APP_OK)
+        b.r = pj_tilings_to_json(c, p, root);
     put_materials(&b, root);
 
     const char *lists[] = {"objects", "lights", "cameras"};

@@ -55,6 +55,30 @@ static void sync_folder(const char *path)
     free(dir);
 }
 
+/* Keeps the file about to be replaced as PATH.bak: a second hard link to it, so PATH itself
+ * is never missing or partial (the rename that follows replaces PATH's entry in one step).
+ * The old backup is removed first; a kill in between leaves no backup but an intact PATH.
+ * Where hard links are impossible (some network and FAT file systems) the backup is skipped:
+ * the save itself must not fail for it. */
+static void keep_backup(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0 || !S_ISREG(st.st_mode))
+        return;
+    size_t plen = strlen(path);
+    char *bak = malloc(plen + sizeof ".bak");
+    if (!bak)
+        return;
+    memcpy(bak, path, plen);
+    memcpy(bak + plen, ".bak", sizeof ".bak");
+    if (unlink(bak) != 0 && errno != ENOENT) {
+        free(bak);
+        return;
+    }
+    (void)link(path, bak);
+    free(bak);
+}
+
 app_result pj_write_atomic(pj_ctx *c, const char *path, const char *data, size_t len)
 {
     struct stat st;
@@ -84,6 +108,8 @@ app_result pj_write_atomic(pj_ctx *c, const char *path, const char *data, size_t
         r = pj_fail_file(c, APP_ERR_IO, "cannot write (fsync): %s", strerror(errno));
     if (close(fd) != 0 && r == APP_OK)
         r = pj_fail_file(c, APP_ERR_IO, "cannot write (close): %s", strerror(errno));
+    if (r == APP_OK)
+        keep_backup(path);
     if (r == APP_OK && rename(tmp, path) != 0)
         r = pj_fail_file(c, APP_ERR_IO, "cannot replace the file: %s", strerror(errno));
     if (r != APP_OK)

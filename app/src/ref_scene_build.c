@@ -5,6 +5,7 @@
 #include "app/ref_scene_build.h"
 
 #include "app/image_compare.h"
+#include "app/room_mesh.h"
 #include "catalog/model.h"
 #include "render/image_io.h"
 #include "render/primitives.h"
@@ -85,11 +86,11 @@ static app_result load_texture(ref_scene *s, texture_cache *c, const char *path,
     return APP_OK;
 }
 
-/* app_scene_material's mapping; *texture gets the texture id (0 = none). */
-static app_result material_of(const app_project *p, ref_scene *s, texture_cache *c, int mi,
-                              rd_material *out, int *texture, char *err, size_t err_size)
+/* app_scene_material_of's mapping; *texture gets the texture id (0 = none). */
+static app_result material_from(const app_project *p, ref_scene *s, texture_cache *c,
+                                const app_material *am, rd_material *out, int *texture, char *err,
+                                size_t err_size)
 {
-    const app_material *am = &p->materials[mi];
     rd_material m = {.shininess = am->shininess,
                      .reflectivity = am->reflectivity,
                      .glossiness = am->glossiness,
@@ -116,31 +117,41 @@ static app_result material_of(const app_project *p, ref_scene *s, texture_cache 
     return APP_OK;
 }
 
-/* app_scene_add_room's rectangles (app_room_surface: the same geometry for both renderers),
- * closed (back faces culled). */
-static app_result add_room(const app_project *p, ref_scene *s, texture_cache *c, char *err,
-                           size_t err_size)
+static app_result material_of(const app_project *p, ref_scene *s, texture_cache *c, int mi,
+                              rd_material *out, int *texture, char *err, size_t err_size)
 {
-    for (int i = 0; i < 6; i++) {
-        app_room_quad q;
-        int mi;
-        app_room_surface(p, i, &q, &mi);
+    return material_from(p, s, c, &p->materials[mi], out, texture, err, err_size);
+}
+
+/* app_scene_add_room's meshes (app_room_geometry_build: the same geometry for both
+ * renderers), closed (back faces culled). */
+static app_result add_room(const app_project *p, const app_room_geometry *room, ref_scene *s,
+                           texture_cache *c, char *err, size_t err_size)
+{
+    for (int i = 0; i < room->mesh_count; i++) {
+        const app_room_mesh *rm = &room->meshes[i];
+        if (rm->index_count == 0)
+            continue;
         rd_material m;
         int texture;
-        app_result r = material_of(p, s, c, mi, &m, &texture, err, err_size);
+        app_result r =
+            rm->material >= 0
+                ? material_of(p, s, c, rm->material, &m, &texture, err, err_size)
+                : material_from(p, s, c, &rm->inline_material, &m, &texture, err, err_size);
         if (r != APP_OK)
             return r;
-        ref_mesh_desc d = {.positions = q.positions,
-                           .normals = q.normals,
-                           .uvs = q.uvs,
-                           .indices = q.indices,
-                           .vertex_count = 4,
-                           .index_count = 6,
+        ref_mesh_desc d = {.positions = rm->positions,
+                           .normals = rm->normals,
+                           .uvs = rm->uvs,
+                           .indices = rm->indices,
+                           .vertex_count = rm->vertex_count,
+                           .index_count = rm->index_count,
                            .material = m,
-                           .texture = texture};
+                           .texture = texture,
+                           .background = 1}; /* as scene_room.c: casts no shadow */
         if (ref_scene_add_mesh(s, &d) != REF_OK) {
-            char where[1100];
-            snprintf(where, sizeof where, "%s: room surface %d", p->path, i);
+            char where[1200];
+            snprintf(where, sizeof where, "%s: room surface %s", p->path, rm->surface);
             return ref_error(APP_ERR_OUT_OF_MEMORY, where, err, err_size);
         }
     }
@@ -271,8 +282,26 @@ static void light_of(const app_light *l, rd_light *out)
     *out = r;
 }
 
+static app_result ref_scene_build(app_scene_products *q, ref_scene **out, char *err,
+                                  size_t err_size);
+
+/* Products resolved through the catalog as for the GPU scene (scene_products.c). */
 app_result app_ref_scene_build(const app_project *p, ref_scene **out, char *err, size_t err_size)
 {
+    app_scene_products q;
+    *out = NULL;
+    app_result r = app_scene_resolve_products(p, &q, err, err_size);
+    if (r != APP_OK)
+        return r;
+    r = ref_scene_build(&q, out, err, err_size);
+    app_scene_resolved_free(&q);
+    return r;
+}
+
+static app_result ref_scene_build(app_scene_products *q, ref_scene **out, char *err,
+                                  size_t err_size)
+{
+    const app_project *p = &q->q;
     *out = NULL;
     if (err && err_size)
         err[0] = 0;
@@ -281,8 +310,17 @@ app_result app_ref_scene_build(const app_project *p, ref_scene **out, char *err,
         return ref_error(APP_ERR_OUT_OF_MEMORY, p->path, err, err_size);
     ref_scene_set_ambient(s, p->render.ambient);
     texture_cache cache = {0};
-    app_result r = add_room(p, s, &cache, err, err_size);
+    app_room_geometry room;
+    app_result r = app_room_geometry_build(p, &room, err, err_size);
+    if (r != APP_OK) {
+        ref_scene_destroy(s);
+        return r;
+    }
+    app_room_add_tiles(p, q->covers, q->cover_count, &q->catalog, &room); /* as scene_build.c */
+    r = add_room(p, &room, s, &cache, err, err_size);
     for (int i = 0; r == APP_OK && i < p->object_count; i++) {
+        if (APP_OBJECT_UNRESOLVED(&p->objects[i]))
+            continue; /* as scene_objects.c */
         rd_material m;
         int texture;
         r = material_of(p, s, &cache, p->objects[i].material, &m, &texture, err, err_size);
@@ -299,6 +337,17 @@ app_result app_ref_scene_build(const app_project *p, ref_scene **out, char *err,
             r = APP_ERR_SCHEMA;
         }
     }
+    /* scene_build.c's daylight through the windows, after the project's lights. */
+    for (int i = 0; r == APP_OK && i < room.light_count; i++) {
+        rd_light l;
+        light_of(&room.lights[i], &l);
+        if (ref_scene_add_light(s, &l) != REF_OK) {
+            snprintf(err, err_size, "%s: window light \"%s\": %s", p->path, room.lights[i].name,
+                     ref_last_error());
+            r = APP_ERR_SCHEMA;
+        }
+    }
+    app_room_geometry_free(&room);
     free(cache.paths);
     free(cache.ids);
     if (r == APP_ERR_OUT_OF_MEMORY && err && err_size && !err[0])

@@ -77,7 +77,13 @@ static app_result load_texture(rd_context *ctx, app_scene *s, const char *path, 
 app_result app_scene_material(rd_context *ctx, const app_project *p, app_scene *s, int mi,
                               rd_material *out, char *err, size_t err_size)
 {
-    const app_material *am = &p->materials[mi];
+    return app_scene_material_of(ctx, p, s, &p->materials[mi], out, err, err_size);
+}
+
+app_result app_scene_material_of(rd_context *ctx, const app_project *p, app_scene *s,
+                                 const app_material *am, rd_material *out, char *err,
+                                 size_t err_size)
+{
     rd_material m = {.shininess = am->shininess,
                      .reflectivity = am->reflectivity,
                      .glossiness = am->glossiness,
@@ -123,9 +129,27 @@ static void add_light(const app_light *l, rd_light *out)
     *out = r;
 }
 
+static app_result scene_build(rd_context *ctx, app_scene_products *q, app_scene *out, char *err,
+                              size_t err_size);
+
 app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out, char *err,
                            size_t err_size)
 {
+    app_scene_products q;
+    app_result r = app_scene_resolve_products(p, &q, err, err_size);
+    if (r != APP_OK) {
+        memset(out, 0, sizeof *out);
+        return r;
+    }
+    r = scene_build(ctx, &q, out, err, err_size);
+    app_scene_resolved_free(&q);
+    return r;
+}
+
+static app_result scene_build(rd_context *ctx, app_scene_products *q, app_scene *out, char *err,
+                              size_t err_size)
+{
+    const app_project *p = &q->q;
     memset(out, 0, sizeof *out);
     out->scene = rd_scene_create(ctx);
     if (!out->scene) {
@@ -135,12 +159,23 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
     rd_scene_set_ambient(out->scene, p->render.ambient);
     /* The box proxy of the corrected reflection vector is the room's interior: in a bathroom
      * the walls are what a fixture reflects (RENDERING.md section 4). */
-    rd_reflection_defaults refl = {
-        .ambient = p->render.ambient_model == 1 ? RD_AMBIENT_SH9 : RD_AMBIENT_CONSTANT,
-        .proxy_max = {(float)(p->room.width_mm * 1e-3), (float)(p->room.depth_mm * 1e-3),
-                      (float)(p->room.height_mm * 1e-3)}};
+    app_room_geometry room;
+    app_result r = app_room_geometry_build(p, &room, err, err_size);
+    if (r != APP_OK) {
+        app_scene_release(ctx, out);
+        return r;
+    }
+    app_room_add_tiles(p, q->covers, q->cover_count, &q->catalog, &room);
+    /* The room's bounding box (the plan's, from the floor to the flat ceiling): for a
+     * version 1 room exactly (0,0,0)-(width,depth,height) as before. */
+    rd_reflection_defaults refl = {.ambient = p->render.ambient_model == 1 ? RD_AMBIENT_SH9
+                                                                           : RD_AMBIENT_CONSTANT};
+    for (int k = 0; k < 3; k++) {
+        refl.proxy_min[k] = (float)room.bounds_min[k];
+        refl.proxy_max[k] = (float)room.bounds_max[k];
+    }
     rd_scene_set_reflection_defaults(out->scene, &refl);
-    app_result r = app_scene_add_room(ctx, p, out, err, err_size);
+    r = app_scene_add_room(ctx, p, &room, out, err, err_size);
     if (r == APP_OK)
         r = app_scene_add_objects(ctx, p, out, err, err_size);
     for (int i = 0; r == APP_OK && i < p->light_count; i++) {
@@ -151,6 +186,17 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
             r = APP_ERR_SCHEMA;
         }
     }
+    /* Daylight through the windows (app/room_mesh.h), after the project's own lights. */
+    for (int i = 0; r == APP_OK && i < room.light_count; i++) {
+        rd_light l;
+        add_light(&room.lights[i], &l);
+        if (rd_scene_add_light(out->scene, &l) != RD_OK) {
+            snprintf(err, err_size, "%s: window light \"%s\": %s", p->path, room.lights[i].name,
+                     rd_last_error());
+            r = APP_ERR_SCHEMA;
+        }
+    }
+    app_room_geometry_free(&room);
     if (r != APP_OK)
         app_scene_release(ctx, out);
     return r;

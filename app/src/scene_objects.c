@@ -225,6 +225,8 @@ app_result app_scene_add_objects(rd_context *ctx, const app_project *p, app_scen
     for (int i = 0; i < p->object_count; i++) {
         rd_material m;
         s->object_parts[i][0] = rd_scene_object_count(s->scene);
+        if (APP_OBJECT_UNRESOLVED(&p->objects[i]))
+            continue; /* a product without a size: warned about in scene_products.c */
         app_result r = app_scene_material(ctx, p, s, p->objects[i].material, &m, err, err_size);
         if (r == APP_OK)
             r = p->objects[i].shape == APP_SHAPE_MODEL

@@ -143,7 +143,7 @@ static void test_roundtrip(void)
         CHECK(tu_contains(text, "textures/wall.png\""));
         CHECK(tu_contains(text, "models/tap.glb\""));
         CHECK(!tu_contains(text, "\"texture\":\t\"/"));
-        CHECK(tu_contains(text, "\"version\":\t1,"));
+        CHECK(tu_contains(text, "\"version\":\t2,"));
         CHECK(len > 0 && text[len - 1] == '\n');
         free(text);
     }
@@ -338,9 +338,9 @@ static void test_invalid_project_is_not_written(void)
                          "$.cameras[0].fov: ", "must be in (1, 179), got 0");
     a.cameras[0].fov_deg = 50;
 
-    a.room.width_mm = -1;
-    expect_write_failure(path, &a, APP_ERR_SCHEMA, "$.room.width: ", "must be > 0, got -1");
-    a.room.width_mm = 2400;
+    a.plan.height_mm = -1;
+    expect_write_failure(path, &a, APP_ERR_SCHEMA, "$.plan.height: ", "must be > 0, got -1");
+    a.plan.height_mm = 2500;
 
     int cameras = a.camera_count;
     a.camera_count = 0;

@@ -1,7 +1,8 @@
 /* Tessera project document: the in-memory model of a project file and its JSON reader/writer.
  *
- * The file format (version 1) is described in docs/project-format.md. Units: millimetres,
- * right-handed, Z up; the room's interior spans x in [0,width], y in [0,depth], z in [0,height].
+ * The file format (version 2) is described in docs/project-format.md. Units: millimetres,
+ * right-handed, Z up; the room is the floor plan polygon (app/room.h) from z = 0 up to its
+ * height; app_room's width and depth are the size of its bounding box.
  *
  * Every call that can fail returns an app_result and writes a one-line message into err
  * (when err is non-NULL and err_size > 0) of the form
@@ -19,7 +20,7 @@
 extern "C" {
 #endif
 
-#define APP_PROJECT_VERSION 1
+#define APP_PROJECT_VERSION 2
 
 /* Limits a file must respect; larger inputs are refused with a message, never truncated. */
 #define APP_PROJECT_MAX_FILE_BYTES (64L * 1024 * 1024)
@@ -66,7 +67,13 @@ typedef struct app_material {
 } app_material;
 
 enum { APP_BLEND_MIX = 0, APP_BLEND_ADD, APP_BLEND_FRESNEL };
-enum { APP_CORRECTION_DEFAULT = 0, APP_CORRECTION_NONE, APP_CORRECTION_BOX, APP_CORRECTION_SPHERE };
+enum {
+    APP_CORRECTION_DEFAULT = 0,
+    APP_CORRECTION_NONE,
+    APP_CORRECTION_BOX,
+    APP_CORRECTION_SPHERE,
+    APP_CORRECTION_DEPTH
+};
 enum {
     APP_PROBE_DEFAULT = 0,
     APP_PROBE_EVERY_FRAME,
@@ -149,8 +156,8 @@ typedef struct app_project {
     int version;      /* always APP_PROJECT_VERSION after a read (the model is current) */
     int file_version; /* the "version" found in the file, before migration */
     char name[128];
-    char path[1024]; /* the file it was read from, absolute ("" after app_project_parse
-                        without a path) */
+    char path[1024];    /* the file it was read from, absolute ("" after app_project_parse
+                           without a path) */
     app_room room;      /* version 1 box; kept in step with plan's bounding box */
     app_room_plan plan; /* version 2 floor plan (a v1 file migrates to 4 corners) */
     app_tiling *tilings;

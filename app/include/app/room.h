@@ -43,13 +43,13 @@ typedef enum app_door_swing {
 typedef struct app_opening {
     char name[64];
     app_opening_type type;
-    int wall;          /* index of the wall it is cut into */
-    double offset_mm;  /* along the wall, from its start corner to the opening's near edge */
-    double width_mm;   /* along the wall */
-    double height_mm;  /* clear height */
-    double sill_mm;    /* bottom edge above the floor; 0 for doors */
+    int wall;             /* index of the wall it is cut into */
+    double offset_mm;     /* along the wall, from its start corner to the opening's near edge */
+    double width_mm;      /* along the wall */
+    double height_mm;     /* clear height */
+    double sill_mm;       /* bottom edge above the floor; 0 for doors */
     app_door_swing swing; /* doors only */
-    float light[3];    /* windows: linear RGB of the daylight coming in (0 = none) */
+    float light[3];       /* windows: linear RGB of the daylight coming in (0 = none) */
 } app_opening;
 
 /* A boxed-in installation wall (pre-wall for a wall-hung WC, a shelf-high duct) standing
@@ -106,11 +106,11 @@ typedef struct app_product_ref {
 } app_product_ref;
 
 typedef enum app_tile_pattern {
-    APP_PATTERN_STRAIGHT = 0, /* grid */
-    APP_PATTERN_HALF_OFFSET,  /* running bond, each row shifted by half a tile */
-    APP_PATTERN_THIRD_OFFSET, /* each row shifted by a third */
+    APP_PATTERN_STRAIGHT = 0,   /* grid */
+    APP_PATTERN_HALF_OFFSET,    /* running bond, each row shifted by half a tile */
+    APP_PATTERN_THIRD_OFFSET,   /* each row shifted by a third */
     APP_PATTERN_VERTICAL_STACK, /* tiles stood upright (long side vertical), in a grid */
-    APP_PATTERN_DIAGONAL,     /* a grid turned 45 degrees */
+    APP_PATTERN_DIAGONAL,       /* a grid turned 45 degrees */
     APP_PATTERN_HERRINGBONE
 } app_tile_pattern;
 
@@ -133,16 +133,16 @@ typedef struct app_tile_border {
  * 1200 mm with one tile and above with another). */
 typedef struct app_tiling {
     char name[64];
-    char surface[96];          /* "wall:0", "floor", "prewall:wc-box:front", ... */
-    app_product_ref product;   /* the field tile (UNI) */
+    char surface[96];        /* "wall:0", "floor", "prewall:wc-box:front", ... */
+    app_product_ref product; /* the field tile (UNI) */
     app_tile_pattern pattern;
-    double grout_mm;           /* joint width, >= 0; 0 = the tile's own default */
-    float grout_color[3];      /* linear RGB */
+    double grout_mm;      /* joint width, >= 0; 0 = the tile's own default */
+    float grout_color[3]; /* linear RGB */
     app_tile_align align;
-    double origin_mm[2];       /* APP_ALIGN_LINE: a grid point, surface coordinates (s, up) */
-    double rotation_deg;       /* the whole layout turned about the origin */
-    double from_mm, to_mm;     /* walls: the band tiled, heights above the floor; to_mm = 0
-                                  means up to the ceiling. Floors and ceilings: ignored. */
+    double origin_mm[2];   /* APP_ALIGN_LINE: a grid point, surface coordinates (s, up) */
+    double rotation_deg;   /* the whole layout turned about the origin */
+    double from_mm, to_mm; /* walls: the band tiled, heights above the floor; to_mm = 0
+                              means up to the ceiling. Floors and ceilings: ignored. */
     app_tile_border borders[APP_TILING_MAX_BORDERS];
     int border_count;
 } app_tiling;

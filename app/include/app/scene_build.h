@@ -31,14 +31,8 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
                            size_t err_size);
 void app_scene_release(rd_context *ctx, app_scene *s);
 
-/* One of the room's six inward rectangles (0 floor, 1 ceiling, 2-5 walls) in metres, with
- * texture coordinates in repeats of its material's real-world texture size: the geometry both
- * the GPU scene and the reference tracer's scene are built from. */
-typedef struct app_room_quad {
-    float positions[12], normals[12], uvs[8];
-    uint32_t indices[6];
-} app_room_quad;
-void app_room_surface(const app_project *p, int surface, app_room_quad *out, int *material);
+/* The room's geometry, the same for the GPU scene and the reference tracer's scene, is
+ * app_room_geometry_build (app/room_mesh.h). */
 
 /* The view of a named camera (NULL = the first) at a size (0 = the project's render size). */
 app_result app_view_from_camera(const app_project *p, const char *camera, int width, int height,
