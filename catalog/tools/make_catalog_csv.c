@@ -729,7 +729,28 @@ typedef struct product {
     const material *variants[4];
     int variant_count;
     const tile_data *tile;
+    int has_model; /* 1: the model column names the generated GLB (make_models.c) */
 } product;
+
+/* The model path, as cat_model_file_name() in catalog/src/gen_path.c makes it (the test
+ * catalog.test_model_shipped checks that both agree): "models/<maker>/<article>.glb", each
+ * lower-cased with every run of other characters than a-z, 0-9 turned into one '-'. */
+static void put_slug(FILE *f, const char *s)
+{
+    int dash = 0, any = 0;
+    for (; *s; s++) {
+        char ch = (char)(*s >= 'A' && *s <= 'Z' ? *s - 'A' + 'a' : *s);
+        if ((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9')) {
+            if (dash && any)
+                fputc('-', f);
+            fputc(ch, f);
+            dash = 0;
+            any = 1;
+        } else {
+            dash = 1;
+        }
+    }
+}
 
 static void write_rows(FILE *f, const product *p)
 {
@@ -756,7 +777,14 @@ static void write_rows(FILE *f, const product *p)
         put_num(f, p->h);
         fputc(',', f);
         put_money(f, p->price_cents);
-        fprintf(f, ",EUR,19,%s,%s,", p->unit, p->discount_group); /* model: none yet */
+        fprintf(f, ",EUR,19,%s,%s,", p->unit, p->discount_group);
+        if (p->has_model) {
+            fputs("models/", f);
+            put_slug(f, p->m->name);
+            fputc('/', f);
+            put_slug(f, p->article);
+            fputs(".glb", f);
+        }
         if (p->variant_count) {
             const material *m = p->variants[v];
             fprintf(f, ",%s,", m->code);
@@ -874,6 +902,7 @@ static int series_products(FILE *f, int maker_id, const char *category, const ch
                  1 + (int)(price_factor * 2) % 3);
         for (int v = 0; v < 4 && t->variants->m[v]; v++)
             p.variants[p.variant_count++] = t->variants->m[v];
+        p.has_model = 1;
         write_rows(f, &p);
     }
     return count;
