@@ -8,6 +8,7 @@ in vec2 v_uv;
 uniform vec3 u_eye;
 uniform vec3 u_ambient_light; // I_a
 uniform float u_specular_scale; // 1; 0 in probe captures that leave highlights out
+uniform float u_store_distance; // 1 in probe captures: alpha = distance from u_eye (the centre)
 #ifdef SH9_AMBIENT
 // A variant of its own: even behind a uniform branch llvmpipe pays for the SH code on every
 // pixel, so the constant model's programs do not contain it (section 8).
@@ -43,7 +44,11 @@ uniform mat3 u_view_rot; // world to view: the viewer looks down -Z
 #ifdef HAS_REFLECTION
 uniform samplerCube u_probe;
 uniform vec3 u_probe_centre;
-uniform int u_correction; // 1 none, 2 box, 3 sphere
+uniform int u_correction; // 1 none, 2 box, 3 sphere, 4 depth (the stored distances, box beyond)
+uniform samplerCube u_probe_distance; // the capture: alpha = distance from the probe centre
+uniform samplerCube u_probe_surface;  // "depth" probes: octahedral normal, specular, shininess
+uniform int u_surface_highlights;     // 1: the capture left highlights to reflected_highlight
+uniform float u_lobe_exponent;        // n(g) of the blur lobe; 0 for a mirror
 uniform vec3 u_proxy_min, u_proxy_max;
 uniform float u_proxy_radius;
 uniform float u_kr;
@@ -53,7 +58,9 @@ uniform float u_transparency, u_ior, u_dispersion;
 uniform int u_thin; // a double-sided sheet: light passes straight through
 #endif
 
-out vec4 frag_color;
+layout(location = 0) out vec4 frag_color;
+// Probe captures of "depth" probes: what a highlight seen from elsewhere needs (probe.c).
+layout(location = 1) out vec4 frag_surface;
 
 #ifdef SH9_AMBIENT
 // Irradiance from nine SH coefficients, Ramamoorthi and Hanrahan 2001 eq. 13, with their
@@ -84,6 +91,78 @@ float spot_factor(float cos_angle, vec2 inner_outer)
     return t * t * (3.0 - 2.0 * t);
 }
 
+// Octahedral normal encoding (Cigolle et al. 2014, "A survey of efficient representations for
+// independent unit vectors"): a unit vector in two numbers.
+vec2 sign_not_zero(vec2 v)
+{
+    return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0);
+}
+
+vec2 oct_encode(vec3 n)
+{
+    n /= max(abs(n.x) + abs(n.y) + abs(n.z), 1e-20);
+    return n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * sign_not_zero(n.xy);
+}
+
+#ifdef HAS_REFLECTION
+vec3 oct_decode(vec2 e)
+{
+    vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    if (n.z < 0.0)
+        n.xy = (1.0 - abs(n.yx)) * sign_not_zero(n.xy);
+    float l = length(n);
+    return l > 0.0 ? n / l : vec3(0.0, 0.0, 1.0);
+}
+
+// The highlight (eqs. 3-5) of the surface a "depth" probe saw in direction d, seen from the
+// reflecting point p instead of from the probe centre: what the reference's secondary ray
+// shades (docs/reference.md). The capture stored that surface's distance, normal, specular and
+// shininess and left its highlight out, since a highlight depends on where it is seen from.
+vec3 reflected_highlight(vec3 d, vec3 p)
+{
+    vec3 cm = world_to_cmcs(d);
+    vec4 sf = textureLod(u_probe_surface, cm, 0.0);
+    float dist = textureLod(u_probe_distance, cm, 0.0).a;
+    float dl = length(d);
+    if (sf.w < 0.0 || sf.z <= 0.0 || dist > 6e4 || dl <= 0.0)
+        return vec3(0.0);
+    vec3 x = u_probe_centre + d / dl * dist;
+    vec3 n = oct_decode(sf.xy);
+    // A glossy lookup sees the highlight through its lobe: as Gaussians, a highlight
+    // (N.H)^m is exp(-m a^2 / 8) in the reflected direction's angle a and the normalised lobe
+    // of exponent b has precision b, so their convolution has exponent m b / (m / 4 + b) and
+    // peak b / (m / 4 + b).
+    float shininess = sf.w, peak = 1.0;
+    if (u_lobe_exponent > 0.0) {
+        peak = u_lobe_exponent / (0.25 * shininess + u_lobe_exponent);
+        shininess *= peak;
+    }
+    vec3 v = p - x;
+    float vl = length(v);
+    v = vl > 0.0 ? v / vl : n;
+    vec3 sum = vec3(0.0);
+    for (int i = 0; i < u_light_count; i++) {
+        vec3 L;
+        float k = 1.0;
+        if (u_light_type[i] == 2) {
+            L = -u_light_direction[i];
+        } else {
+            vec3 ld = u_light_position[i] - x;
+            float ll = length(ld);
+            L = ll > 0.0 ? ld / ll : n;
+            vec3 a = u_light_attenuation[i];
+            k = 1.0 / max(a.x + a.y * ll + a.z * ll * ll, 1e-4);
+            if (u_light_type[i] == 1)
+                k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
+        }
+        if (dot(n, L) <= 0.0)
+            continue;
+        sum += k * sf.z * u_light_specular[i] * blinn_phong_power(dot(n, normalize(L + v)), shininess);
+    }
+    return peak * sum;
+}
+#endif
+
 void main()
 {
     vec3 V = u_eye - v_world;
@@ -110,6 +189,9 @@ void main()
 #else
     vec3 lit = c_a * u_ambient_light;
 #endif
+#ifdef HAS_SHADOWS
+    shadow_begin(N); // this sample's soft-shadow disk, shared by the lights (shadow.glsl)
+#endif
     for (int i = 0; i < u_light_count; i++) {
         vec3 L;
         float k = 1.0;
@@ -127,6 +209,10 @@ void main()
         float n_dot_l = dot(N, L);
         if (n_dot_l <= 0.0)
             continue; // no diffuse and no specular from behind the surface
+#ifdef HAS_SHADOWS
+        if (k > 0.0) // no lookup where the light does not reach (outside a spot's cone)
+            k *= shadow_visibility(i, u_light_type[i], u_light_position[i], v_world, N, L);
+#endif
         vec3 H = normalize(L + V);
         lit += k * c_d * u_light_diffuse[i] * n_dot_l;                                      // eq. 2
         lit += u_specular_scale * k * u_mat_specular * u_light_specular[i] *
@@ -140,6 +226,8 @@ void main()
     vec3 r = reflect(-V, N);
     vec3 d = u_correction == 2   ? correct_box(v_world, r, u_proxy_min, u_proxy_max, u_probe_centre)
              : u_correction == 3 ? correct_sphere(v_world, r, u_probe_centre, u_proxy_radius)
+             : u_correction == 4 ? correct_depth(u_probe_distance, v_world, r, u_proxy_min, u_proxy_max,
+                                                 u_probe_centre)
                                  : r;
 #endif
 #ifdef SPHERE_MAP
@@ -147,6 +235,8 @@ void main()
 #else
     vec3 refl = textureLod(u_probe, world_to_cmcs(d), u_lod).rgb;
 #endif
+    if (u_surface_highlights == 1)
+        refl += reflected_highlight(d, v_world);
     if (u_transparency > 0.0) {
         // Seed 003: refraction with an IOR, total internal reflection, optional dispersion
         // (one IOR per channel). A thin sheet displaces the ray but does not turn it.
@@ -157,6 +247,8 @@ void main()
             vec3 dt = dot(t, t) == 0.0 ? d // total internal reflection
                       : u_correction == 2 ? correct_box(v_world, t, u_proxy_min, u_proxy_max, u_probe_centre)
                       : u_correction == 3 ? correct_sphere(v_world, t, u_probe_centre, u_proxy_radius)
+                      : u_correction == 4 ? correct_depth(u_probe_distance, v_world, t, u_proxy_min,
+                                                          u_proxy_max, u_probe_centre)
                                           : t;
             refr[ch] = textureLod(u_probe, world_to_cmcs(dt), u_lod)[ch];
             if (u_dispersion <= 0.0) {
@@ -168,5 +260,12 @@ void main()
     }
     lit = blend_reflection(u_blend, u_kr, u_mat_specular, lit, refl, dot(N, V));
 #endif
-    frag_color = vec4(max(u_mat_emissive, lit), 1.0); // eq. 7
+    // A probe capture keeps the distance to what it saw for the "depth" lookup (reflect.glsl).
+    frag_color = vec4(max(u_mat_emissive, lit),
+                      u_store_distance > 0.0 ? length(v_world - u_eye) : 1.0); // eq. 7
+    // Emissive surfaces keep no highlight: the max of eq. 7 mostly hides it.
+    frag_surface = vec4(oct_encode(N),
+                        any(greaterThan(u_mat_emissive, vec3(0.0))) ? 0.0
+                                                                     : dot(u_mat_specular, vec3(1.0 / 3.0)),
+                        min(u_mat_shininess, 65000.0));
 }

@@ -31,7 +31,8 @@ void main()
 #ifdef PER_VERTEX_REFLECTION
     vec3 n = normalize(v_normal);
     vec3 r = reflect(normalize(world.xyz - u_eye), n);
-    v_reflect = u_correction == 2   ? correct_box(world.xyz, r, u_proxy_min, u_proxy_max, u_probe_centre)
+    // Per vertex, "depth" (4) has no stored distances to search: the box proxy.
+    v_reflect = u_correction == 2 || u_correction == 4 ? correct_box(world.xyz, r, u_proxy_min, u_proxy_max, u_probe_centre)
                 : u_correction == 3 ? correct_sphere(world.xyz, r, u_probe_centre, u_proxy_radius)
                                     : r;
 #endif

@@ -24,6 +24,79 @@ vec3 correct_box(vec3 p, vec3 r, vec3 bmin, vec3 bmax, vec3 c)
     return (isinf(t) || isnan(t) || dot(d, d) == 0.0) ? r : d;
 }
 
+// The far end of the box proxy along the ray from p (the t of correct_box), or -1 when the box
+// gives none (p outside it, a degenerate box).
+float box_exit(vec3 p, vec3 r, vec3 bmin, vec3 bmax)
+{
+    if (any(greaterThanEqual(bmin, bmax)) || any(lessThanEqual(p, bmin)) ||
+        any(greaterThanEqual(p, bmax)))
+        return -1.0;
+    vec3 rs = vec3(r.x >= 0.0 ? max(r.x, 1e-8) : min(r.x, -1e-8),
+                   r.y >= 0.0 ? max(r.y, 1e-8) : min(r.y, -1e-8),
+                   r.z >= 0.0 ? max(r.z, 1e-8) : min(r.z, -1e-8));
+    vec3 far_t = max((bmax - p) / rs, (bmin - p) / rs);
+    float t = min(min(far_t.x, far_t.y), far_t.z);
+    return (isinf(t) || isnan(t) || t <= 0.0) ? -1.0 : t;
+}
+
+// How far the point o (relative to the probe centre) lies in front of what the probe saw in
+// its direction: the stored distance minus |o|; > 0 in front of the surface, < 0 behind it.
+float depth_gap(samplerCube dist, vec3 o)
+{
+    return textureLod(dist, world_to_cmcs(o), 0.0).a - length(o);
+}
+
+// "depth" correction: distance impostors (Szirmay-Kalos, Aszodi, Lazanyi and Premecz 2005,
+// "Approximate ray-tracing on the GPU with distance impostors"). The capture stored in alpha
+// the distance from the probe centre c to the surface it saw in each direction, so the
+// reflected ray P + tR can be intersected with what the probe saw instead of with a proxy:
+// a linear search for the first step that passes from in front of the stored surface to
+// behind it, then secant steps between the two. The steps are uniform in a = t / (t + s)
+// (s = |P - c|, the homogeneous parameter of the paper), so they are dense where the ray's
+// image on the cube map moves fast, near P, and sparse far away; the search ends at the box
+// proxy's far wall (nothing of the room lies beyond it). A crossing whose secant does not
+// converge onto the stored surface is a silhouette (the ray passes behind a nearer object
+// as seen from c) and the search goes on. No crossing: the box-corrected direction.
+vec3 correct_depth(samplerCube dist, vec3 p, vec3 r, vec3 bmin, vec3 bmax, vec3 c)
+{
+    const int LINEAR_STEPS = 32, SECANT_STEPS = 5;
+    float t_end = box_exit(p, r, bmin, bmax);
+    vec3 fallback = correct_box(p, r, bmin, bmax, c);
+    if (t_end <= 0.0)
+        return fallback;
+    vec3 o = p - c;
+    float s = max(length(o), 1e-3 * t_end);
+    float a_end = t_end / (s + t_end);
+    float t_prev = 0.0, g_prev = -1.0;
+    for (int i = 1; i <= LINEAR_STEPS; i++) {
+        float a = a_end * float(i) / float(LINEAR_STEPS);
+        float t = i == LINEAR_STEPS ? t_end : s * a / (1.0 - a);
+        float g = depth_gap(dist, o + t * r);
+        if (g <= 0.0 && g_prev > 0.0) {
+            // Secant between the last point in front (t_lo, g_lo > 0) and this one behind.
+            float t_lo = t_prev, g_lo = g_prev, t_hi = t, g_hi = g, t_hit = t;
+            for (int k = 0; k < SECANT_STEPS; k++) {
+                t_hit = t_lo + (t_hi - t_lo) * g_lo / max(g_lo - g_hi, 1e-20);
+                float gm = depth_gap(dist, o + t_hit * r);
+                if (gm > 0.0) {
+                    t_lo = t_hit;
+                    g_lo = gm;
+                } else {
+                    t_hi = t_hit;
+                    g_hi = gm;
+                }
+            }
+            vec3 hit = o + t_hit * r;
+            // On the stored surface within a few per cent of its distance: a hit.
+            if (abs(depth_gap(dist, hit)) < 0.03 * length(hit) + 0.25 * (t - t_prev))
+                return hit;
+        }
+        t_prev = t;
+        g_prev = g;
+    }
+    return fallback;
+}
+
 // Section 4, sphere proxy of radius rad around c: the t > 0 root of |P + tR - c| = rad.
 vec3 correct_sphere(vec3 p, vec3 r, vec3 c, float rad)
 {

@@ -70,7 +70,19 @@ rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_s
     }
     mat4 view, proj, vp;
     glm_lookat(eye, target, up, view);
-    glm_perspective(glm_rad(fov), (float)v->width / (float)v->height, near_m, far_m, proj);
+    if (v->full_width > 0 && v->full_height > 0) {
+        /* A window of the full image: the same frustum, cut at the window's pixel edges
+         * (tiled rendering, renderer_tiled.c). */
+        float top = near_m * tanf(0.5f * glm_rad(fov));
+        float right = top * (float)v->full_width / (float)v->full_height;
+        float fw = (float)v->full_width, fh = (float)v->full_height;
+        glm_frustum(-right + 2.0f * right * (float)v->crop_x / fw,
+                    -right + 2.0f * right * (float)(v->crop_x + v->width) / fw,
+                    top - 2.0f * top * (float)(v->crop_y + v->height) / fh,
+                    top - 2.0f * top * (float)v->crop_y / fh, near_m, far_m, proj);
+    } else {
+        glm_perspective(glm_rad(fov), (float)v->width / (float)v->height, near_m, far_m, proj);
+    }
     glm_mat4_mul(proj, view, vp);
     if (view_rot) {
         mat3 rot;

@@ -2,6 +2,9 @@
 #include "draw.h"
 #include "gl_funcs.h"
 #include "probe.h"
+#include "shadow.h"
+
+#include "render/reflect_ref.h"
 
 #include <cglm/cglm.h>
 #include <stdlib.h>
@@ -40,6 +43,7 @@ void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float v
     }
     glUniform1i(p->u_diffuse_texture, 0);
     glUniform1f(p->u_specular_scale, 1.0f);
+    glUniform1f(p->u_store_distance, 0.0f);
     if (s->reflection.ambient == RD_AMBIENT_SH9)
         glUniform3fv(p->u_sh, 9, &s->sh9[0][0]);
 }
@@ -121,6 +125,20 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glUniform1i(p->u_probe, 1);
     glUniform3fv(p->u_probe_centre, 1, probe->centre);
     glUniform1i(p->u_correction, (int)c);
+    /* "depth" searches the capture's stored distances (alpha); a prepared map has none. */
+    if (c == RD_CORRECTION_DEPTH &&
+        (!probe->capture || s->objects[probe->owner].probe.update == RD_PROBE_STATIC))
+        glUniform1i(p->u_correction, (int)RD_CORRECTION_BOX);
+    glActiveTexture(GL_TEXTURE3);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, probe->capture);
+    glUniform1i(p->u_probe_distance, 3);
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, probe->surface);
+    glUniform1i(p->u_probe_surface, 4);
+    glUniform1i(p->u_surface_highlights, probe->surface ? 1 : 0);
+    glUniform1f(p->u_lobe_exponent,
+                m->glossiness < 1.0f ? rd_ref_gloss_exponent(m->glossiness) : 0.0f);
+    glActiveTexture(GL_TEXTURE1);
     glUniform3fv(p->u_proxy_min, 1, bmin);
     glUniform3fv(p->u_proxy_max, 1, bmax);
     const rd_probe_desc *pd = &s->objects[probe->owner].probe;
@@ -152,6 +170,7 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
     memcpy(vp, pass->view_proj, sizeof vp);
     glm_frustum_planes(vp, planes);
     int frame_uniforms_set[RD_LIT_VARIANTS] = {0};
+    int shadows = pass->shadows && rd_shadows_active(scene);
     for (int i = 0; i < scene->object_count; i++) {
         int index = items[i].index;
         const rd_object_desc *o = &scene->objects[index];
@@ -192,7 +211,8 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
                            : 0) |
                       (probe && o->material.sphere_map && probe->sphere_map && pass->view_rot
                            ? RD_LIT_SPHERE_MAP
-                           : 0);
+                           : 0) |
+                      (shadows ? RD_LIT_SHADOWS : 0);
         const rd_program *p = rd_lit_program(ctx, variant);
         if (!p) {
             free(items);
@@ -204,6 +224,10 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
              * from the reflecting surface, so it may leave highlights out (section 8). */
             if (pass->specular_off)
                 glUniform1f(p->u_specular_scale, 0.0f);
+            if (pass->store_distance)
+                glUniform1f(p->u_store_distance, 1.0f);
+            if (variant & RD_LIT_SHADOWS)
+                rd_shadow_set_uniforms(p, scene);
             frame_uniforms_set[variant] = 1;
         } else {
             glUseProgram(p->id);

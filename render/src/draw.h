@@ -13,6 +13,8 @@ typedef struct rd_pass {
     int reflections;        /* 1: reflective objects use their probes; 0: drawn plain (in probes) */
     float min_solid_radius; /* skip objects whose radius / distance is below this; 0 = none */
     int specular_off;       /* draw without the Blinn-Phong highlight term */
+    int store_distance;     /* a probe capture: alpha = distance from the eye ("depth" lookup) */
+    int shadows;            /* 1: the scene's shadow maps darken what they cover (main view) */
 } rd_pass;
 
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);

@@ -50,6 +50,8 @@
     X(PFNGLDELETEPROGRAMPROC, glDeleteProgram)                                                     \
     X(PFNGLUSEPROGRAMPROC, glUseProgram)                                                           \
     X(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation)                                           \
+    X(PFNGLSCISSORPROC, glScissor)                                                                 \
+    X(PFNGLUNIFORM4FPROC, glUniform4f)                                                             \
     X(PFNGLUNIFORM1IPROC, glUniform1i)                                                             \
     X(PFNGLUNIFORM1FPROC, glUniform1f)                                                             \
     X(PFNGLUNIFORM2IPROC, glUniform2i)                                                             \
@@ -80,6 +82,7 @@
     X(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage)                                         \
     X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer)                                 \
     X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                                                         \
+    X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                                                     \
     X(PFNGLREADBUFFERPROC, glReadBuffer)                                                           \
     X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)
 
@@ -131,6 +134,8 @@ RD_GL_FUNCTIONS(RD_GL_DECLARE)
 #define glDeleteProgram rd_glDeleteProgram
 #define glUseProgram rd_glUseProgram
 #define glGetUniformLocation rd_glGetUniformLocation
+#define glScissor rd_glScissor
+#define glUniform4f rd_glUniform4f
 #define glUniform1i rd_glUniform1i
 #define glUniform1f rd_glUniform1f
 #define glUniform2i rd_glUniform2i
@@ -161,6 +166,7 @@ RD_GL_FUNCTIONS(RD_GL_DECLARE)
 #define glRenderbufferStorage rd_glRenderbufferStorage
 #define glFramebufferRenderbuffer rd_glFramebufferRenderbuffer
 #define glDrawBuffers rd_glDrawBuffers
+#define glClearBufferfv rd_glClearBufferfv
 #define glReadBuffer rd_glReadBuffer
 #define glBlitFramebuffer rd_glBlitFramebuffer
 

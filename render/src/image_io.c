@@ -248,6 +248,30 @@ static const rd_image_format_info *check_write_args(const char *path, int width,
 rd_image_result rd_image_write_rgba8(const char *path, int width, int height,
                                      const unsigned char *rgba, char *err, size_t err_size)
 {
+    return rd_image_write_rgba8_dpi(path, width, height, rgba, 0.0f, err, err_size);
+}
+
+rd_image_result rd_image_read_dpi(const char *path, float *dpi, char *err, size_t err_size)
+{
+    *dpi = 0.0f;
+    rd_oiio_input *in = NULL;
+    rd_oiio_input_info info;
+    if (rd_oiio_open(path, 0, &in, &info, err, err_size) != RD_OIIO_OK)
+        return RD_IMAGE_ERR_FORMAT;
+    rd_oiio_close(in);
+    float x = info.x_resolution;
+    if (!strcmp(info.resolution_unit, "cm"))
+        x *= 2.54f;
+    else if (strcmp(info.resolution_unit, "inch") && strcmp(info.resolution_unit, "in"))
+        x = 0.0f; /* no unit (a pixel aspect only): no DPI */
+    *dpi = x;
+    return RD_IMAGE_OK;
+}
+
+rd_image_result rd_image_write_rgba8_dpi(const char *path, int width, int height,
+                                         const unsigned char *rgba, float dpi, char *err,
+                                         size_t err_size)
+{
     rd_image_result result;
     const rd_image_format_info *fmt =
         check_write_args(path, width, height, 4, rgba, &result, err, err_size);
@@ -285,6 +309,7 @@ rd_image_result rd_image_write_rgba8(const char *path, int width, int height,
         .colorspace = "sRGB",
         /* Renders and textures hold straight alpha; store it as given. */
         .unassociated_alpha = 1,
+        .dpi = dpi > 0.0f && dpi < 1e6f ? dpi : 0.0f,
     };
     result = write_atomically(path, desc, fmt, err, err_size);
     free(converted);

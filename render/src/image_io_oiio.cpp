@@ -66,6 +66,9 @@ extern "C" rd_oiio_status rd_oiio_open(const char *path, int unassociated_alpha,
         std::snprintf(info->format_name, sizeof info->format_name, "%s", in->format_name());
         std::string cs = spec.get_string_attribute("oiio:ColorSpace");
         std::snprintf(info->colorspace, sizeof info->colorspace, "%s", cs.c_str());
+        info->x_resolution = spec.get_float_attribute("XResolution", 0.0f);
+        std::string unit = spec.get_string_attribute("ResolutionUnit");
+        std::snprintf(info->resolution_unit, sizeof info->resolution_unit, "%s", unit.c_str());
         *out = new rd_oiio_input{std::move(in)};
         return RD_OIIO_OK;
     } catch (const std::bad_alloc &) {
@@ -133,6 +136,12 @@ extern "C" rd_oiio_status rd_oiio_write(const rd_oiio_write_desc *d, char *err, 
         }
         if (d->unassociated_alpha) {
             spec.attribute("oiio:UnassociatedAlpha", 1);
+        }
+        if (d->dpi > 0.0f) {
+            // PNG pHYs, the JFIF density and the TIFF resolution tags all come from these.
+            spec.attribute("XResolution", d->dpi);
+            spec.attribute("YResolution", d->dpi);
+            spec.attribute("ResolutionUnit", "in"); // "inch" reads back as "none" from JPEG
         }
         if (!out->open(d->path, spec)) {
             set_message(err, err_size, out->geterror());

@@ -27,6 +27,9 @@ typedef struct rd_oiio_input_info {
     int deep;     /* deep (per-pixel sample list) data */
     char format_name[32];
     char colorspace[64]; /* the "oiio:ColorSpace" attribute, "" when absent */
+
+    float x_resolution;       /* the "XResolution" attribute, 0 when absent */
+    char resolution_unit[16]; /* "ResolutionUnit": "in", "cm", "none", "" ... */
 } rd_oiio_input_info;
 
 /* Opens PATH and reads its header only. unassociated_alpha asks the reader to keep alpha as
@@ -53,6 +56,7 @@ typedef struct rd_oiio_write_desc {
     const char *compression; /* "Compression" attribute, NULL for the writer's default */
     const char *colorspace;  /* "oiio:ColorSpace" attribute, NULL for none */
     int unassociated_alpha;  /* write alpha as given, do not un-premultiply */
+    float dpi;               /* > 0: XResolution = YResolution = dpi, ResolutionUnit inch */
 } rd_oiio_write_desc;
 
 rd_oiio_status rd_oiio_write(const rd_oiio_write_desc *desc, char *err, size_t err_size);

@@ -1,6 +1,9 @@
 /* GPU prefiltering of a probe's cube map: one full-screen pass per face of a mip level. */
 #include "prefilter.h"
 #include "gl_funcs.h"
+#include "probe.h"
+
+#include "render/reflect_ref.h"
 
 #include <math.h>
 
@@ -11,6 +14,17 @@ float rd_gloss_exponent(float g)
 {
     g = fminf(fmaxf(g, 0.0f), 1.0f);
     return exp2f(13.0f * g);
+}
+
+float rd_level_exponent(int level, int size)
+{
+    return rd_ref_level_exponent(level, rd_level_count(size));
+}
+
+float rd_lobe_level(float glossiness, int size, int levels)
+{
+    (void)size;
+    return rd_ref_gloss_lod(glossiness, levels);
 }
 
 /* The mirror level is the capture itself: a framebuffer blit per face, no shading. (The HDR
@@ -46,9 +60,10 @@ rd_result rd_prefilter_level(rd_context *ctx, unsigned source, int source_size, 
         size = 1;
     if (level == 0 && source_size == dest_size)
         return copy_level0(ctx, source, dest, size);
-    /* Level k holds the lobe of g_k = 1 - k / (levels - 1); level 0 is the mirror image. */
-    float g = levels > 1 ? 1.0f - (float)level / (float)(levels - 1) : 1.0f;
-    float exponent = level == 0 ? 0.0f : rd_gloss_exponent(g);
+    /* Level k holds the lobe matched to its texels (rd_level_exponent); level 0 is the mirror
+     * image. */
+    (void)levels;
+    float exponent = level == 0 ? 0.0f : rd_level_exponent(level, dest_size);
     glBindFramebuffer(GL_FRAMEBUFFER, ctx->probe_fbo);
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, 0);
     glDisable(GL_DEPTH_TEST);

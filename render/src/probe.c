@@ -26,7 +26,9 @@ static void free_probe_textures(rd_probe *p)
         glDeleteTextures(1, &p->filtered);
     if (p->sphere_map)
         glDeleteTextures(1, &p->sphere_map);
-    p->capture = p->filtered = p->sphere_map = 0;
+    if (p->surface)
+        glDeleteTextures(1, &p->surface);
+    p->capture = p->filtered = p->sphere_map = p->surface = 0;
 }
 
 void rd_probes_destroy(rd_scene *s)
@@ -157,7 +159,7 @@ rd_result rd_reference_blur_level(rd_probe *p, unsigned source, int source_size,
     for (int f = 0; f < 6; f++)
         glGetTexImage(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, src_level, GL_RGBA, GL_FLOAT,
                       src.faces[f]);
-    float exponent = level == 0 ? 1e9f : rd_ref_level_exponent(level, p->levels);
+    float exponent = level == 0 ? 1e9f : rd_level_exponent(level, p->size);
     r = level == 0 ? rd_cube_data_alloc(dst, &out)
                    : rd_ref_cube_convolve(&src, exponent, 0.0f, dst, &out);
     if (r == RD_OK && level == 0)
@@ -238,7 +240,9 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
     float g = s->objects[p->owner].material.glossiness;
     if (g < 1.0f && s->objects[p->owner].material.transparency <= 0.0f) {
         float half_width = sqrtf(2.0f * 0.6931472f / exp2f(13.0f * fmaxf(g, 0.0f)));
-        int gloss_cap = next_pow2(2.0f * 1.5707963f / half_width);
+        /* Twice that, so the lookup lands on level 1 or above (rd_lobe_level), never between
+         * the unblurred capture and the first blurred level. */
+        int gloss_cap = next_pow2(2.0f * RD_LOBE_TEXELS * 1.5707963f / half_width);
         if (n > gloss_cap)
             n = gloss_cap;
     }
@@ -299,6 +303,11 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
     glBindFramebuffer(GL_FRAMEBUFFER, ctx->probe_fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
                            GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, p->capture, 0);
+    /* "depth" probes also keep what their highlights need (lit.frag's frag_surface). */
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1,
+                           GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face, p->surface, 0);
+    static const GLenum two[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    glDrawBuffers(p->surface ? 2 : 1, two);
     rd_result r = rd_probe_depth_ensure(ctx, p->size);
     if (r != RD_OK)
         return r;
@@ -306,7 +315,9 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
-    glClearColor(0, 0, 0, 1);
+    /* Alpha holds the distance to what the face sees ("depth" correction); where it sees
+     * nothing, farther than any room (about the largest half float). */
+    glClearColor(0, 0, 0, 65000.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     vec3 dir, up, target;
     cmcs_to_world(face_dir[face], dir);
@@ -318,17 +329,28 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
      * surface): the near plane must not cut that wall away. */
     glm_perspective(glm_rad(90.0f), 1.0f, fmaxf(far_m * 1e-4f, 1e-5f), far_m, proj);
     glm_mat4_mul(proj, view, vp);
+    if (p->surface) {
+        /* No surface (the clear) has no highlight: shininess -1. */
+        static const float none[4] = {0.0f, 0.0f, 0.0f, -1.0f};
+        glClearBufferfv(GL_COLOR, 1, none);
+    }
     /* The owner is left out of its own capture; reflective objects appear plain (one
      * bounce). */
     /* An object under half a texel across (a face spans 90 degrees over `size` texels) is
-     * left out (section 8). */
-    return rd_draw_objects(ctx, s,
-                           &(rd_pass){.view_proj = &vp[0][0],
-                                      .eye = p->centre,
-                                      .exclude_key = p->key,
-                                      .reflections = 0,
-                                      .min_solid_radius = 0.25f / (float)p->size,
-                                      .specular_off = s->reflection.probe_no_specular});
+     * left out (section 8). A "depth" probe leaves highlights to the lookup, which sees them
+     * from the reflecting point (lit.frag). */
+    r = rd_draw_objects(ctx, s,
+                        &(rd_pass){.view_proj = &vp[0][0],
+                                   .eye = p->centre,
+                                   .exclude_key = p->key,
+                                   .reflections = 0,
+                                   .min_solid_radius = 0.25f / (float)p->size,
+                                   .specular_off = s->reflection.probe_no_specular || p->surface,
+                                   .store_distance = 1});
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0,
+                           0);
+    glDrawBuffers(1, two);
+    return r;
 }
 
 /* Which faces this frame's policy captures (a bit each). */
@@ -352,7 +374,7 @@ static int faces_to_capture(const rd_scene *s, rd_probe *p, rd_probe_update u, i
 float rd_probe_lod(const rd_probe *p, float glossiness)
 {
     float g = fminf(fmaxf(glossiness, 0.0f), 1.0f);
-    return g >= 1.0f ? 0.0f : (1.0f - g) * (float)(p->levels - 1); /* section 5 */
+    return rd_lobe_level(g, p->size, p->levels); /* section 5 */
 }
 
 unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p)
@@ -504,6 +526,18 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             p->next_face = 0;
             r = rd_alloc_cube(&p->capture, size, p->levels);
             if (r != RD_OK)
+                return r;
+        }
+        /* The surface map comes and goes with the "depth" correction; a new one needs a new
+         * capture. */
+        int depth = rd_effective_correction(s, &owner->material) == RD_CORRECTION_DEPTH;
+        if (depth != (p->surface != 0)) {
+            if (p->surface)
+                glDeleteTextures(1, &p->surface);
+            p->surface = 0;
+            p->faces_valid = 0;
+            p->next_face = 0;
+            if (depth && (r = rd_alloc_cube(&p->surface, size, 1)) != RD_OK)
                 return r;
         }
         int every;

@@ -2,6 +2,7 @@
  * (ARCHITECTURE.md): code a material does not need is not in its program. */
 #include "gl_funcs.h"
 #include "render_internal.h"
+#include "shadow.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -80,6 +81,11 @@ static GLuint link(const char *vert, const char *frag, const char *defines)
     return p;
 }
 
+unsigned rd_link_program(const char *vert, const char *frag, const char *defines)
+{
+    return link(vert, frag, defines);
+}
+
 static void locate_lit(rd_program *p)
 {
     GLuint id = p->id;
@@ -120,6 +126,11 @@ static void locate_lit(rd_program *p)
     p->u_ior = glGetUniformLocation(id, "u_ior");
     p->u_dispersion = glGetUniformLocation(id, "u_dispersion");
     p->u_thin = glGetUniformLocation(id, "u_thin");
+    p->u_probe_distance = glGetUniformLocation(id, "u_probe_distance");
+    p->u_store_distance = glGetUniformLocation(id, "u_store_distance");
+    p->u_probe_surface = glGetUniformLocation(id, "u_probe_surface");
+    p->u_surface_highlights = glGetUniformLocation(id, "u_surface_highlights");
+    p->u_lobe_exponent = glGetUniformLocation(id, "u_lobe_exponent");
 }
 
 const rd_program *rd_lit_program(rd_context *ctx, int variant)
@@ -131,14 +142,16 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
     int sphere = reflecting && (variant & RD_LIT_SPHERE_MAP);
     char defines[256];
-    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s", RD_MAX_LIGHTS,
+    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s%s", RD_MAX_LIGHTS,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
              per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "",
              sphere ? "#define SPHERE_MAP 1\n" : "",
-             (variant & RD_LIT_SH9) ? "#define SH9_AMBIENT 1\n" : "");
-    p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
-                 reflecting ? "reflect.glsl lit.frag" : "lit.frag", defines);
+             (variant & RD_LIT_SH9) ? "#define SH9_AMBIENT 1\n" : "",
+             (variant & RD_LIT_SHADOWS) ? "#define HAS_SHADOWS 1\n" : "");
+    p->id =
+        link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
+             reflecting ? "reflect.glsl shadow.glsl lit.frag" : "shadow.glsl lit.frag", defines);
     if (!p->id)
         return NULL;
     locate_lit(p);

@@ -115,11 +115,29 @@ float rd_ref_gloss_exponent(float g)
     return exp2f(13.0f * clamp01(g));
 }
 
+/* Section 5: the blur chain's levels are matched to their resolution (docs/accuracy.md, the
+ * taps): level k >= 1 of a chain of `levels` levels (a probe of 2^(levels - 1) texels) holds
+ * the Phong lobe whose half-width sqrt(2 ln 2 / n) spans LOBE_TEXELS texels of that level (a
+ * face spans pi/2), n clamped to [1, n(1) = 8192]; level 0 is the capture (the mirror). A
+ * lobe narrower than its level's texels is widened by the bilinear lookup, which let a bright
+ * window bleed far beyond the lobe of a small probe's coarse levels. */
+#define LOBE_TEXELS 2.0f
+
+static float level_half_width(float level, int levels)
+{
+    return LOBE_TEXELS * 0.5f * PI_F * exp2f(level - (float)(levels - 1));
+}
+
 float rd_ref_gloss_lod(float g, int levels)
 {
     if (levels < 1)
         levels = 1;
-    return (1.0f - clamp01(g)) * (float)(levels - 1);
+    g = clamp01(g);
+    if (g >= 1.0f)
+        return 0.0f;
+    float half_width = sqrtf(2.0f * 0.6931472f / rd_ref_gloss_exponent(g));
+    float lod = log2f(half_width / level_half_width(0.0f, levels));
+    return fminf(fmaxf(lod, 0.0f), (float)(levels - 1));
 }
 
 /* Section 5, seed 001 eq. 6 with the normalisation of the Phong lobe. */
@@ -135,13 +153,12 @@ float rd_ref_lobe(float cos_angle, float n)
 
 float rd_ref_level_exponent(int level, int levels)
 {
-    if (levels <= 1)
+    if (levels <= 1 || level <= 0)
         return rd_ref_gloss_exponent(1.0f);
-    if (level < 0)
-        level = 0;
     if (level > levels - 1)
         level = levels - 1;
-    return rd_ref_gloss_exponent(1.0f - (float)level / (float)(levels - 1));
+    float w = level_half_width((float)level, levels);
+    return fminf(fmaxf(2.0f * 0.6931472f / (w * w), 1.0f), rd_ref_gloss_exponent(1.0f));
 }
 
 /* Section 6, seed 001 eq. 15 (Schlick 1994 with N.V in place of H.V). */

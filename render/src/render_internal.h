@@ -57,6 +57,8 @@ typedef struct rd_program {
     int u_sh, u_sphere_map, u_view_rot;
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
         u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
+    int u_probe_distance, u_store_distance; /* the "depth" correction (reflect.glsl) */
+    int u_probe_surface, u_surface_highlights, u_lobe_exponent;
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */
@@ -66,7 +68,8 @@ enum {
     RD_LIT_PER_VERTEX = 4,
     RD_LIT_SPHERE_MAP = 8,
     RD_LIT_SH9 = 16,
-    RD_LIT_VARIANTS = 32
+    RD_LIT_SHADOWS = 32, /* shadow.glsl: shadow maps of every light */
+    RD_LIT_VARIANTS = 64
 };
 
 struct rd_context {

@@ -6,6 +6,7 @@
 #include "gl_funcs.h"
 #include "render_internal.h"
 #include "scene_internal.h"
+#include "shadow.h"
 
 #include <cglm/cglm.h>
 #include <math.h>
@@ -33,6 +34,12 @@ static rd_result validate_view(const rd_context *ctx, const rd_view *v, int *sam
                        "image size %dx%d (x%d supersampling) is too large: at most %d per side "
                        "and %lld samples in all",
                        v->width, v->height, s, ctx->max_size, MAX_SAMPLES);
+    if (v->full_width > 0 && (v->crop_x < 0 || v->crop_y < 0 || v->full_height <= 0 ||
+                              (long long)v->crop_x + v->width > v->full_width ||
+                              (long long)v->crop_y + v->height > v->full_height))
+        return rd_fail(RD_ERR_INVALID_ARGUMENT,
+                       "window %dx%d at (%d, %d) is not inside the %dx%d image", v->width,
+                       v->height, v->crop_x, v->crop_y, v->full_width, v->full_height);
     if (!(v->exposure_ev > -64.0f && v->exposure_ev < 64.0f))
         return rd_fail(RD_ERR_INVALID_ARGUMENT, "exposure %g EV is outside (-64, 64)",
                        (double)v->exposure_ev);
@@ -103,20 +110,25 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     if (pr != RD_OK)
         return pr;
     rd_frame_stats stats = {0};
-    float pixels_per_tan =
-        0.5f * (float)v->height / tanf(0.5f * glm_rad(v->fov_y_deg > 0.0f ? v->fov_y_deg : 60.0f));
+    /* A tile's probes are as sharp as the whole image's (renderer_tiled.c). */
+    float pixels_per_tan = 0.5f * (float)(v->full_width > 0 ? v->full_height : v->height) /
+                           tanf(0.5f * glm_rad(v->fov_y_deg > 0.0f ? v->fov_y_deg : 60.0f));
     rd_result r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &stats);
     if (r == RD_OK)
         r = rd_ambient_update(ctx, scene, &stats);
     if (r == RD_OK)
         r = rd_sphere_maps_update(ctx, scene, view_rot);
+    if (r == RD_OK)
+        r = rd_shadow_maps_update(ctx, scene);
+    rd_shadow_frame(scene, v, samples);
     if (r != RD_OK)
         return r;
     ctx->stats = stats;
     begin_hdr_pass(ctx);
     r = rd_draw_objects(
         ctx, scene,
-        &(rd_pass){.view_proj = vp, .view_rot = view_rot, .eye = v->eye, .reflections = 1});
+        &(rd_pass){
+            .view_proj = vp, .view_rot = view_rot, .eye = v->eye, .reflections = 1, .shadows = 1});
     if (r != RD_OK)
         return r;
 

@@ -1,5 +1,6 @@
 #include "gl_funcs.h"
 #include "probe.h"
+#include "shadow.h"
 #include "render_internal.h"
 #include "scene_internal.h"
 
@@ -26,6 +27,7 @@ void rd_scene_destroy(rd_scene *s)
     if (!s)
         return;
     rd_probes_destroy(s);
+    rd_shadow_maps_destroy(s);
     if (s->ambient_probe.capture)
         glDeleteTextures(1, &s->ambient_probe.capture);
     free(s->objects);

@@ -22,6 +22,9 @@ typedef struct rd_probe {
     int mips_valid;           /* box mips generated since the last capture */
     unsigned sphere_map;      /* material.sphere_map: the probe as a sphere map for this view */
     int sphere_size;
+    /* "depth" correction: the captured surfaces' normals (octahedral), specular and shininess,
+     * for highlights seen from the reflecting point (probe.c); 0 for the other modes. */
+    unsigned surface;
 } rd_probe;
 
 struct rd_scene {
@@ -43,6 +46,10 @@ struct rd_scene {
     int frame;
     rd_probe ambient_probe; /* RD_AMBIENT_SH9: captured at the proxy's centre */
     float sh9[9][3];        /* its irradiance coefficients, world coordinates */
+
+    rd_shadow_settings shadows;         /* rd_scene_set_shadows */
+    struct rd_shadow_maps *shadow_maps; /* shadow.c; NULL until shadows are first drawn */
+    int hold_probes;                    /* rd_scene_hold_probes (renderer_tiled.c) */
 };
 
 #endif

@@ -177,18 +177,27 @@ static void test_gloss(void)
     CHECK(rd_ref_gloss_exponent(-1.0f) == 1.0f && rd_ref_gloss_exponent(2.0f) == 8192.0f);
     CHECK(rd_ref_gloss_exponent(NAN) == 1.0f);
 
-    CHECK(rd_ref_gloss_lod(1.0f, 8) == 0.0f && rd_ref_gloss_lod(0.0f, 8) == 7.0f);
-    CHECK(rd_ref_gloss_lod(0.5f, 8) == 3.5f);
+    /* A level's lobe spans two of its texels (reflect_ref.c): at 128 texels (8 levels) the
+     * half-width of level k is 2 (pi / 2) 2^k / 128, so g = 0 (n = 1, half-width 1.1774)
+     * lands on log2(1.1774 / (pi / 128)) = 5.584 and g = 0.5 (n = 90.5) on 2.334. */
+    CHECK(rd_ref_gloss_lod(1.0f, 8) == 0.0f && near(rd_ref_gloss_lod(0.0f, 8), 5.584f, 1e-3f));
+    CHECK(near(rd_ref_gloss_lod(0.5f, 8), 2.334f, 1e-3f));
     CHECK(isfinite(rd_ref_gloss_lod(1e-6f, 8)) && isfinite(rd_ref_gloss_lod(1 - 1e-6f, 8)));
     CHECK(rd_ref_gloss_lod(0.3f, 0) == 0.0f && rd_ref_gloss_lod(0.3f, 1) == 0.0f);
-    CHECK(rd_ref_gloss_lod(NAN, 8) == 7.0f);
+    CHECK(rd_ref_gloss_lod(NAN, 8) == rd_ref_gloss_lod(0.0f, 8));
+    for (int i = 1; i <= 100; i++) /* blurrier lobes, coarser levels */
+        CHECK(rd_ref_gloss_lod((i - 1) / 100.0f, 8) >= rd_ref_gloss_lod(i / 100.0f, 8));
+    CHECK(rd_ref_gloss_lod(0.2f, 12) > rd_ref_gloss_lod(0.2f, 8)); /* finer probes: more levels */
 
-    /* Level k of the chain is the lobe of the g whose LOD is k. */
+    /* Level k of the chain is the lobe of the g whose LOD is k (where n is not clamped). */
     CHECK(rd_ref_level_exponent(0, 8) == 8192.0f && rd_ref_level_exponent(7, 8) == 1.0f);
-    for (int k = 0; k < 8; k++) {
-        float g = 1.0f - k / 7.0f;
-        CHECK(near(rd_ref_gloss_lod(g, 8), (float)k, 1e-5f));
-        CHECK(rd_ref_level_exponent(k, 8) == rd_ref_gloss_exponent(g));
+    for (int k = 1; k < 8; k++) {
+        float n = rd_ref_level_exponent(k, 8);
+        float w = 2.0f * 1.5707963f * exp2f((float)k) / 128.0f;
+        CHECK(near(n, fminf(fmaxf(2.0f * 0.6931472f / (w * w), 1.0f), 8192.0f), 1e-3f * n));
+        CHECK(n <= rd_ref_level_exponent(k - 1, 8));
+        if (n > 1.0f && n < 8192.0f)
+            CHECK(near(rd_ref_gloss_lod(log2f(n) / 13.0f, 8), (float)k, 1e-3f));
     }
     CHECK(rd_ref_level_exponent(-2, 8) == 8192.0f && rd_ref_level_exponent(99, 8) == 1.0f);
     CHECK(rd_ref_level_exponent(0, 1) == 8192.0f && rd_ref_level_exponent(3, 0) == 8192.0f);

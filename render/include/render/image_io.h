@@ -47,6 +47,18 @@ rd_image_result rd_image_read(const char *path, rd_image *out, int *nonfinite_re
 rd_image_result rd_image_write_rgba8(const char *path, int width, int height,
                                      const unsigned char *rgba, char *err, size_t err_size);
 
+/* The same with a print resolution: dpi > 0 is written as the file's pixels per inch (PNG pHYs,
+ * JPEG JFIF density, TIFF XResolution/YResolution). */
+rd_image_result rd_image_write_rgba8_dpi(const char *path, int width, int height,
+                                         const unsigned char *rgba, float dpi, char *err,
+                                         size_t err_size);
+/* Inserts an XMP packet (UTF-8 RDF text, under 64 KB) as an APP1 segment into the JPEG at
+ * path, rewriting the file (image_xmp.c). */
+rd_image_result rd_image_jpeg_add_xmp(const char *path, const char *xmp, char *err,
+                                      size_t err_size);
+/* The pixels per inch a file states (0 when it states none or only an aspect). */
+rd_image_result rd_image_read_dpi(const char *path, float *dpi, char *err, size_t err_size);
+
 /* Writes linear floats, channels 1..4: .exr (half float, zip compression), .tif/.tiff (32-bit
  * float), .hdr (RGBE; gray is replicated and alpha dropped). .png/.jpg are refused. */
 rd_image_result rd_image_write_float(const char *path, int width, int height, int channels,

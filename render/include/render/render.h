@@ -107,6 +107,7 @@ typedef enum rd_correction {
     RD_CORRECTION_NONE,        /* an infinitely far environment: look up R itself */
     RD_CORRECTION_BOX,         /* the scene's proxy box (the room's interior) */
     RD_CORRECTION_SPHERE,      /* a sphere of the probe's proxy radius around its centre */
+    RD_CORRECTION_DEPTH,       /* the probe's stored distances (distance impostors), box beyond */
 } rd_correction;
 
 /* How a blurred reflection is looked up (RENDERING.md section 5). */
@@ -244,6 +245,41 @@ typedef struct rd_reflection_defaults {
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
 
+/* Shadows from every light (docs/rendering.md, "Shadows"): shadow maps in one depth atlas, a
+ * cube (six faces) per point light, one face per spot and directional light. Objects with
+ * `background` set (the room's walls, floor, ceiling), glass and emissive objects (a light's
+ * own fixture) cast none: the room encloses its lights, and a window's directional light would
+ * otherwise never get in. Probe captures draw
+ * without shadows (a reflection of a shadow is a second-order detail). OFF compiles no shadow
+ * code into any program. */
+typedef enum rd_shadow_mode {
+    RD_SHADOWS_OFF = 0,
+    RD_SHADOWS_HARD, /* one bilinear depth comparison per light: a 1-texel edge */
+    RD_SHADOWS_SOFT, /* PCF over a disk of `softness_m` at the receiver, `taps` per pixel */
+} rd_shadow_mode;
+
+typedef struct rd_shadow_settings {
+    rd_shadow_mode mode;
+    int map_size;     /* texels per face side; 0 = 1024 (clamped to fit the atlas) */
+    int taps;         /* SOFT: comparisons per pixel on rotated Vogel disks, shared by its samples;
+                         0 = 16, at most 256 */
+    float softness_m; /* SOFT: the disk's radius at the receiver, metres; 0 = 0.03 */
+} rd_shadow_settings;
+void rd_scene_set_shadows(rd_scene *scene, const rd_shadow_settings *s);
+/* The settings with their defaults filled in and limits applied (what a scene stores). */
+rd_shadow_settings rd_shadow_settings_resolve(const rd_shadow_settings *s);
+rd_shadow_settings rd_scene_shadows(const rd_scene *scene);
+/* "off", "hard", "soft" <-> mode; parse returns RD_ERR_INVALID_ARGUMENT for anything else. */
+rd_result rd_shadow_mode_parse(const char *name, rd_shadow_mode *out);
+const char *rd_shadow_mode_name(rd_shadow_mode m);
+/* The tap offsets both renderers use: tap i of n on the unit disk (Vogel 1979 spiral), the
+ * spiral turned by `rotation` radians (a per-sample random angle, so that supersampling
+ * averages differently placed taps). */
+void rd_shadow_disk_tap(int i, int n, float rotation, float out[2]);
+/* Soft taps per sample at s x s supersampling: the pixel's taps shared by its s^2 samples, at
+ * least 2 (1 when hard). */
+int rd_shadow_taps_per_sample(const rd_shadow_settings *s, int supersample);
+
 /* Probes the scene holds now (one per reflective object or group); for tests and stats. */
 int rd_scene_probe_count(const rd_scene *scene);
 /* Reads back one face (GL order) of one mip level of probe `index`'s cube map as the main
@@ -283,6 +319,10 @@ typedef struct rd_view {
     rd_tonemap tonemap;
     float white;   /* L_white of the photographic operator; 0 = 4 */
     int to_window; /* RD_BACKEND_ADOPT: also draw the result into framebuffer 0 */
+    /* A window of a larger image (tiled rendering): when full_width > 0, this render is the
+     * width x height pixels at (crop_x, crop_y) (top-left origin) of a full_width x
+     * full_height image of the same camera, with an off-centre projection. */
+    int crop_x, crop_y, full_width, full_height;
 } rd_view;
 
 rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *view);
@@ -290,6 +330,19 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *view);
 /* The timing "floor" of the benchmark: one full-screen pass of the same lighting program,
  * with the scene's lights, into the same float target at the view's size. */
 rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *view);
+
+/* Renders a view of any size (up to RD_IMAGE_MAX_SIDE per side) in tiles of at most
+ * tile_max x tile_max output pixels (0 = as large as the context allows), each with an
+ * off-centre projection, and stitches them into rgba8 (width*height*4 bytes, top row first) and,
+ * if linear is not NULL, linear (width*height*4 floats). Probes and shadow maps are made on the
+ * first tile and reused. progress(user, done, total) is called after each tile (may be NULL). */
+rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view, int tile_max,
+                          uint8_t *rgba8, float *linear,
+                          void (*progress)(void *user, int done, int total), void *user);
+/* hold = 1: rd_render_tiled keeps the probes it has (captures only those never captured), also
+ * from one call to the next -- a panorama's faces and a video's frames of a still scene see
+ * the same probes (they are captured at the objects, not at the camera). 0 = the policies. */
+void rd_scene_hold_probes(rd_scene *scene, int hold);
 
 /* Read back the last rd_render: tone-mapped sRGB bytes (RGBA, top row first, width*height*4),
  * or linear radiance after exposure (RGBA float, width*height*4), both at output size. */

@@ -49,6 +49,7 @@ typedef struct ref_mesh {
     int double_sided;
     bool glass;      /* transparency > 0: invisible to secondary rays (the GPU probes skip it) */
     bool reflective; /* reflectivity > 0 or transparency > 0: the GPU gives it a probe */
+    bool background; /* casts no shadow (ref_shadow.c) */
     float uv_scale[2];
 } ref_mesh;
 
@@ -60,6 +61,8 @@ struct ref_scene {
     rd_light lights[RD_MAX_LIGHTS];
     int light_count;
     float ambient[3];
+    rd_shadow_settings shadows;
+    int shadow_taps; /* per sample: rd_shadow_taps_per_sample at the render's supersampling */
     float bounds_min[3], bounds_max[3]; /* world bounds of every vertex */
     float epsilon;                      /* ray offset: 1e-5 of the scene's diagonal */
     RTCDevice device;
@@ -84,6 +87,13 @@ typedef struct ref_trace_stats {
 void ref_trace_primary(const ref_scene *s, const float origin[3], const float dir[3],
                        const ref_ray_diff *diff, int samples, uint64_t rng_key, float out[3],
                        int *reflective, ref_trace_stats *stats);
+
+/* ---- shadows (ref_shadow.c) --------------------------------------------------------------- */
+
+/* The fraction of each light that reaches point p (shading normal n): 1 everywhere when the
+ * scene's shadows are off. */
+void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3], float rotation,
+                           float vis[RD_MAX_LIGHTS], ref_trace_stats *stats);
 
 /* ---- camera (ref_camera.c) ---------------------------------------------------------------- */
 

@@ -189,6 +189,8 @@ ref_result ref_render(ref_scene *s, const ref_render_desc *d, ref_image *out)
         free(j);
         return r;
     }
+    /* The GPU's soft shadow taps per sample at this supersampling (ref_shadow.c). */
+    s->shadow_taps = rd_shadow_taps_per_sample(&s->shadows, d->view.supersample);
     const rd_view *v = &d->view;
     size_t pixels = (size_t)v->width * (size_t)v->height;
     out->width = v->width;

@@ -219,6 +219,7 @@ ref_result ref_scene_add_mesh(ref_scene *s, const ref_mesh_desc *d)
      * and probes do not see glass. */
     m->reflective = d->material.reflectivity > 0.0f || d->material.transparency > 0.0f;
     m->glass = d->material.transparency > 0.0f;
+    m->background = d->background != 0;
     for (int k = 0; k < 2; k++)
         m->uv_scale[k] = d->material.uv_scale[k] > 0.0f ? d->material.uv_scale[k] : 1.0f;
     s->mesh_count++;

@@ -188,7 +188,7 @@ static int uv_on_plane(const ref_mesh *m, unsigned prim, const float org[3], con
  * raw_lit = 1 leaves out the emissive max, which lit.frag applies only after the blend. */
 static void shade_direct(const ref_scene *s, const surface *sf, const float eye[3],
                          const float org[3], const float dir[3], const ray_fan *fan, int raw_lit,
-                         float out[3])
+                         int shadowed, float shadow_turn, ref_trace_stats *stats, float out[3])
 {
     const ref_mesh *m = sf->mesh;
     float albedo[3];
@@ -210,7 +210,22 @@ static void shade_direct(const ref_scene *s, const surface *sf, const float eye[
     if (raw_lit)
         for (int k = 0; k < 3; k++)
             mat.emissive[k] = -FLT_MAX; /* max(-FLT_MAX, lit) = lit */
-    rd_ref_shade(&mat, m->texture ? albedo : NULL, sf->p, sf->n, eye, s->lights, s->light_count,
+    const rd_light *lights = s->lights;
+    rd_light dimmed[RD_MAX_LIGHTS];
+    if (shadowed && s->shadows.mode != RD_SHADOWS_OFF) {
+        /* Shadows scale each light's direct terms by the fraction of it that arrives. */
+        float vis[RD_MAX_LIGHTS];
+        ref_shadow_visibility(s, sf->p, sf->n, shadow_turn, vis, stats);
+        for (int i = 0; i < s->light_count; i++) {
+            dimmed[i] = s->lights[i];
+            for (int k = 0; k < 3; k++) {
+                dimmed[i].diffuse[k] *= vis[i];
+                dimmed[i].specular[k] *= vis[i];
+            }
+        }
+        lights = dimmed;
+    }
+    rd_ref_shade(&mat, m->texture ? albedo : NULL, sf->p, sf->n, eye, lights, s->light_count,
                  s->ambient, out);
 }
 
@@ -274,7 +289,7 @@ static void secondary_radiance(const ref_scene *s, const surface *from, const fl
         out[0] = out[1] = out[2] = 0.0f;
         return;
     }
-    shade_direct(s, &sf, from->p, from->p, dir, fan, 0, out);
+    shade_direct(s, &sf, from->p, from->p, dir, fan, 0, 0, 0.0f, stats, out);
 }
 
 /* splitmix64's finaliser: a well-mixed 64-bit hash. */
@@ -429,13 +444,15 @@ void ref_trace_primary(const ref_scene *s, const float origin[3], const float di
             fan.dir_x[k] = diff->dir_dx[k];
             fan.dir_y[k] = diff->dir_dy[k];
         }
+    /* The soft-shadow disk's turn for this sample: uniform in [0, 2 pi) (ref_shadow.c). */
+    float turn = 6.28318530718f * uniform01(rng_key, 0x5AD0ull);
     if (!sf.mesh->reflective) {
-        shade_direct(s, &sf, origin, origin, dir, &fan, 0, out);
+        shade_direct(s, &sf, origin, origin, dir, &fan, 0, 1, turn, stats, out);
         return;
     }
     *reflective = 1;
     float lit[3];
-    shade_direct(s, &sf, origin, origin, dir, &fan, 1, lit);
+    shade_direct(s, &sf, origin, origin, dir, &fan, 1, 1, turn, stats, lit);
     shade_reflective(s, &sf, origin, &fan, lit, samples, rng_key, out, stats);
 }
 

@@ -68,6 +68,8 @@ typedef struct ref_mesh_desc {
      * them); 1 = an open sheet seen from both sides, and glass on it passes light straight
      * through (a thin pane) instead of refracting. */
     int double_sided;
+    /* As rd_object_desc.background: an enclosing room surface, which casts no shadow. */
+    int background;
 } ref_mesh_desc;
 ref_result ref_scene_add_mesh(ref_scene *s, const ref_mesh_desc *d);
 
@@ -76,6 +78,12 @@ ref_result ref_scene_add_mesh(ref_scene *s, const ref_mesh_desc *d);
 ref_result ref_scene_add_light(ref_scene *s, const rd_light *light);
 void ref_scene_set_ambient(ref_scene *s, const float intensity[3]); /* I_a */
 int ref_scene_mesh_count(const ref_scene *s);
+/* Shadows as rd_scene_set_shadows draws them (docs/reference.md, "Shadows"): at a primary hit,
+ * one shadow ray toward each light (HARD), or one from each of the GPU's PCF taps (SOFT: the
+ * same Vogel disk of softness_m in the receiver's tangent plane), occluded by anything but
+ * background meshes and glass. Reflected and transmitted hits stay unshadowed, as the GPU's
+ * probe captures are. Default off. */
+void ref_scene_set_shadows(ref_scene *s, const rd_shadow_settings *settings);
 
 /* Builds the acceleration structure. ref_render and ref_scene_intersect call it when the
  * scene changed; call it yourself to time the build apart. Not thread-safe with itself. */

@@ -1,0 +1,136 @@
+/* Shadow rays: the tracer's side of rd_scene_set_shadows (docs/reference.md, "Shadows"). Where
+ * the GPU compares a tap's distance to the light with the nearest caster in the shadow map
+ * (render/shaders/shadow.glsl), this file traces a ray from the same tap toward the light. The
+ * taps are the same: a normal offset, then the Vogel disk (rd_shadow_disk_tap) of softness_m
+ * in the receiver's tangent plane, as many per sample, turned by a random angle per sample (the
+ * GPU hashes the sample's position, this tracer its random key: the same kernel in
+ * expectation); they differ otherwise only by the map's resolution and bias. */
+#include "ref_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+typedef struct occlusion_ctx {
+    struct RTCIntersectContext rtc; /* first: Embree hands the filter a pointer to it */
+    const ref_scene *scene;
+} occlusion_ctx;
+
+/* What casts: everything the GPU's shadow pass draws -- not the room's enclosing surfaces, not
+ * glass, not glowing (emissive) fixtures; both sides of a triangle. */
+static void occlusion_filter(const struct RTCFilterFunctionNArguments *a)
+{
+    const occlusion_ctx *c = (const occlusion_ctx *)a->context;
+    const unsigned *hit = (const unsigned *)a->hit;
+    unsigned n = a->N;
+    for (unsigned i = 0; i < n; i++) {
+        if (a->valid[i] == 0)
+            continue;
+        const ref_mesh *m = &c->scene->meshes[hit[6 * n + i]];
+        const float *e = m->material.emissive;
+        if (m->background || m->glass || e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f)
+            a->valid[i] = 0;
+    }
+}
+
+void ref_scene_set_shadows(ref_scene *s, const rd_shadow_settings *settings)
+{
+    if (s && settings) {
+        s->shadows = rd_shadow_settings_resolve(settings);
+        s->shadow_taps = rd_shadow_taps_per_sample(&s->shadows, 1);
+    }
+}
+
+static int occluded(const ref_scene *s, const float org[3], const float dir[3], float tfar,
+                    ref_trace_stats *stats)
+{
+    occlusion_ctx c;
+    rtcInitIntersectContext(&c.rtc);
+    c.rtc.filter = occlusion_filter;
+    c.scene = s;
+    struct RTCRay ray;
+    memset(&ray, 0, sizeof ray);
+    ray.org_x = org[0];
+    ray.org_y = org[1];
+    ray.org_z = org[2];
+    ray.dir_x = dir[0];
+    ray.dir_y = dir[1];
+    ray.dir_z = dir[2];
+    ray.tnear = s->epsilon;
+    ray.tfar = tfar;
+    ray.mask = 0xFFFFFFFFu;
+    rtcOccluded1(s->rtc, &c.rtc, &ray);
+    if (stats)
+        stats->rays++;
+    return ray.tfar < 0.0f; /* Embree sets tfar to -inf on a hit */
+}
+
+/* An orthonormal basis around unit a (Duff et al. 2017), as shadow.glsl builds it. */
+static void basis(const float a[3], float t[3], float b[3])
+{
+    float sign = a[2] >= 0.0f ? 1.0f : -1.0f;
+    float p = -1.0f / (sign + a[2]);
+    float q = a[0] * a[1] * p;
+    t[0] = 1.0f + sign * a[0] * a[0] * p;
+    t[1] = sign * q;
+    t[2] = -sign * a[0];
+    b[0] = q;
+    b[1] = sign + a[1] * a[1] * p;
+    b[2] = -a[1];
+}
+
+/* Whether tap q sees light l. */
+static float tap_visible(const ref_scene *s, const rd_light *l, const float q[3],
+                         ref_trace_stats *stats)
+{
+    float d[3], tfar;
+    if (l->type == RD_LIGHT_DIRECTIONAL) {
+        for (int k = 0; k < 3; k++)
+            d[k] = -l->direction[k];
+        tfar = INFINITY;
+    } else {
+        for (int k = 0; k < 3; k++)
+            d[k] = l->position[k] - q[k];
+        float len = sqrtf(ref_dot(d, d));
+        if (!(len > 0.0f))
+            return 1.0f;
+        for (int k = 0; k < 3; k++)
+            d[k] /= len;
+        tfar = len * (1.0f - 1e-4f); /* the light's own fixture surface does not count */
+    }
+    return occluded(s, q, d, tfar, stats) ? 0.0f : 1.0f;
+}
+
+void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3], float rotation,
+                           float vis[RD_MAX_LIGHTS], ref_trace_stats *stats)
+{
+    for (int i = 0; i < RD_MAX_LIGHTS; i++)
+        vis[i] = 1.0f;
+    if (s->shadows.mode == RD_SHADOWS_OFF)
+        return;
+    int taps = s->shadows.mode == RD_SHADOWS_SOFT ? s->shadow_taps : 1;
+    float t[3], b[3];
+    basis(n, t, b);
+    /* Off the surface along its normal, by a little more than the ray epsilon. */
+    float base[3];
+    for (int k = 0; k < 3; k++)
+        base[k] = p[k] + n[k] * 4.0f * s->epsilon;
+    for (int i = 0; i < s->light_count; i++) {
+        const rd_light *l = &s->lights[i];
+        float to_light[3];
+        for (int k = 0; k < 3; k++)
+            to_light[k] =
+                l->type == RD_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k] - p[k];
+        if (!(ref_dot(to_light, n) > 0.0f))
+            continue; /* unlit from behind anyway */
+        float sum = 0.0f;
+        for (int k = 0; k < taps; k++) {
+            float q[3], disk[2] = {0.0f, 0.0f};
+            if (taps > 1)
+                rd_shadow_disk_tap(k, taps, rotation, disk);
+            for (int c = 0; c < 3; c++)
+                q[c] = base[c] + s->shadows.softness_m * (disk[0] * t[c] + disk[1] * b[c]);
+            sum += tap_visible(s, l, q, stats);
+        }
+        vis[i] = sum / (float)taps;
+    }
+}
