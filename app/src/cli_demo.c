@@ -32,7 +32,7 @@ int app_cli_demo(int argc, char **argv)
         return CLI_FAILED;
     }
     char project[4096];
-    snprintf(project, sizeof project, "%s/projects/demo-bathroom.json", assets_dir());
+    snprintf(project, sizeof project, "%s/projects/designed-bathroom.json", assets_dir());
     o.project = project;
     cli_session s;
     rc = cli_session_open(&o, &s);
@@ -56,6 +56,8 @@ int app_cli_demo(int argc, char **argv)
             rc = cli_render_to_file(&s, &view, path);
         }
     }
+    if (rc == CLI_OK) /* the print set with these renders (docs/printing.md) */
+        rc = app_cli_print_demo(&s.project, out_dir);
     cli_session_close(&s);
     return rc;
 }
