@@ -31,7 +31,7 @@ typedef struct sweep_setting {
     int supersample;    /* 1 = none (the reference is traced at the same) */
 } sweep_setting;
 
-enum { FACTOR_SETTINGS = 19, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
+enum { FACTOR_SETTINGS = 20, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
 
 /* The baseline is what the renderer does by default; every other setting changes one factor. */
 static void make_settings(sweep_setting out[SETTINGS])
@@ -78,6 +78,11 @@ static void make_settings(sweep_setting out[SETTINGS])
     out[18].factor = "highlights";
     out[18].label = "not in probes";
     out[18].no_specular = 1;
+    /* Distance impostors: the probe's stored distances instead of the proxy (reflect.glsl). */
+    out[19] = base;
+    out[19].factor = "correction";
+    out[19].label = "depth";
+    out[19].correction = RD_CORRECTION_DEPTH;
     /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
      * against a reference traced with the same. */
     static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
@@ -92,6 +97,7 @@ static void make_settings(sweep_setting out[SETTINGS])
         st->every_n = q->update == RD_PROBE_ONCE ? 0 : q->update == RD_PROBE_TIME_SLICED ? -1 : 1;
         st->max_resolution = q->max_resolution;
         st->supersample = q->supersample;
+        st->correction = q->correction != RD_CORRECTION_DEFAULT ? q->correction : base.correction;
     }
 }
 

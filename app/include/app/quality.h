@@ -13,13 +13,23 @@ typedef struct app_quality {
     int resolution;     /* 0 = auto */
     int max_resolution; /* cap of auto; 0 = the renderer's */
     int supersample;
+    /* Shadows (docs/rendering.md, "Shadows"): mode, texels per map face, soft taps. */
+    rd_shadow_mode shadows;
+    int shadow_map_size, shadow_taps;
+    /* Where reflected rays end (RENDERING.md section 4); DEFAULT = the scene's (box). */
+    rd_correction correction;
 } app_quality;
 
 /* NULL for an unknown name. */
 const app_quality *app_quality_find(const char *name);
 /* "draft, interactive, final, print" */
 const char *app_quality_names(void);
-/* Applies the preset's probe settings to the scene's defaults. */
+/* The preset's supersampling for a width x height image: its s x s, lowered while the image
+ * would hold more than APP_QUALITY_MAX_SAMPLES samples (never below 1). Large prints have
+ * small pixels: 2 x 2 at 3840 x 2160 samples the view as densely as 4 x 4 at 1920 x 1080. */
+#define APP_QUALITY_MAX_SAMPLES (70LL * 1000 * 1000)
+int app_quality_supersample(const app_quality *q, int width, int height);
+/* Applies the preset's probe and shadow settings to the scene's defaults. */
 void app_quality_apply(const app_quality *q, rd_scene *scene);
 
 #endif
