@@ -1,8 +1,13 @@
 /* screenshot_check A.png [B.png ...]: each screenshot of a planner session shows a rendered
  * room (hundreds of colours, not a blank or cleared window), and consecutive screenshots
- * differ (the actions between them did something). Exit 0 when all hold. */
+ * differ (the actions between them did something). Exit 0 when all hold.
+ *
+ * screenshot_check --golden GOLDEN.png [--mask X0,Y0,X1,Y1]... SHOT.png: SHOT equals GOLDEN
+ * within 8/255 per channel on 99.5 % of the pixels outside the masks (the frame-time overlay
+ * changes from run to run). TESSERA_UPDATE_GOLDEN=1 writes SHOT over GOLDEN instead. */
 #include "render/image_io.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,8 +45,75 @@ static double mean_difference(const rd_image *a, const rd_image *b)
     return s / (double)n;
 }
 
+#define MAX_MASKS 8
+
+static int golden(int argc, char **argv)
+{
+    const char *gold = argv[2], *shot = NULL;
+    int masks[MAX_MASKS][4], nmask = 0;
+    for (int i = 3; i < argc; i++) {
+        if (!strcmp(argv[i], "--mask") && i + 1 < argc && nmask < MAX_MASKS) {
+            int *m = masks[nmask++];
+            if (sscanf(argv[++i], "%d,%d,%d,%d", &m[0], &m[1], &m[2], &m[3]) != 4) {
+                fprintf(stderr, "bad --mask %s\n", argv[i]);
+                return 2;
+            }
+        } else {
+            shot = argv[i];
+        }
+    }
+    rd_image a = {0}, b = {0};
+    char err[1024];
+    if (!shot || rd_image_read(shot, &a, NULL, err, sizeof err) != RD_IMAGE_OK) {
+        fprintf(stderr, "FAIL: %s\n", shot ? err : "no screenshot given");
+        return 1;
+    }
+    const char *update = getenv("TESSERA_UPDATE_GOLDEN");
+    if (update && !strcmp(update, "1")) {
+        char cmd[4096];
+        snprintf(cmd, sizeof cmd, "cp '%s' '%s'", shot, gold);
+        rd_image_free(&a);
+        printf("golden %s updated from %s\n", gold, shot);
+        return system(cmd) == 0 ? 0 : 1;
+    }
+    if (rd_image_read(gold, &b, NULL, err, sizeof err) != RD_IMAGE_OK || a.width != b.width ||
+        a.height != b.height || a.channels != b.channels) {
+        fprintf(stderr, "FAIL: %s against %s: %s\n", shot, gold,
+                b.pixels ? "different sizes" : err);
+        rd_image_free(&a);
+        rd_image_free(&b);
+        return 1;
+    }
+    long counted = 0, off = 0;
+    for (int y = 0; y < a.height; y++)
+        for (int x = 0; x < a.width; x++) {
+            int masked = 0;
+            for (int m = 0; m < nmask; m++)
+                masked |=
+                    x >= masks[m][0] && x < masks[m][2] && y >= masks[m][1] && y < masks[m][3];
+            if (masked)
+                continue;
+            counted++;
+            const float *pa = &a.pixels[((long)y * a.width + x) * a.channels];
+            const float *pb = &b.pixels[((long)y * b.width + x) * b.channels];
+            for (int c = 0; c < a.channels && c < 3; c++)
+                if (fabsf(pa[c] - pb[c]) > 8.0f / 255.0f) {
+                    off++;
+                    break;
+                }
+        }
+    double share = counted ? (double)off / counted : 1;
+    printf("%s against %s: %.3f %% of %ld pixels differ by more than 8/255\n", shot, gold,
+           100 * share, counted);
+    rd_image_free(&a);
+    rd_image_free(&b);
+    return share <= 0.005 ? 0 : 1;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc >= 3 && !strcmp(argv[1], "--golden"))
+        return golden(argc, argv);
     int rc = 0;
     rd_image prev = {0};
     for (int i = 1; i < argc; i++) {

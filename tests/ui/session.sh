@@ -1,10 +1,16 @@
 #!/bin/sh
-# A planner session under Xvfb (issue 8): open the demo, orbit, walk, switch quality, take
-# screenshots; the app must exit 0 and every screenshot must show the room, not a blank or
-# single-colour window.  usage: session.sh TESSERA OUTDIR GOLDEN_TOOL
+# A planner session under Xvfb (issue 8): open the demo, look around, search "basin" in the
+# catalog, place one, drag it against another wall, undo, redo, tile a wall and change its
+# pattern, save; then check the saved project. The app must exit 0 (a GL error fails the
+# next render, and so the run), every screenshot must show the room, each action must change
+# the picture, and the plan screenshots must match their goldens.
+#   usage: session.sh TESSERA OUTDIR SCREENSHOT_CHECK GOLDEN_DIR
 set -e
 tessera=$1
 out=$2
+check=$3
+golden=$4
+rm -rf "$out"
 mkdir -p "$out"
 cat >"$out/session.txt" <<SCRIPT
 wait 2
@@ -18,8 +24,28 @@ screenshot $out/walk.png
 search basin
 expect-hits 5
 select 1
+view plan
+wait 2
+screenshot $out/plan.png
+place-selected 1200 300
+expect-added 1
 wait 1
-screenshot $out/search.png
+screenshot $out/placed.png
+drag - 1200 2700
+wait 1
+screenshot $out/dragged.png
+undo
+redo
+expect-added 1
+search field tile 300 x 600
+expect-hits 1
+select 1
+tile-selected wall:1
+edit tile wall:1 pattern half-offset
+wait 1
+screenshot $out/tiled.png
+save $out/saved.json
+view 3d
 camera basin
 quality draft
 wait 3
@@ -39,10 +65,23 @@ quit
 SCRIPT
 xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open --size 1024x576 --script "$out/session.txt" \
     --frame-log "$out/frames.csv"
-for shot in open orbit walk search draft print present print-shot; do
+for shot in open orbit walk plan placed dragged tiled draft print present print-shot; do
     test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
 done
-# Each screenshot has many colours (a rendered room), and the orbit changed the picture.
-"$3" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/search.png" "$out/draft.png"
-"$3" "$out/print.png" "$out/present.png" "$out/print-shot.png"
+# Each screenshot shows a room or a plan, and each action changed the picture.
+"$check" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/plan.png" "$out/placed.png" \
+    "$out/dragged.png" "$out/tiled.png" "$out/draft.png"
+"$check" "$out/print.png" "$out/present.png" "$out/print-shot.png"
+# The plan views against their goldens; the frame-time overlay (top right) is masked.
+for shot in placed dragged; do
+    "$check" --golden "$golden/ui-$shot.png" --mask 780,0,1024,120 "$out/$shot.png"
+done
+# The saved project holds the edits and passes the project checks' reader.
+grep -q '"half-offset"' "$out/saved.json" || { echo "FAIL: the pattern was not saved"; exit 1; }
+grep -q '"product"' "$out/saved.json" || { echo "FAIL: the placed product was not saved"; exit 1; }
+set +e
+"$tessera" check "$out/saved.json"
+rc=$?
+set -e
+test "$rc" -le 1 || { echo "FAIL: tessera check exit $rc"; exit 1; }
 test "$(wc -l <"$out/frames.csv")" -gt 40 || { echo "FAIL: frame log too short"; exit 1; }

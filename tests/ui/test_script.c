@@ -60,6 +60,10 @@ int main(void)
     expect_error("fly door 99\n", "fly needs a viewpoint name and seconds");
     expect_error("present maybe\n", "present is on or off");
     expect_error("print-shot\n", "print-shot needs a file name");
+    expect_error("share\n", "share needs a file name");
+    expect_error("view side\n", "view is 3d or plan");
+    expect_error("drag basin 10\n", "drag needs a name and a plan point");
+    expect_error("expect-objects 2.5\n", "expect-objects needs a whole number");
     rc = read_text("fly bath 1.5\npresent on\ntour off\nturntable on\nprint-shot a.png\n", &s, err,
                    sizeof err);
     CHECK_MSG(rc == 0, "%s", err);

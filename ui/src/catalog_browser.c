@@ -115,7 +115,7 @@ void ui_catalog_browser_draw(ui_catalog_browser *b, float x, float y)
         ui_catalog_browser_refresh(b);
         if (b->error[0])
             ui_gui_text_wrapped(b->error);
-        ui_gui_text("%d products (%.1f ms)", b->hit_count, b->search_ms);
+        ui_gui_text("%d products", b->hit_count);
         if (ui_gui_begin_child("hits", 0.0f, 180.0f)) {
             for (int i = 0; i < b->hit_count; i++) {
                 const cat_search_hit *h = &b->hits[i];

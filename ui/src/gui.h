@@ -43,6 +43,20 @@ int ui_gui_input_float(const char *label, float *value, float step);
 int ui_gui_list_row(const char *label, int selected);
 int ui_gui_begin_child(const char *id, float width, float height);
 void ui_gui_end_child(void);
+/* Drawing on the background behind every panel (the plan and elevation views), in window
+ * pixels; colours are 0xAABBGGRR as Dear ImGui packs them. */
+void ui_gui_draw_line(float x0, float y0, float x1, float y1, unsigned colour, float thickness);
+void ui_gui_draw_quad_filled(const float xy[8], unsigned colour); /* convex */
+void ui_gui_draw_rect(float x0, float y0, float x1, float y1, unsigned colour, float thickness);
+void ui_gui_draw_circle(float x, float y, float radius, unsigned colour, int filled);
+void ui_gui_draw_arc(float cx, float cy, float radius, float a0, float a1, unsigned colour,
+                     float thickness);
+void ui_gui_draw_text(float x, float y, unsigned colour, const char *text);
+/* A slider whose value is committed when the user lets go (one undo step per change);
+ * returns 1 then. *value follows the drag meanwhile. */
+int ui_gui_slider_commit(const char *label, float *value, float lo, float hi);
+/* Text input with a number (exact lengths); returns 1 when Enter was pressed. */
+int ui_gui_input_double_enter(const char *label, double *value);
 void ui_gui_plot_lines(const char *label, const float *values, int count, float lo, float hi,
                        float width, float height);
 

@@ -184,3 +184,69 @@ extern "C" void ui_gui_end_child(void)
     if (g_ready)
         ImGui::EndChild();
 }
+
+static ImDrawList *background(void)
+{
+    return ImGui::GetBackgroundDrawList();
+}
+
+extern "C" void ui_gui_draw_line(float x0, float y0, float x1, float y1, unsigned colour,
+                                 float thickness)
+{
+    if (g_ready)
+        background()->AddLine(ImVec2(x0, y0), ImVec2(x1, y1), colour, thickness);
+}
+
+extern "C" void ui_gui_draw_quad_filled(const float xy[8], unsigned colour)
+{
+    if (g_ready)
+        background()->AddQuadFilled(ImVec2(xy[0], xy[1]), ImVec2(xy[2], xy[3]),
+                                    ImVec2(xy[4], xy[5]), ImVec2(xy[6], xy[7]), colour);
+}
+
+extern "C" void ui_gui_draw_rect(float x0, float y0, float x1, float y1, unsigned colour,
+                                 float thickness)
+{
+    if (g_ready)
+        background()->AddRect(ImVec2(x0, y0), ImVec2(x1, y1), colour, 0.0f, 0, thickness);
+}
+
+extern "C" void ui_gui_draw_circle(float x, float y, float radius, unsigned colour, int filled)
+{
+    if (!g_ready)
+        return;
+    if (filled)
+        background()->AddCircleFilled(ImVec2(x, y), radius, colour);
+    else
+        background()->AddCircle(ImVec2(x, y), radius, colour);
+}
+
+extern "C" void ui_gui_draw_arc(float cx, float cy, float radius, float a0, float a1,
+                                unsigned colour, float thickness)
+{
+    if (!g_ready)
+        return;
+    ImDrawList *d = background();
+    d->PathArcTo(ImVec2(cx, cy), radius, a0, a1, 24);
+    d->PathStroke(colour, 0, thickness);
+}
+
+extern "C" void ui_gui_draw_text(float x, float y, unsigned colour, const char *text)
+{
+    if (g_ready)
+        background()->AddText(ImVec2(x, y), colour, text);
+}
+
+extern "C" int ui_gui_input_double_enter(const char *label, double *value)
+{
+    return g_ready &&
+           ImGui::InputDouble(label, value, 0.0, 0.0, "%.0f", ImGuiInputTextFlags_EnterReturnsTrue);
+}
+
+extern "C" int ui_gui_slider_commit(const char *label, float *value, float lo, float hi)
+{
+    if (!g_ready)
+        return 0;
+    ImGui::SliderFloat(label, value, lo, hi);
+    return ImGui::IsItemDeactivatedAfterEdit();
+}

@@ -2,6 +2,7 @@
  * context, Dear ImGui draws the panels on top of the 3D view (issue 8). */
 #include "planner.h"
 
+#include "app/commands.h"
 #include "gui.h"
 
 #include <GLFW/glfw3.h>
@@ -15,6 +16,16 @@ static void *gl_proc(const char *name)
 {
     __extension__ void *p = (void *)glfwGetProcAddress(name);
     return p;
+}
+
+/* Closing with unsaved changes asks first (the panel in planner_panels.c). */
+static void on_close(GLFWwindow *w)
+{
+    planner *p = glfwGetWindowUserPointer(w);
+    if (p && p->dirty) {
+        glfwSetWindowShouldClose(w, GLFW_FALSE);
+        p->close_requested = 1;
+    }
 }
 
 static void glfw_error(int code, const char *text)
@@ -88,7 +99,8 @@ static int open_project(planner *p, const ui_options *o)
     char demo[1024];
     const char *path = o->project;
     if (!path) {
-        snprintf(demo, sizeof demo, "%s/assets/projects/demo-bathroom.json", TESSERA_SOURCE_DIR);
+        snprintf(demo, sizeof demo, "%s/assets/projects/designed-bathroom.json",
+                 TESSERA_SOURCE_DIR);
         path = demo;
     }
     if (app_project_read(path, &p->project, err, sizeof err) != APP_OK) {
@@ -138,21 +150,27 @@ static int frame(planner *p)
     planner_animate(p, p->fixed_dt > 0 ? p->fixed_dt : dt);
 
     int rw = (int)lroundf(fw * p->render_scale), rh = (int)lroundf(fh * p->render_scale);
-    rd_view v;
-    planner_view(p, rw < 1 ? 1 : rw, rh < 1 ? 1 : rh, &v);
-    double t0 = glfwGetTime();
-    if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK || rd_present(p->ctx, fw, fh) != RD_OK) {
-        fprintf(stderr, "tessera: rendering the 3D view failed: %s\n", rd_last_error());
-        return 1;
+    float render_ms = 0;
+    if (p->view == UI_VIEW_3D && p->scene_ready) {
+        rd_view v;
+        planner_view(p, rw < 1 ? 1 : rw, rh < 1 ? 1 : rh, &v);
+        double t0 = glfwGetTime();
+        if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK || rd_present(p->ctx, fw, fh) != RD_OK) {
+            fprintf(stderr, "tessera: rendering the 3D view failed: %s\n", rd_last_error());
+            return 1;
+        }
+        rd_finish(p->ctx);
+        render_ms = (float)((glfwGetTime() - t0) * 1e3);
     }
-    rd_finish(p->ctx);
-    float render_ms = (float)((glfwGetTime() - t0) * 1e3);
 
     ui_gui_new_frame();
+    if (p->view == UI_VIEW_PLAN && !p->presenting)
+        planner_plan_frame(p, fw, fh);
     if (p->presenting)
         planner_draw_presentation(p, fw, fh);
     else
         planner_draw_panels(p, fw, fh);
+    planner_autosave_tick(p, now);
     ui_gui_render();
     if (p->script.count && planner_script_step(p))
         return 1;
@@ -217,6 +235,7 @@ int ui_run(const ui_options *o)
     glfwMakeContextCurrent(p.window);
     glfwSwapInterval(0); /* measured frame times are the renderer's, not the display's */
     glfwSetWindowUserPointer(p.window, &p);
+    glfwSetWindowCloseCallback(p.window, on_close);
     if (rd_context_create(
             &(rd_context_desc){.backend = RD_BACKEND_ADOPT, .get_proc_address = gl_proc}, &p.ctx) !=
         RD_OK) {
@@ -228,8 +247,12 @@ int ui_run(const ui_options *o)
         fprintf(stderr, "tessera: %s\n", err);
         goto done;
     }
-    if (open_project(&p, o))
+    p.plan_o.selected_object = p.plan_o.selected_wall = -1;
+    p.plan_o.hover_corner = p.plan_o.drag_corner = p.plan_o.drag_object = -1;
+    if (open_project(&p, o) || planner_doc_open(&p))
         goto done;
+    p.recovery_offered = planner_recovery_available(&p);
+    p.objects_at_open = p.project.object_count;
     ui_catalog_browser_open(&p.browser);
     int qi = 1;
     for (int i = 0; o->quality && i < 4; i++)
@@ -250,13 +273,14 @@ int ui_run(const ui_options *o)
     if (!rc)
         rc = p.exit_code;
 done:
+    planner_doc_close(&p);
     ui_catalog_browser_close(&p.browser);
     ui_gui_shutdown();
     if (p.scene_ready)
         app_scene_release(p.ctx, &p.scene);
     if (p.ctx)
         rd_context_destroy(p.ctx);
-    app_project_free(&p.project);
+    app_project_free_all(&p.project);
     if (p.window)
         glfwDestroyWindow(p.window);
     glfwTerminate();

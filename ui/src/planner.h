@@ -4,13 +4,16 @@
 #ifndef UI_PLANNER_H
 #define UI_PLANNER_H
 
+#include "app/placement.h"
 #include "app/project.h"
 #include "app/quality.h"
 #include "app/scene_build.h"
 #include "catalog_browser.h"
+#include "plan_draw.h"
 #include "render/render.h"
 #include "script.h"
 #include "ui/navigation.h"
+#include "ui/plan_view.h"
 #include "ui/ui.h"
 
 #include <stdio.h>
@@ -18,6 +21,8 @@
 struct GLFWwindow;
 
 enum { UI_MODE_ORBIT = 0, UI_MODE_WALK = 1 };
+enum { UI_VIEW_3D = 0, UI_VIEW_PLAN = 1 };
+struct app_history;
 #define UI_FRAME_HISTORY 120
 
 typedef struct planner {
@@ -44,6 +49,28 @@ typedef struct planner {
     FILE *frame_log;
 
     ui_catalog_browser browser;
+
+    /* The document (planner_doc.c): edits through app's commands, one undo step each. */
+    struct app_history *history;
+    app_lazy_catalog catalog;
+    app_fixture *fixtures;
+    int fixture_count;
+    app_findings findings;
+    int dirty;
+    double last_autosave;
+    char status[320];
+    int objects_at_open;  /* for scripts: objects added since the window opened */
+    int recovery_offered; /* the autosave prompt is showing */
+    int close_requested;  /* the unsaved-changes prompt is showing */
+
+    /* The plan view (planner_plan.c). */
+    int view; /* UI_VIEW_* */
+    ui_plan_transform plan_t;
+    int plan_fitted;
+    ui_plan_overlay plan_o;
+    double drag_start_mm[2];
+    int panning;
+    double wall_length_edit;
 
     /* Presentation mode (presentation.c): the UI hidden, flights between viewpoints. */
     int presenting;
@@ -89,6 +116,32 @@ void planner_draw_presentation(planner *p, int width, int height);
  * TIFF); the window's own quality is kept. */
 int planner_print_shot(planner *p, const char *path);
 void planner_toggle_fullscreen(planner *p);
+/* The share export of the document as it is now into dir (tessera share). */
+int planner_share(planner *p, const char *dir);
+
+/* planner_doc.c */
+int planner_doc_open(planner *p);
+void planner_doc_close(planner *p);
+/* Runs one edit line (docs/editing.md) as one undo step; 0 ok, else the status says why. */
+int planner_edit(planner *p, const char *line);
+int planner_undo(planner *p, int redo);
+void planner_doc_changed(planner *p);
+int planner_rebuild_scene(planner *p);
+int planner_save(planner *p, const char *path);
+void planner_autosave_tick(planner *p, double now);
+int planner_recovery_available(const planner *p);
+int planner_recover(planner *p, int accept);
+void planner_status(planner *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* planner_plan.c: the 2D plan view's input and drawing. */
+void planner_plan_frame(planner *p, int width, int height);
+/* Places the catalog browser's selected product at a plan point, snapped to the nearest wall. */
+int planner_place_selected(planner *p, double x_mm, double y_mm);
+/* Moves a fixture (by object name) to a plan point, as a drag in the plan would. */
+int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm);
+void planner_plan_scroll(planner *p, double steps);
+/* Tiles a surface ("wall:0", "floor", ...) with the catalog browser's selected tile. */
+int planner_tile_selected(planner *p, const char *surface);
 
 /* planner.c */
 /* The renderer's view of what the window shows, at a size, with the quality's supersampling. */

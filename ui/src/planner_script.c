@@ -130,6 +130,40 @@ static int apply(planner *p, const ui_action *a)
         return 0;
     case UI_ACT_PRINT_SHOT:
         return planner_print_shot(p, a->text);
+    case UI_ACT_VIEW:
+        p->view = strcmp(a->text, "plan") ? UI_VIEW_3D : UI_VIEW_PLAN;
+        return 0;
+    case UI_ACT_EDIT:
+        return planner_edit(p, a->text) ? fail(a, p->status) : 0;
+    case UI_ACT_PLACE_SELECTED:
+        return planner_place_selected(p, a->a, a->b) ? fail(a, p->status) : 0;
+    case UI_ACT_DRAG:
+        return planner_drag_object(p, a->text, a->a, a->b) ? fail(a, p->status) : 0;
+    case UI_ACT_UNDO:
+    case UI_ACT_REDO:
+        return planner_undo(p, a->kind == UI_ACT_REDO) ? fail(a, p->status) : 0;
+    case UI_ACT_SAVE:
+        return planner_save(p, strcmp(a->text, "-") ? a->text : NULL) ? fail(a, p->status) : 0;
+    case UI_ACT_EXPECT_OBJECTS:
+        if (p->project.object_count != (int)a->a) {
+            char why[128];
+            snprintf(why, sizeof why, "the project has %d objects, expected %d",
+                     p->project.object_count, (int)a->a);
+            return fail(a, why);
+        }
+        return 0;
+    case UI_ACT_EXPECT_ADDED:
+        if (p->project.object_count - p->objects_at_open != (int)a->a) {
+            char why[128];
+            snprintf(why, sizeof why, "%d objects were added, expected %d",
+                     p->project.object_count - p->objects_at_open, (int)a->a);
+            return fail(a, why);
+        }
+        return 0;
+    case UI_ACT_TILE_SELECTED:
+        return planner_tile_selected(p, a->text) ? fail(a, p->status) : 0;
+    case UI_ACT_SHARE:
+        return planner_share(p, a->text) ? fail(a, p->status) : 0;
     case UI_ACT_QUIT:
         p->quit = 1;
         return 0;

@@ -1,6 +1,8 @@
 /* Presentation mode for a customer at the showroom table (issue 8 item 7): the UI hidden but
  * for a caption, smooth flights between stored viewpoints, an automatic tour, a turntable, and
  * one key for a print-quality screenshot. */
+#define _POSIX_C_SOURCE 200809L /* mkdtemp */
+
 #include "planner.h"
 
 #include "gui.h"
@@ -10,6 +12,11 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
 
 #define TOUR_HOLD_S 4.0   /* seconds at each viewpoint */
 #define TOUR_FLIGHT_S 2.5 /* seconds between two */
@@ -72,9 +79,46 @@ void planner_animate(planner *p, double dt)
         p->orbit.yaw_deg = fmod(p->orbit.yaw_deg + TURNTABLE_DEG_PER_S * dt, 360.0);
 }
 
+/* The product card of the selected fixture: what the customer points at, with its price. */
+static void product_card(planner *p, int width)
+{
+    int i = p->plan_o.selected_object;
+    if (i < 0 || i >= p->project.object_count || !p->project.objects[i].has_product ||
+        !p->browser.db)
+        return;
+    const app_product_ref *ref = &p->project.objects[i].product;
+    static cat_product card;
+    static app_product_ref shown;
+    if (memcmp(&shown, ref, sizeof shown)) {
+        char err[1024];
+        cat_product_free(&card);
+        if (cat_product_find(p->browser.db, ref->manufacturer, ref->article, &card, err,
+                             sizeof err) != CAT_DB_OK)
+            return;
+        shown = *ref;
+    }
+    long long cents = card.price_cents;
+    const char *finish = "";
+    for (int v = 0; v < card.variant_count; v++)
+        if (!strcmp(card.variants[v].code, ref->variant)) {
+            cents += card.variants[v].surcharge_cents;
+            finish = card.variants[v].name;
+        }
+    if (ui_gui_begin_overlay("##product-card", (float)width - 380.0f, 20.0f, 0.6f)) {
+        ui_gui_text("%s", card.name);
+        ui_gui_text("%s %s, art. %s", card.manufacturer, card.series, card.article);
+        if (*finish)
+            ui_gui_text("finish: %s", finish);
+        ui_gui_text("%.0f x %.0f x %.0f mm", card.width_mm, card.depth_mm, card.height_mm);
+        ui_gui_text("%lld.%02lld %s + %.0f %% VAT", cents / 100, cents % 100, card.currency,
+                    card.vat_percent);
+    }
+    ui_gui_end();
+}
+
 void planner_draw_presentation(planner *p, int width, int height)
 {
-    (void)width;
+    product_card(p, width);
     if (ui_gui_begin_overlay("##caption", 20.0f, (float)height - 70.0f, 0.4f)) {
         ui_gui_text("%s", p->project.name);
         int cam = p->flight.active ? p->flight.camera : p->camera;
@@ -136,4 +180,38 @@ void planner_toggle_fullscreen(planner *p)
     glfwGetWindowPos(p->window, &p->windowed_pos[0], &p->windowed_pos[1]);
     glfwGetWindowSize(p->window, &p->windowed_pos[2], &p->windowed_pos[3]);
     glfwSetWindowMonitor(p->window, m, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+
+int planner_share(planner *p, const char *dir)
+{
+    /* The share export works from a file: the document as it is now, in a temporary folder,
+     * composed by `tessera share` (app/src/cli_share.c) in a process of its own: it makes
+     * OpenGL contexts of its own, which must not touch the window's. The window waits for it
+     * (a script's next action needs the folder). */
+    char folder[] = "/tmp/tessera-share-XXXXXX", tmp[64], bak[72], err[1024];
+    if (!mkdtemp(folder)) {
+        planner_status(p, "share: cannot make a temporary folder");
+        return 1;
+    }
+    snprintf(tmp, sizeof tmp, "%s/project.json", folder);
+    snprintf(bak, sizeof bak, "%s.bak", tmp);
+    if (app_project_write(tmp, &p->project, err, sizeof err) != APP_OK) {
+        planner_status(p, "share: %s", err);
+        rmdir(folder);
+        return 1;
+    }
+    char *argv[] = {"tessera", "share", tmp, "-o", (char *)dir, NULL};
+    pid_t pid;
+    int status = 1;
+    if (posix_spawn(&pid, "/proc/self/exe", NULL, NULL, argv, environ) == 0)
+        waitpid(pid, &status, 0);
+    unlink(tmp);
+    unlink(bak);
+    rmdir(folder);
+    int rc = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    if (rc)
+        planner_status(p, "share: the export failed (see the terminal)");
+    else
+        planner_status(p, "shared: %s/index.html", dir);
+    return rc;
 }

@@ -31,6 +31,17 @@ static const struct {
     {"tour", UI_ACT_TOUR, 0, 1},
     {"turntable", UI_ACT_TURNTABLE, 0, 1},
     {"print-shot", UI_ACT_PRINT_SHOT, 0, 1},
+    {"view", UI_ACT_VIEW, 0, 1},
+    {"edit", UI_ACT_EDIT, 0, 2},
+    {"place-selected", UI_ACT_PLACE_SELECTED, 2, 0},
+    {"drag", UI_ACT_DRAG, -2, 1}, /* a name, then X Y */
+    {"undo", UI_ACT_UNDO, 0, 0},
+    {"redo", UI_ACT_REDO, 0, 0},
+    {"save", UI_ACT_SAVE, 0, 1},
+    {"expect-objects", UI_ACT_EXPECT_OBJECTS, 1, 0},
+    {"expect-added", UI_ACT_EXPECT_ADDED, 1, 0},
+    {"tile-selected", UI_ACT_TILE_SELECTED, 0, 1},
+    {"share", UI_ACT_SHARE, 0, 1},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 
@@ -70,8 +81,8 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
     if (verbs[v].text == 2) {
         char *rest = strtok_r(NULL, "\r\n", &save);
         rest = rest ? rest + strspn(rest, " \t") : NULL;
-        if (!rest || !*rest || strlen(rest) >= 128) {
-            snprintf(why, why_size, "%s needs a text of 1 to 127 bytes", verb);
+        if (!rest || !*rest || strlen(rest) >= sizeof a->text) {
+            snprintf(why, why_size, "%s needs a text of 1 to 511 bytes", verb);
             return 0;
         }
         strcpy(a->text, rest);
@@ -81,15 +92,26 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
         char *t = strtok_r(NULL, " \t\r\n", &save);
         if (!t || strlen(t) >= sizeof a->text) {
             snprintf(why, why_size, "%s needs a %s", verb,
-                     a->kind == UI_ACT_SCREENSHOT || a->kind == UI_ACT_PRINT_SHOT ? "file name"
-                                                                                  : "name");
+                     a->kind == UI_ACT_SCREENSHOT || a->kind == UI_ACT_PRINT_SHOT ||
+                             a->kind == UI_ACT_SHARE
+                         ? "file name"
+                         : "name");
             return 0;
         }
         strcpy(a->text, t);
     }
-    if (verbs[v].numbers < 0 &&
+    if (verbs[v].numbers == -1 &&
         (!parse_number(strtok_r(NULL, " \t\r\n", &save), &a->a) || a->a < 0 || a->a > 60)) {
         snprintf(why, why_size, "%s needs a viewpoint name and seconds from 0 to 60", verb);
+        return 0;
+    }
+    if (verbs[v].numbers == -2 && (!parse_number(strtok_r(NULL, " \t\r\n", &save), &a->a) ||
+                                   !parse_number(strtok_r(NULL, " \t\r\n", &save), &a->b))) {
+        snprintf(why, why_size, "%s needs a name and a plan point X Y (mm)", verb);
+        return 0;
+    }
+    if (a->kind == UI_ACT_VIEW && strcmp(a->text, "3d") && strcmp(a->text, "plan")) {
+        snprintf(why, why_size, "view is 3d or plan, not \"%s\"", a->text);
         return 0;
     }
     if ((a->kind == UI_ACT_PRESENT || a->kind == UI_ACT_TOUR || a->kind == UI_ACT_TURNTABLE) &&
@@ -118,6 +140,10 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
     if ((a->kind == UI_ACT_SELECT || a->kind == UI_ACT_EXPECT_HITS) &&
         (a->a < 1 || a->a > 200 || a->a != (int)a->a)) {
         snprintf(why, why_size, "%s needs a whole number from 1 to 200", verb);
+        return 0;
+    }
+    if ((a->kind == UI_ACT_EXPECT_OBJECTS || a->kind == UI_ACT_EXPECT_ADDED) && a->a != (int)a->a) {
+        snprintf(why, why_size, "%s needs a whole number", verb);
         return 0;
     }
     if (a->kind == UI_ACT_MODE && strcmp(a->text, "orbit") && strcmp(a->text, "walk")) {

@@ -17,6 +17,17 @@
  *   tour on|off            the automatic tour through the viewpoints
  *   turntable on|off       turn the view about its target
  *   print-shot FILE        a print-quality screenshot (twice the window size)
+ *   view 3d|plan           the 3D view or the 2D plan
+ *   edit LINE...           one edit line (docs/editing.md), as the UI's own buttons send them
+ *   place-selected X Y     place the catalog browser's selected product at a plan point
+ *   drag NAME X Y          drag a fixture's footprint centre to a plan point and let go
+ *                          (NAME "-": the selected fixture, e.g. the one just placed)
+ *   tile-selected SURFACE  tile a surface with the catalog browser's selected tile
+ *   undo / redo            Ctrl+Z / Ctrl+Y
+ *   save FILE              save as FILE (atomic); "save -" saves to the project's own file
+ *   expect-objects N       fail unless the project has exactly N objects
+ *   expect-added N         fail unless N objects were added since the window opened
+ *   share DIR              the share export of the document as it is now
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -41,6 +52,17 @@ typedef enum ui_action_kind {
     UI_ACT_TOUR,
     UI_ACT_TURNTABLE,
     UI_ACT_PRINT_SHOT,
+    UI_ACT_VIEW,
+    UI_ACT_EDIT,
+    UI_ACT_PLACE_SELECTED,
+    UI_ACT_DRAG,
+    UI_ACT_UNDO,
+    UI_ACT_REDO,
+    UI_ACT_SAVE,
+    UI_ACT_EXPECT_OBJECTS,
+    UI_ACT_EXPECT_ADDED,
+    UI_ACT_TILE_SELECTED,
+    UI_ACT_SHARE,
     UI_ACT_QUIT
 } ui_action_kind;
 

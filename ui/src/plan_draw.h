@@ -1,0 +1,22 @@
+/* Drawing the plan view (issue 8 item 2): walls with their thickness, openings with door
+ * swings, pre-walls, fixtures with their free areas, findings, wall lengths. */
+#ifndef UI_PLAN_DRAW_H
+#define UI_PLAN_DRAW_H
+
+#include "app/placement.h"
+#include "app/project.h"
+#include "ui/plan_view.h"
+
+typedef struct ui_plan_overlay {
+    int selected_object; /* -1 = none */
+    int selected_wall;   /* -1 = none */
+    int hover_corner;    /* -1 = none */
+    int drag_corner;     /* -1 = none; drag_mm is where it goes */
+    int drag_object;     /* -1 = none; drag_mm is where its centre goes */
+    double drag_mm[2];
+} ui_plan_overlay;
+
+void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fixture *fx,
+                  int fixture_count, const app_findings *findings, const ui_plan_overlay *o);
+
+#endif

@@ -1,0 +1,192 @@
+/* The planner's document: every change goes through app's commands as an edit line (the same
+ * lines `tessera edit` replays, docs/editing.md), so each is one undo step; after a change the
+ * fixtures, the placement findings and the 3D scene are brought up to date. Saving is app's
+ * atomic write; autosave writes PATH.autosave every AUTOSAVE_S seconds while there are unsaved
+ * changes, and opening a project whose autosave is newer offers to recover it. */
+#include "planner.h"
+
+#include "app/commands.h"
+
+#include <errno.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#define AUTOSAVE_S 30.0
+
+void planner_status(planner *p, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(p->status, sizeof p->status, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "tessera: %s\n", p->status);
+}
+
+/* Fixtures and findings of the current document (the plan view and the 3D markers). */
+static void refresh_findings(planner *p)
+{
+    free(p->fixtures);
+    p->fixtures = NULL;
+    p->fixture_count = 0;
+    app_findings_free(&p->findings);
+    char err[1024];
+    if (app_placement_fixtures(&p->project, app_placement_lazy_lookup, &p->catalog, &p->fixtures,
+                               &p->fixture_count, err, sizeof err) != APP_OK) {
+        planner_status(p, "%s", err);
+        return;
+    }
+    app_check_options opt = {.barrier_free = APP_BARRIER_FREE_OFF};
+    if (app_placement_check(&p->project, p->fixtures, p->fixture_count, &opt, &p->findings, err,
+                            sizeof err) != APP_OK)
+        planner_status(p, "%s", err);
+}
+
+int planner_rebuild_scene(planner *p)
+{
+    char err[1024];
+    if (p->scene_ready)
+        app_scene_release(p->ctx, &p->scene);
+    p->scene_ready = 0;
+    if (app_scene_build(p->ctx, &p->project, &p->scene, err, sizeof err) != APP_OK) {
+        planner_status(p, "%s", err);
+        return 1;
+    }
+    p->scene_ready = 1;
+    planner_set_quality(p, p->quality);
+    return 0;
+}
+
+void planner_doc_changed(planner *p)
+{
+    p->dirty = 1;
+    refresh_findings(p);
+    planner_rebuild_scene(p);
+}
+
+int planner_doc_open(planner *p)
+{
+    p->history = app_history_create(200);
+    p->catalog.db_path = NULL; /* the user's catalog, as `tessera catalog` */
+    if (!p->history) {
+        fprintf(stderr, "tessera: out of memory\n");
+        return 1;
+    }
+    refresh_findings(p);
+    return 0;
+}
+
+void planner_doc_close(planner *p)
+{
+    app_history_destroy(p->history);
+    p->history = NULL;
+    free(p->fixtures);
+    p->fixtures = NULL;
+    app_findings_free(&p->findings);
+    app_placement_lazy_close(&p->catalog);
+}
+
+int planner_edit(planner *p, const char *line)
+{
+    app_script_env env = {.lookup = app_placement_lazy_lookup,
+                          .user = &p->catalog,
+                          .assets_dir = app_placement_assets_dir()};
+    char err[1024];
+    if (app_script_run(&p->project, p->history, line, strlen(line), "edit", &env, NULL, err,
+                       sizeof err) != APP_OK) {
+        planner_status(p, "%s", err);
+        return 1;
+    }
+    planner_status(p, "%s", line);
+    planner_doc_changed(p);
+    return 0;
+}
+
+int planner_undo(planner *p, int redo)
+{
+    char err[1024];
+    app_result r = redo ? app_history_redo(p->history, &p->project, err, sizeof err)
+                        : app_history_undo(p->history, &p->project, err, sizeof err);
+    if (r != APP_OK) {
+        planner_status(p, "%s", redo ? "nothing to redo" : "nothing to undo");
+        return 1;
+    }
+    planner_status(p, "%s", redo ? "redone" : "undone");
+    planner_doc_changed(p);
+    return 0;
+}
+
+static void autosave_path(const planner *p, char *out, size_t size)
+{
+    snprintf(out, size, "%s.autosave", p->project.path);
+}
+
+int planner_save(planner *p, const char *path)
+{
+    char err[1024];
+    const char *target = path && *path ? path : p->project.path;
+    if (!*target) {
+        planner_status(p, "save: the project has no file yet (save as)");
+        return 1;
+    }
+    if (app_project_write(target, &p->project, err, sizeof err) != APP_OK) {
+        planner_status(p, "%s", err);
+        return 1;
+    }
+    if (target != p->project.path)
+        snprintf(p->project.path, sizeof p->project.path, "%s", target);
+    char a[sizeof p->project.path + 16];
+    autosave_path(p, a, sizeof a);
+    unlink(a); /* the saved file is newer than any autosave */
+    p->dirty = 0;
+    planner_status(p, "saved %s", target);
+    return 0;
+}
+
+void planner_autosave_tick(planner *p, double now)
+{
+    if (!p->dirty || !p->project.path[0] || now - p->last_autosave < AUTOSAVE_S)
+        return;
+    p->last_autosave = now;
+    char a[sizeof p->project.path + 16], err[1024];
+    autosave_path(p, a, sizeof a);
+    /* The document's own path stays the project file: the autosave is a copy beside it. */
+    if (app_project_write(a, &p->project, err, sizeof err) != APP_OK)
+        planner_status(p, "autosave failed: %s", err);
+}
+
+int planner_recovery_available(const planner *p)
+{
+    char a[sizeof p->project.path + 16];
+    autosave_path(p, a, sizeof a);
+    struct stat sa, sp;
+    return p->project.path[0] && stat(a, &sa) == 0 && stat(p->project.path, &sp) == 0 &&
+           sa.st_mtime >= sp.st_mtime;
+}
+
+int planner_recover(planner *p, int accept)
+{
+    char a[sizeof p->project.path + 16], err[1024];
+    autosave_path(p, a, sizeof a);
+    if (!accept) {
+        unlink(a);
+        planner_status(p, "autosave discarded");
+        return 0;
+    }
+    app_project rec;
+    if (app_project_read(a, &rec, err, sizeof err) != APP_OK) {
+        planner_status(p, "the autosave cannot be read: %s", err);
+        return 1;
+    }
+    char path[sizeof p->project.path];
+    memcpy(path, p->project.path, sizeof path);
+    app_project_free_all(&p->project);
+    p->project = rec;
+    memcpy(p->project.path, path, sizeof path); /* saving goes to the project, not the copy */
+    app_history_clear(p->history);
+    planner_doc_changed(p);
+    planner_status(p, "recovered the autosaved changes (not saved yet)");
+    return 0;
+}

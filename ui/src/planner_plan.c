@@ -1,0 +1,215 @@
+/* The 2D plan view (issue 8 item 2): drag corners to reshape the room, drag fixtures (they
+ * snap to walls when released near one), select a wall and type its exact length, pan with the
+ * right button, zoom with the wheel. Every change is an edit line through app's commands. */
+#include "planner.h"
+
+#include "gui.h"
+
+#include <GLFW/glfw3.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define GRID_MM 10.0
+
+static int object_index(const planner *p, const char *name)
+{
+    for (int i = 0; i < p->project.object_count; i++)
+        if (!strcmp(p->project.objects[i].name, name))
+            return i;
+    return -1;
+}
+
+static const app_fixture *fixture_of(const planner *p, int object)
+{
+    for (int i = 0; i < p->fixture_count; i++)
+        if (p->fixtures[i].object == object)
+            return &p->fixtures[i];
+    return NULL;
+}
+
+int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm)
+{
+    int i = strcmp(name, "-") ? object_index(p, name) : p->plan_o.selected_object;
+    const app_fixture *f = i >= 0 ? fixture_of(p, i) : NULL;
+    if (!f) {
+        planner_status(p, "no fixture \"%s\" in the plan", name);
+        return 1;
+    }
+    /* The pointer carries the footprint's centre; the object's position (its back centre)
+     * moves by the same amount. */
+    const app_object *o = &p->project.objects[i];
+    double x = o->position_mm[0] + x_mm - f->centre[0], y = o->position_mm[1] + y_mm - f->centre[1];
+    char line[256];
+    snprintf(line, sizeof line, "move \"%s\" %.0f %.0f %.0f snap wall", o->name,
+             ui_plan_snap_grid(x, GRID_MM), ui_plan_snap_grid(y, GRID_MM), o->position_mm[2]);
+    /* No wall near: the move without snapping. */
+    if (planner_edit(p, line) == 0)
+        return 0;
+    snprintf(line, sizeof line, "move \"%s\" %.0f %.0f %.0f", o->name,
+             ui_plan_snap_grid(x, GRID_MM), ui_plan_snap_grid(y, GRID_MM), o->position_mm[2]);
+    return planner_edit(p, line);
+}
+
+int planner_place_selected(planner *p, double x_mm, double y_mm)
+{
+    const ui_catalog_browser *b = &p->browser;
+    if (b->selected < 0 || !b->product.article[0]) {
+        planner_status(p, "select a product in the catalog first");
+        return 1;
+    }
+    const cat_product *prod = &b->product;
+    const char *variant = b->variant < prod->variant_count ? prod->variants[b->variant].code : "";
+    /* Wall-hung products (basins, WCs, mirrors, lamps) keep the catalog's mounting height
+     * for later; they start on the floor against the nearest wall. */
+    char line[512];
+    snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f 0 snap wall",
+             prod->manufacturer, prod->article, variant, x_mm, y_mm);
+    int rc = planner_edit(p, line);
+    if (rc) {
+        snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f 0", prod->manufacturer,
+                 prod->article, variant, x_mm, y_mm);
+        rc = planner_edit(p, line);
+    }
+    if (rc == 0) /* the new fixture is the selection, ready to be dragged */
+        p->plan_o.selected_object = p->project.object_count - 1;
+    return rc;
+}
+
+int planner_tile_selected(planner *p, const char *surface)
+{
+    const ui_catalog_browser *b = &p->browser;
+    if (b->selected < 0 || !b->product.has_tile) {
+        planner_status(p, "select a tile in the catalog first");
+        return 1;
+    }
+    const cat_product *prod = &b->product;
+    const char *variant = b->variant < prod->variant_count ? prod->variants[b->variant].code : "";
+    char line[512];
+    snprintf(line, sizeof line, "tile %s with \"%s\" \"%s\" %s", surface, prod->manufacturer,
+             prod->article, variant);
+    return planner_edit(p, line);
+}
+
+static void wall_panel(planner *p)
+{
+    int w = p->plan_o.selected_wall;
+    if (w < 0 || w >= p->project.plan.corner_count)
+        return;
+    if (ui_gui_begin("Wall", 10.0f, 410.0f, 260.0f, 90.0f)) {
+        ui_gui_text("wall %d: %.0f mm", w, ui_plan_wall_length(&p->project.plan, w));
+        if (ui_gui_input_double_enter("length mm", &p->wall_length_edit) &&
+            p->wall_length_edit > 0) {
+            app_point2 c = ui_plan_corner_for_length(&p->project.plan, w, p->wall_length_edit);
+            char line[128];
+            snprintf(line, sizeof line, "corner %d %.1f %.1f",
+                     (w + 1) % p->project.plan.corner_count, c.x, c.y);
+            planner_edit(p, line);
+        }
+    }
+    ui_gui_end();
+}
+
+static void handle_plan_input(planner *p)
+{
+    GLFWwindow *win = p->window;
+    double mx, my;
+    glfwGetCursorPos(win, &mx, &my);
+    float sx = (float)mx, sy = (float)my;
+    double x, y;
+    ui_plan_to_plan(&p->plan_t, sx, sy, &x, &y);
+    ui_plan_overlay *o = &p->plan_o;
+    int free_pointer = !ui_gui_wants_mouse();
+    o->hover_corner =
+        free_pointer ? ui_plan_hit_corner(&p->plan_t, &p->project.plan, sx, sy, 8) : -1;
+    int left = glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    int right = glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+
+    if (right && free_pointer) {
+        if (p->panning) {
+            p->plan_t.centre_mm[0] -= (sx - p->mouse_x) / p->plan_t.px_per_mm;
+            p->plan_t.centre_mm[1] += (sy - p->mouse_y) / p->plan_t.px_per_mm;
+        }
+        p->panning = 1;
+    } else {
+        p->panning = 0;
+    }
+
+    if (left && !p->dragging && free_pointer) {
+        /* Press: a corner first, then a fixture, then a wall; else nothing is selected. */
+        p->dragging = 1;
+        o->drag_corner = o->hover_corner;
+        o->drag_object = -1;
+        if (o->drag_corner < 0) {
+            int f = ui_plan_hit_fixture(p->fixtures, p->fixture_count, x, y);
+            o->selected_object = f >= 0 ? p->fixtures[f].object : -1;
+            o->selected_wall = -1;
+            if (f >= 0) {
+                o->drag_object = p->fixtures[f].object;
+                p->drag_start_mm[0] = x - p->fixtures[f].centre[0];
+                p->drag_start_mm[1] = y - p->fixtures[f].centre[1];
+            } else {
+                o->selected_wall = ui_plan_hit_wall(&p->plan_t, &p->project.plan, sx, sy, 6);
+                if (o->selected_wall >= 0)
+                    p->wall_length_edit = ui_plan_wall_length(&p->project.plan, o->selected_wall);
+            }
+        }
+    }
+    if (left && p->dragging) {
+        if (o->drag_corner >= 0) {
+            o->drag_mm[0] = ui_plan_snap_grid(x, GRID_MM);
+            o->drag_mm[1] = ui_plan_snap_grid(y, GRID_MM);
+        } else if (o->drag_object >= 0) {
+            o->drag_mm[0] = x - p->drag_start_mm[0];
+            o->drag_mm[1] = y - p->drag_start_mm[1];
+        }
+    }
+    if (!left && p->dragging) {
+        /* Release: the edit happens once, as one undo step. */
+        p->dragging = 0;
+        if (o->drag_corner >= 0) {
+            const app_point2 *c = &p->project.plan.corners[o->drag_corner];
+            if (c->x != o->drag_mm[0] || c->y != o->drag_mm[1]) {
+                char line[128];
+                snprintf(line, sizeof line, "corner %d %.0f %.0f", o->drag_corner, o->drag_mm[0],
+                         o->drag_mm[1]);
+                planner_edit(p, line);
+            }
+        } else if (o->drag_object >= 0) {
+            const app_fixture *f = fixture_of(p, o->drag_object);
+            if (f && hypot(f->centre[0] - o->drag_mm[0], f->centre[1] - o->drag_mm[1]) > 1)
+                planner_drag_object(p, p->project.objects[o->drag_object].name, o->drag_mm[0],
+                                    o->drag_mm[1]);
+        }
+        o->drag_corner = o->drag_object = -1;
+    }
+    p->mouse_x = mx;
+    p->mouse_y = my;
+}
+
+void planner_plan_frame(planner *p, int width, int height)
+{
+    if (!p->plan_fitted || p->plan_t.width != width || p->plan_t.height != height) {
+        /* Fit the plan between the panels: 280 px on the left, 360 on the right, 160 below. */
+        float left = width > 900 ? 280.0f : 0.0f, right = width > 900 ? 360.0f : 0.0f;
+        float below = height > 500 ? 160.0f : 0.0f;
+        p->plan_t =
+            ui_plan_fit(&p->project.plan, (float)width - left - right, (float)height - below, 40);
+        p->plan_t.centre_mm[0] -= (left - right) / 2 / p->plan_t.px_per_mm;
+        p->plan_t.centre_mm[1] -= below / 2 / p->plan_t.px_per_mm;
+        p->plan_t.width = (float)width;
+        p->plan_t.height = (float)height;
+        p->plan_fitted = 1;
+    }
+    if (!p->script.count || p->action >= p->script.count)
+        handle_plan_input(p);
+    ui_plan_draw(&p->plan_t, &p->project, p->fixtures, p->fixture_count, &p->findings, &p->plan_o);
+    wall_panel(p);
+}
+
+void planner_plan_scroll(planner *p, double steps)
+{
+    double mx, my;
+    glfwGetCursorPos(p->window, &mx, &my);
+    ui_plan_zoom_at(&p->plan_t, (float)mx, (float)my, pow(1.15, steps));
+}
