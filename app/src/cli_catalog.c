@@ -30,6 +30,9 @@ static const char usage_text[] =
     "       tessera catalog export [-o FILE.csv] [--db PATH]\n"
     "       tessera catalog info [--db PATH]\n"
     "       tessera catalog bench [--queries N] [--csv FILE] [--db PATH]\n"
+    "       tessera catalog model ARTICLE|GTIN [--manufacturer M] [--variant CODE] [-o OUT.glb]\n"
+    "       tessera catalog thumbs [--size N] [--out DIR] [--category C] [--limit N] [--db PATH]\n"
+    "       tessera catalog lod MODEL.glb [--fraction F] [-o OUT.glb]\n"
     "The catalog file is --db, else $TESSERA_CATALOG, else ~/.cache/tessera/catalog.sqlite;\n"
     "it is built from the shipped CSV files ($TESSERA_ASSETS/catalog) on first use.\n"
     "Categories: taps_mixers shower_sets basins wcs_bidets baths shower_trays shower_screens\n"
@@ -632,6 +635,12 @@ int app_cli_catalog(int argc, char **argv)
         fputs(usage_text, argc < 3 ? stderr : stdout);
         return argc < 3 ? CLI_USAGE : CLI_OK;
     }
+    if (!strcmp(argv[2], "model")) /* cli_catalog_model.c */
+        return app_cli_catalog_model(argc, argv);
+    if (!strcmp(argv[2], "thumbs")) /* cli_catalog_thumbs.c */
+        return app_cli_catalog_thumbs(argc, argv);
+    if (!strcmp(argv[2], "lod")) /* cli_catalog_lod.c */
+        return app_cli_catalog_lod(argc, argv);
     static const char *const commands[] = {"search", "show", "import", "export", "info", "bench"};
     int known = 0;
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)

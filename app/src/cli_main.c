@@ -15,6 +15,13 @@ static void usage(FILE *f)
             "  tessera render PROJECT -o OUT [--camera NAME] [--size WxH] [--supersample N]\n"
             "                [--backend egl|osmesa]\n"
             "      renders a project file to PNG, JPEG, TIFF (8-bit sRGB) or EXR (linear)\n"
+            "      (any size, tiled beyond the GL limits; --shadows off|hard|soft, --dpi N,\n"
+            "      --all-views -o DIR: every stored camera)\n"
+            "  tessera panorama PROJECT -o OUT.jpg [--camera NAME] [--size 4096x2048]\n"
+            "                [--faces DIR]\n"
+            "      a 360-degree equirectangular panorama (GPano XMP) from six cube faces\n"
+            "  tessera video PROJECT -o OUT.mp4 [--seconds S] [--fps N] [--size WxH]\n"
+            "      a smooth path through the stored cameras: PNG frames, MP4 with ffmpeg\n"
             "  tessera bench PROJECT [--size WxH] [--frames N] [--warmup N] [--camera NAME]\n"
             "                [--backend egl|osmesa] [--csv FILE]\n"
             "      milliseconds per frame (median and spread) against a full-screen floor\n"
@@ -30,7 +37,22 @@ static void usage(FILE *f)
             "      the speed/accuracy trade: each reflection setting timed and compared\n"
             "  tessera extremes [--size WxH] [--samples N] [--markdown FILE]\n"
             "      RENDERING.md section 11: every extreme finite on the GPU and in the reference\n"
-            "  tessera catalog search|show|import|export|info|bench ... (tessera catalog --help)\n"
+            "  tessera catalog search|show|import|export|info|bench|model|thumbs|lod ... (--help)\n"
+            "  tessera edit PROJECT SCRIPT [-o OUT]\n"
+            "      replays an edit script (place, move, tile, undo, ...; docs/editing.md)\n"
+            "  tessera check PROJECT [--barrier-free | --wheelchair]\n"
+            "      collisions and clearances of the fixtures (exit 1 on errors)\n"
+            "  tessera print PROJECT -o OUT.pdf [--paper A4|A3] [--landscape] [--scale 1:20|fit]\n"
+            "                [--svg DIR] [--renders DIR|none]  (tessera print --help)\n"
+            "  tessera share PROJECT -o DIR [--size WxH] [--panorama-size WxH]\n"
+            "      a folder for any browser: renders, plan, 360-degree panorama, part list\n"
+            "      the print set: plan, wall elevations with tiles, renders, part list\n"
+            "  tessera quantities PROJECT [--csv] [--surplus PCT] [--offcuts] [--bench N]\n"
+            "      the tile part list (whole/cut tiles, offcuts, boxes) and bill of materials\n"
+            "  tessera surfaces PROJECT [--csv]\n"
+            "      the room's tileable surfaces: frames, holes (openings, covered) and net m2\n"
+            "  tessera export-glb PROJECT [-o OUT.glb]\n"
+            "      the whole project (room, tiles, objects, products) as GLB for other tools\n"
             "\n"
             "The OpenGL backend is EGL (Mesa surfaceless) unless --backend or TESSERA_GL says\n"
             "otherwise; OSMesa is the fallback.\n");
@@ -45,6 +67,10 @@ int app_cli_main(int argc, char **argv)
     }
     if (!strcmp(argv[1], "render"))
         return app_cli_render(argc, argv);
+    if (!strcmp(argv[1], "panorama"))
+        return app_cli_panorama(argc, argv);
+    if (!strcmp(argv[1], "video"))
+        return app_cli_video(argc, argv);
     if (!strcmp(argv[1], "demo"))
         return app_cli_demo(argc, argv);
     if (!strcmp(argv[1], "bench"))
@@ -61,6 +87,20 @@ int app_cli_main(int argc, char **argv)
         return app_cli_extremes(argc, argv);
     if (!strcmp(argv[1], "catalog"))
         return app_cli_catalog(argc, argv);
+    if (!strcmp(argv[1], "edit"))
+        return app_cli_edit(argc, argv);
+    if (!strcmp(argv[1], "check"))
+        return app_cli_check(argc, argv);
+    if (!strcmp(argv[1], "print"))
+        return app_cli_print(argc, argv);
+    if (!strcmp(argv[1], "quantities"))
+        return app_cli_quantities(argc, argv);
+    if (!strcmp(argv[1], "surfaces"))
+        return app_cli_surfaces(argc, argv);
+    if (!strcmp(argv[1], "export-glb"))
+        return app_cli_export_glb(argc, argv);
+    if (!strcmp(argv[1], "share"))
+        return app_cli_share(argc, argv);
     if (!strcmp(argv[1], "--version")) {
         printf("tessera 0.1.0\n");
         return 0;

@@ -127,7 +127,23 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             ok = parse_name(v, ambient_names, 3, &o->ambient);
         else if (!strcmp(name, "blur"))
             ok = parse_name(v, blur_names, 4, (int *)&o->blur);
-        else if (!strcmp(name, "backend"))
+        else if (!strcmp(name, "shadows")) {
+            rd_shadow_mode m;
+            ok = rd_shadow_mode_parse(v, &m) == RD_OK;
+            o->shadows = ok ? (int)m + 1 : 0;
+        } else if (!strcmp(name, "dpi"))
+            ok = parse_int(v, 1, 100000, &o->dpi);
+        else if (!strcmp(name, "tile"))
+            ok = parse_int(v, 16, 65536, &o->tile);
+        else if (!strcmp(name, "faces"))
+            o->faces = v;
+        else if (!strcmp(name, "fps"))
+            ok = parse_int(v, 1, 240, &o->fps);
+        else if (!strcmp(name, "seconds")) {
+            char *end;
+            o->seconds = strtod(v, &end);
+            ok = end != v && !*end && o->seconds > 0.0 && o->seconds <= 3600.0;
+        } else if (!strcmp(name, "backend"))
             ok = rd_backend_parse(v, &o->backend) == RD_OK && o->backend != RD_BACKEND_ADOPT;
         if (!ok) {
             fprintf(stderr, "tessera %s: bad value \"%s\" for --%s%s\n", command, v, name,
@@ -139,6 +155,9 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
                     : !strcmp(name, "blur")    ? " (expected prefiltered, box-mips or reference)"
                     : !strcmp(name, "ambient") ? " (expected constant or sh9)"
                     : !strcmp(name, "quality") ? " (expected draft, interactive, final or print)"
+                    : !strcmp(name, "shadows") ? " (expected off, hard or soft)"
+                    : !strcmp(name, "tile")    ? " (expected 16 to 65536 pixels)"
+                    : !strcmp(name, "seconds") ? " (expected more than 0, at most 3600)"
                                                : "");
             return CLI_USAGE;
         }

@@ -25,6 +25,12 @@ typedef struct cli_options {
     rd_probe_update probes; /* --probes: the scene's default update policy; 0 = the project's */
     rd_blur_method blur;    /* --blur */
     int ambient;            /* --ambient: 0 the project's, 1 constant, 2 sh9 */
+    int shadows;            /* --shadows: 0 the preset's (or off), else rd_shadow_mode + 1 */
+    int dpi;                /* --dpi: pixels per inch written into the image; 0 = none */
+    int tile;               /* --tile: largest tile side in pixels; 0 = the GL limit */
+    const char *faces;      /* --faces: folder for a panorama's six cube faces */
+    double seconds;         /* --seconds: a video's length */
+    int fps;                /* --fps: a video's frame rate */
 } cli_options;
 
 /* Parses argv[first..]; prints the problem and returns CLI_USAGE on a bad option. `allowed`

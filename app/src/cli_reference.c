@@ -2,6 +2,7 @@
  *                   [--threads N] [--seed N] [--png OUT.png] [--mask MASK.png]
  * The ground-truth image of a project view (RENDERING.md section 10, docs/reference.md). */
 #include "app/cli_ref.h"
+#include "app/quality.h"
 #include "app/ref_scene_build.h"
 #include "cli_options.h"
 #include "render/image_io.h"
@@ -14,7 +15,8 @@
 #define USAGE                                                                                      \
     "usage: tessera reference PROJECT -o OUT.(exr|png|jpg|tif) [--camera NAME] [--size WxH]\n"     \
     "                         [--supersample 1-4] [--samples N] [--threads N] [--seed N]\n"        \
-    "                         [--png OUT.png] [--mask MASK.png]\n"
+    "                         [--png OUT.png] [--mask MASK.png] [--shadows off|hard|soft]\n"       \
+    "                         [--quality draft|interactive|final|print]\n"
 
 typedef struct ref_options {
     int samples, threads;
@@ -139,7 +141,8 @@ int app_cli_reference(int argc, char **argv)
     int rc = take_options(argc, argv, rest, &rest_count, &ro);
     cli_options o = {0};
     if (rc == CLI_OK)
-        rc = cli_parse(rest_count, rest, 2, "reference", "output camera size supersample", &o);
+        rc = cli_parse(rest_count, rest, 2, "reference",
+                       "output camera size supersample shadows quality", &o);
     free(rest);
     if (rc != CLI_OK)
         return rc;
@@ -179,6 +182,19 @@ int app_cli_reference(int argc, char **argv)
         app_project_free(&p);
         return ar == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
     }
+    /* Shadows as the GPU draws them with the same options (issue 7): a preset's, refined by
+     * --shadows; a preset's supersampling too, unless --supersample says otherwise. */
+    rd_shadow_settings shadows = {0};
+    if (o.quality) {
+        shadows = (rd_shadow_settings){.mode = o.quality->shadows,
+                                       .map_size = o.quality->shadow_map_size,
+                                       .taps = o.quality->shadow_taps};
+        if (!o.supersample)
+            view.supersample = app_quality_supersample(o.quality, view.width, view.height);
+    }
+    if (o.shadows)
+        shadows.mode = (rd_shadow_mode)(o.shadows - 1);
+    ref_scene_set_shadows(scene, &shadows);
     ref_result rr = ref_scene_commit(scene);
     double build_ms = cli_now_ms() - t0;
     ref_image img = {0};

@@ -61,6 +61,11 @@ int cli_session_open(const cli_options *o, cli_session *s)
     /* A preset first, so that explicit --probes/--blur/--ambient refine it. */
     if (o->quality)
         app_quality_apply(o->quality, s->scene.scene);
+    if (o->shadows) { /* --shadows refines the preset's (or the project's) shadows */
+        rd_shadow_settings sh = rd_scene_shadows(s->scene.scene);
+        sh.mode = (rd_shadow_mode)(o->shadows - 1);
+        rd_scene_set_shadows(s->scene.scene, &sh);
+    }
     if (o->probes || o->blur || o->ambient) {
         rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
         if (o->ambient)
@@ -93,7 +98,7 @@ int cli_session_view(const cli_session *s, const cli_options *o, const char *cam
         return CLI_USAGE;
     }
     if (o->quality)
-        out->supersample = o->quality->supersample;
+        out->supersample = app_quality_supersample(o->quality, out->width, out->height);
     if (o->supersample)
         out->supersample = o->supersample;
     return CLI_OK;
