@@ -2,6 +2,7 @@
  * model is loaded through the catalog and uploaded part by part. */
 #include "scene_build_internal.h"
 
+#include "catalog/mesh_lod.h"
 #include "catalog/model.h"
 #include "render/primitives.h"
 
@@ -165,6 +166,10 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
     return APP_OK;
 }
 
+/* Models with at least this many triangles get a probe-capture copy at this fraction. */
+#define LOD_MIN_TRIANGLES 1500
+#define LOD_FRACTION 0.25f
+
 static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s, int index,
                             const rd_material *m, char *err, size_t err_size)
 {
@@ -184,9 +189,29 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
     const double mm_to_m[3] = {1e-3, 1e-3, 1e-3};
     float transform[16];
     app_object_transform(o, mm_to_m, transform);
+    /* Probe captures draw a decimated copy of a detailed model (RENDERING.md section 8: probes
+     * may draw lower-detail geometry; catalog/mesh_lod.h). A model that cannot be decimated
+     * is captured as it is. */
+    cat_model lod = {0};
+    char lerr[256];
+    int has_lod = cat_model_triangle_count(&model) >= LOD_MIN_TRIANGLES &&
+                  cat_model_make_lod(&model, LOD_FRACTION, &lod, lerr, sizeof lerr) == CAT_OK &&
+                  lod.mesh_count == model.mesh_count;
     app_result r = APP_OK;
     for (int i = 0; r == APP_OK && i < model.mesh_count; i++) {
         const cat_mesh *cm = &model.meshes[i];
+        rd_mesh coarse = {0};
+        if (has_lod && lod.meshes[i].index_count >= 3) {
+            const cat_mesh *lm = &lod.meshes[i];
+            coarse = rd_mesh_create(ctx, &(rd_mesh_desc){.positions = lm->positions,
+                                                         .normals = lm->normals,
+                                                         .uvs = lm->uvs,
+                                                         .indices = lm->indices,
+                                                         .vertex_count = lm->vertex_count,
+                                                         .index_count = lm->index_count});
+            if (coarse.id && app_scene_track_mesh(s, coarse) != APP_OK)
+                coarse.id = 0;
+        }
         rd_mesh mesh = rd_mesh_create(ctx, &(rd_mesh_desc){.positions = cm->positions,
                                                            .normals = cm->normals,
                                                            .uvs = cm->uvs,
@@ -204,13 +229,15 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
                             .material = *m,
                             .double_sided = 1,
                             .group = group_of(p, index), /* one probe for the model */
-                            .probe = probe};
+                            .probe = probe,
+                            .probe_mesh = coarse};
         memcpy(d.transform, transform, sizeof transform);
         if (rd_scene_add_object(s->scene, &d) != RD_OK) {
             snprintf(err, err_size, "%s: $.objects[%d]: %s", p->path, index, rd_last_error());
             r = APP_ERR_SCHEMA;
         }
     }
+    cat_model_free(&lod);
     cat_model_free(&model);
     return r;
 }
