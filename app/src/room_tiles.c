@@ -128,7 +128,7 @@ static void add_layout(rm_build *b, const app_tiling *tiling, const app_tile_lay
             path[0] && access(path, R_OK) == 0 && strlen(path) < sizeof m->inline_material.texture;
         m->inline_material = plain_material(name, textured ? white : grey, 0.25f, 64);
         if (textured)
-            snprintf(m->inline_material.texture, sizeof m->inline_material.texture, "%s", path);
+            memcpy(m->inline_material.texture, path, strlen(path) + 1); /* fits: checked above */
         spec_mesh[k] = (int)(m - b->g->meshes);
     }
     double half = 0.5 * l->grout_mm;

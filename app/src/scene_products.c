@@ -125,7 +125,7 @@ app_result app_scene_resolve_products(const app_project *p, app_scene_products *
             model[0] = 0;
         if (model[0] && access(model, R_OK) == 0 && strlen(model) < sizeof o->model) {
             o->shape = APP_SHAPE_MODEL;
-            snprintf(o->model, sizeof o->model, "%s", model);
+            memcpy(o->model, model, strlen(model) + 1); /* fits: checked above */
         } else {
             /* No model yet: the catalog's box, standing on the product's origin. */
             o->shape = APP_SHAPE_BOX;
