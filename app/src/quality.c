@@ -14,15 +14,15 @@
 
 static const app_quality presets[] = {
     {"draft", "probes captured once, box-mip blur: the fastest frames", RD_PROBE_ONCE,
-     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT},
-    {"interactive", "one probe face per frame, prefiltered blur: a live walk-through",
+     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0},
+    {"interactive", "two probe faces a frame, prefiltered blur: a live walk-through",
      RD_PROBE_TIME_SLICED, RD_BLUR_PREFILTERED, 0, 256, 1, RD_SHADOWS_OFF, 1024, 1,
-     RD_CORRECTION_DEFAULT},
+     RD_CORRECTION_DEFAULT, 2},
     {"final", "every probe complete at 128 texels, 2x2 supersampling: stills", RD_PROBE_EVERY_FRAME,
-     RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12, RD_CORRECTION_DEFAULT},
+     RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12, RD_CORRECTION_DEFAULT, 0},
     {"print", "probes at 512 texels, depth lookups, 4x4 supersampling, soft shadows: print",
      RD_PROBE_EVERY_FRAME, RD_BLUR_PREFILTERED, 512, 0, 4, RD_SHADOWS_SOFT, 2048, 16,
-     RD_CORRECTION_DEPTH},
+     RD_CORRECTION_DEPTH, 0},
 };
 
 const app_quality *app_quality_find(const char *name)
@@ -55,6 +55,7 @@ void app_quality_apply(const app_quality *q, rd_scene *scene)
     d.max_resolution = q->max_resolution;
     if (q->correction != RD_CORRECTION_DEFAULT)
         d.correction = q->correction;
+    d.max_faces_per_frame = q->probe_faces_per_frame;
     rd_scene_set_reflection_defaults(scene, &d);
     /* Shadows by preset (issue 7): none in drafts and live walk-throughs (hard shadows cost
      * about 180 ns of CPU per sample on llvmpipe with the demo's three lights, some 80 ms a

@@ -499,7 +499,13 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     vec4 planes[6];
     memcpy(vp, view_proj, sizeof vp);
     glm_frustum_planes(vp, planes);
-    for (int i = 0; i < s->probe_count; i++) {
+    /* The frame budget for refreshing probes (issue 8: probe updates within a frame budget):
+     * at most max_faces_per_frame faces re-captured a frame, the probes taking turns from a
+     * start that moves every frame. A probe's first, complete capture is never held back. */
+    int budget = s->reflection.max_faces_per_frame, spent = 0;
+    int start = (int)(s->frame % s->probe_count);
+    for (int k = 0; k < s->probe_count; k++) {
+        int i = (start + k) % s->probe_count;
         rd_probe *p = &s->probes[i];
         const rd_object_desc *owner = &s->objects[p->owner];
         place_probe(ctx, s, p);
@@ -549,6 +555,12 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         int faces = faces_to_capture(s, p, u, every);
         if (!faces)
             continue;
+        if (faces != 0x3f && budget > 0) {
+            int n = __builtin_popcount((unsigned)faces);
+            if (spent + n > budget)
+                continue; /* its turn comes in a later frame */
+            spent += n;
+        }
         /* Far enough to see the whole scene from the probe. */
         float reach = 0.0f;
         for (int c = 0; c < 8; c++) {

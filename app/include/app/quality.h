@@ -18,6 +18,8 @@ typedef struct app_quality {
     int shadow_map_size, shadow_taps;
     /* Where reflected rays end (RENDERING.md section 4); DEFAULT = the scene's (box). */
     rd_correction correction;
+    /* Probe faces refreshed a frame at most (the live frame budget); 0 = no limit. */
+    int probe_faces_per_frame;
 } app_quality;
 
 /* NULL for an unknown name. */

@@ -241,6 +241,8 @@ typedef struct rd_reflection_defaults {
     int per_vertex;           /* 1: every reflective object per vertex (seed 003) */
     int probe_no_specular;    /* 1: captures leave highlights out (they are view-dependent) */
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
+    int max_faces_per_frame; /* refreshes of probes already complete: at most this many faces
+                                a frame, probes taking turns; 0 = no limit */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
