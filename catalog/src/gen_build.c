@@ -2,6 +2,7 @@
  * the materials of parts, and the last step every product shares: scale to the catalog row's
  * exact bounding box with the origin at the bottom centre of the back face, then normals. */
 #include "gen_internal.h"
+#include "catalog/mesh_lod.h"
 #include "model_internal.h"
 
 #include <math.h>
@@ -352,6 +353,15 @@ cat_result cat_gen_product(const cat_gen_request *req, cat_gen_model *out, char 
                 ok = 0;
     if (ok)
         ok = finish(out, dims[0], dims[1], dims[2]);
+    /* Lathe poles, closed sweeps and subdivided rims leave zero-area triangles (85 426 of
+     * them over the shipped models before this): they draw nothing but cost vertex work in
+     * every pass and trip decimators, so they are dropped here (docs/catalog.md). */
+    if (ok &&
+        cat_model_validate(&out->model, req->name, 1, NULL, b.error, sizeof b.error) != CAT_OK)
+        ok = 0;
+    for (int i = 0; ok && i < out->model.mesh_count; i++)
+        if (out->model.meshes[i].index_count == 0)
+            ok = 0;
     free(b.vcap);
     free(b.icap);
     if (!ok) {
