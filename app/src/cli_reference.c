@@ -16,7 +16,8 @@
     "usage: tessera reference PROJECT -o OUT.(exr|png|jpg|tif) [--camera NAME] [--size WxH]\n"     \
     "                         [--supersample 1-4] [--samples N] [--threads N] [--seed N]\n"        \
     "                         [--png OUT.png] [--mask MASK.png] [--shadows off|hard|soft]\n"       \
-    "                         [--quality draft|interactive|final|print]\n"
+    "                         [--quality draft|interactive|final|print]\n"                         \
+    "                         [--ambient constant|sh9]\n"
 
 typedef struct ref_options {
     int samples, threads;
@@ -142,7 +143,7 @@ int app_cli_reference(int argc, char **argv)
     cli_options o = {0};
     if (rc == CLI_OK)
         rc = cli_parse(rest_count, rest, 2, "reference",
-                       "output camera size supersample shadows quality", &o);
+                       "output camera size supersample shadows quality ambient", &o);
     free(rest);
     if (rc != CLI_OK)
         return rc;
@@ -174,6 +175,8 @@ int app_cli_reference(int argc, char **argv)
     }
     if (o.supersample)
         view.supersample = o.supersample;
+    if (o.ambient)
+        p.render.ambient_model = o.ambient == 2; /* as `render --ambient` (cli_session.c) */
     double t0 = cli_now_ms();
     ref_scene *scene = NULL;
     ar = app_ref_scene_build(&p, &scene, err, sizeof err);

@@ -318,6 +318,14 @@ static app_result ref_scene_build(app_scene_products *q, ref_scene **out, char *
     }
     app_room_add_tiles(p, q->covers, q->cover_count, &q->catalog, &room); /* as scene_build.c */
     r = add_room(p, &room, s, &cache, err, err_size);
+    if (p->render.ambient_model == 1) {
+        /* SH9 ambient from a capture at the box proxy's centre, the room's interior box as
+         * scene_build.c makes it (render/src/ambient_sh.c places its probe there). */
+        float centre[3];
+        for (int k = 0; k < 3; k++)
+            centre[k] = (float)(0.5 * (room.bounds_min[k] + room.bounds_max[k]));
+        ref_scene_set_ambient_sh9(s, centre);
+    }
     for (int i = 0; r == APP_OK && i < p->object_count; i++) {
         if (APP_OBJECT_UNRESOLVED(&p->objects[i]))
             continue; /* as scene_objects.c */

@@ -61,6 +61,11 @@ struct ref_scene {
     rd_light lights[RD_MAX_LIGHTS];
     int light_count;
     float ambient[3];
+    /* SH9 ambient (ref_scene_set_ambient_sh9): 0 off, 1 wanted, 2 the capture is being traced
+     * (ambient 0, as on the GPU), 3 made. */
+    int sh9_state;
+    float sh9_centre[3];
+    rd_sh9 sh9;
     rd_shadow_settings shadows;
     int shadow_taps; /* per sample: rd_shadow_taps_per_sample at the render's supersampling */
     float bounds_min[3], bounds_max[3]; /* world bounds of every vertex */
@@ -87,6 +92,9 @@ typedef struct ref_trace_stats {
 void ref_trace_primary(const ref_scene *s, const float origin[3], const float dir[3],
                        const ref_ray_diff *diff, int samples, uint64_t rng_key, float out[3],
                        int *reflective, ref_trace_stats *stats);
+
+/* Makes the SH9 ambient coefficients when the scene asks for them (ref_trace.c). */
+ref_result ref_ambient_prepare(ref_scene *s);
 
 /* ---- shadows (ref_shadow.c) --------------------------------------------------------------- */
 

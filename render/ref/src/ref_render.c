@@ -185,6 +185,8 @@ ref_result ref_render(ref_scene *s, const ref_render_desc *d, ref_image *out)
     r = ref_camera_make(&d->view, &j->camera);
     if (r == REF_OK)
         r = ref_scene_commit(s);
+    if (r == REF_OK)
+        r = ref_ambient_prepare(s);
     if (r != REF_OK) {
         free(j);
         return r;

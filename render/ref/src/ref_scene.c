@@ -224,6 +224,8 @@ ref_result ref_scene_add_mesh(ref_scene *s, const ref_mesh_desc *d)
         m->uv_scale[k] = d->material.uv_scale[k] > 0.0f ? d->material.uv_scale[k] : 1.0f;
     s->mesh_count++;
     s->dirty = true;
+    if (s->sh9_state == 3)
+        s->sh9_state = 1; /* the SH capture saw the scene without this mesh */
     float diag = 0.0f;
     for (int k = 0; k < 3; k++) {
         float e = s->bounds_max[k] - s->bounds_min[k];
@@ -250,6 +252,8 @@ ref_result ref_scene_add_light(ref_scene *s, const rd_light *light)
             l.direction[k] /= len;
     }
     s->lights[s->light_count++] = l;
+    if (s->sh9_state == 3)
+        s->sh9_state = 1;
     return REF_OK;
 }
 
@@ -257,6 +261,23 @@ void ref_scene_set_ambient(ref_scene *s, const float intensity[3])
 {
     if (s && intensity)
         memcpy(s->ambient, intensity, sizeof s->ambient);
+}
+
+void ref_scene_set_ambient_sh9(ref_scene *s, const float centre[3])
+{
+    if (!s)
+        return;
+    s->sh9_state = centre ? 1 : 0;
+    if (centre)
+        memcpy(s->sh9_centre, centre, sizeof s->sh9_centre);
+}
+
+int ref_scene_ambient_sh9(const ref_scene *s, rd_sh9 *out)
+{
+    if (!s || s->sh9_state != 3 || !out)
+        return 0;
+    *out = s->sh9;
+    return 1;
 }
 
 int ref_scene_mesh_count(const ref_scene *s)

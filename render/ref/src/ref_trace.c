@@ -3,6 +3,7 @@
  * blended as render/shaders/lit.frag blends its probe lookups (sections 2, 5, 6, 9). */
 #include "ref_internal.h"
 
+#include "render/cube_data.h"
 #include "render/reflect_ref.h"
 #include "render/shade_ref.h"
 
@@ -183,6 +184,23 @@ static int uv_on_plane(const ref_mesh *m, unsigned prim, const float org[3], con
     return isfinite(uv[0]) && isfinite(uv[1]);
 }
 
+/* The ambient intensity at a surface of shading normal n: I_a, or with SH9 (section 7)
+ * max(E(n), 0) / pi as lit.frag's SH9_AMBIENT variant; 0 while the SH capture itself is traced
+ * (the GPU's first capture sees no coefficients yet). */
+static void ambient_at(const ref_scene *s, const float n[3], float out[3])
+{
+    if (s->sh9_state == 0) {
+        memcpy(out, s->ambient, 3 * sizeof(float));
+        return;
+    }
+    out[0] = out[1] = out[2] = 0.0f;
+    if (s->sh9_state != 3)
+        return;
+    rd_ref_sh9_irradiance(&s->sh9, n, out);
+    for (int k = 0; k < 3; k++)
+        out[k] = fmaxf(out[k], 0.0f) / 3.14159265f;
+}
+
 /* Section 1 at a hit of the ray (org, dir), seen from `eye`. With the ray's neighbours the
  * texture is filtered over the footprint they span (the GPU's derivatives); without, level 0.
  * raw_lit = 1 leaves out the emissive max, which lit.frag applies only after the blend. */
@@ -225,8 +243,10 @@ static void shade_direct(const ref_scene *s, const surface *sf, const float eye[
         }
         lights = dimmed;
     }
+    float ambient[3];
+    ambient_at(s, sf->n, ambient);
     rd_ref_shade(&mat, m->texture ? albedo : NULL, sf->p, sf->n, eye, lights, s->light_count,
-                 s->ambient, out);
+                 ambient, out);
 }
 
 typedef enum bounce { BOUNCE_REFLECT, BOUNCE_STRAIGHT, BOUNCE_REFRACT } bounce;
@@ -492,6 +512,8 @@ ref_result ref_trace_ray(ref_scene *s, const float origin[3], const float dir[3]
     if (samples < 0)
         return ref_fail(REF_ERR_INVALID_ARGUMENT, "ref_trace_ray: samples %d < 0", samples);
     ref_result r = ref_scene_commit(s);
+    if (r == REF_OK)
+        r = ref_ambient_prepare(s);
     if (r != REF_OK)
         return r;
     float d[3] = {dir[0], dir[1], dir[2]};
@@ -503,5 +525,46 @@ ref_result ref_trace_ray(ref_scene *s, const float origin[3], const float dir[3]
     int reflective;
     ref_trace_primary(s, origin, d, NULL, samples ? samples : 64, mix64(seed), out, &reflective,
                       NULL);
+    return REF_OK;
+}
+
+/* The GPU's SH9 ambient (render/src/ambient_sh.c): a 32-texel cube capture at the proxy's
+ * centre, box-filtered to 8 texels (two 2 x 2 mip steps = the mean of 4 x 4 texels), projected
+ * on nine coefficients. Each texel is what the capture's rasteriser shows at its centre: the
+ * first non-glass surface (secondary rays' rules), lit by direct light with ambient 0, its
+ * emissive max, highlights seen from the centre; black where nothing is hit (the clear). */
+enum { SH_CAPTURE = 32, SH_READ = 8 };
+
+ref_result ref_ambient_prepare(ref_scene *s)
+{
+    if (s->sh9_state == 0 || s->sh9_state == 3)
+        return REF_OK;
+    rd_cube_data cube;
+    if (rd_cube_data_alloc(SH_READ, &cube) != RD_OK)
+        return ref_fail(REF_ERR_OUT_OF_MEMORY, "SH9 ambient: out of memory");
+    s->sh9_state = 2;
+    surface centre = {.geom = RTC_INVALID_GEOMETRY_ID, .prim = RTC_INVALID_GEOMETRY_ID};
+    memcpy(centre.p, s->sh9_centre, sizeof centre.p);
+    const int block = SH_CAPTURE / SH_READ;
+    for (int f = 0; f < 6; f++)
+        for (int j = 0; j < SH_CAPTURE; j++)
+            for (int i = 0; i < SH_CAPTURE; i++) {
+                float cmcs[3], dir[3], c[3];
+                rd_ref_cube_face_direction(f, ((float)i + 0.5f) / SH_CAPTURE,
+                                           ((float)j + 0.5f) / SH_CAPTURE, cmcs);
+                rd_ref_cmcs_to_world(cmcs, dir);
+                float len = sqrtf(ref_dot(dir, dir));
+                for (int k = 0; k < 3; k++)
+                    dir[k] /= len;
+                secondary_radiance(s, &centre, dir, NULL, c, NULL);
+                float *texel =
+                    cube.faces[f] + 4 * ((size_t)(j / block) * SH_READ + (size_t)(i / block));
+                for (int k = 0; k < 3; k++)
+                    texel[k] += c[k] / (float)(block * block);
+                texel[3] = 1.0f;
+            }
+    rd_ref_sh9_project(&cube, &s->sh9);
+    rd_cube_data_free(&cube);
+    s->sh9_state = 3;
     return REF_OK;
 }

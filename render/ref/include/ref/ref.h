@@ -14,6 +14,7 @@
 #ifndef REF_REF_H
 #define REF_REF_H
 
+#include "render/reflect_ref.h"
 #include "render/render.h"
 
 #include <stdint.h>
@@ -77,6 +78,16 @@ ref_result ref_scene_add_mesh(ref_scene *s, const ref_mesh_desc *d);
  * normalised here (a zero direction is refused). */
 ref_result ref_scene_add_light(ref_scene *s, const rd_light *light);
 void ref_scene_set_ambient(ref_scene *s, const float intensity[3]); /* I_a */
+/* RENDERING.md section 7's second ambient model, as the GPU makes it (render/src/ambient_sh.c):
+ * the ambient intensity at a surface of normal N is max(E(N), 0) / pi, E from nine SH
+ * coefficients projected from what a 32-texel cube capture at `centre` (the box proxy's centre)
+ * sees, box-filtered to 8 texels: surfaces lit by direct light without ambient (the GPU's
+ * capture runs before any coefficients exist), highlights seen from the centre, reflective
+ * objects plain, glass left out. NULL: back to the constant I_a. The coefficients are made by
+ * ref_render (after the scene's commit). */
+void ref_scene_set_ambient_sh9(ref_scene *s, const float centre[3]);
+/* The nine coefficients the last ref_render used; 0 when SH9 is off or not made yet. */
+int ref_scene_ambient_sh9(const ref_scene *s, rd_sh9 *out);
 int ref_scene_mesh_count(const ref_scene *s);
 /* Shadows as rd_scene_set_shadows draws them (docs/reference.md, "Shadows"): at a primary hit,
  * one shadow ray toward each light (HARD), or one from each of the GPU's PCF taps (SOFT: the
