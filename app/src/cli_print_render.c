@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 void cli_progress_init(cli_progress *p, const char *label)
@@ -74,6 +75,7 @@ int cli_render_large(cli_session *s, const rd_view *view, const char *path, int 
     cli_progress_init(&bar, "rendering");
     int rc = cli_render_pixels(s, view, tile_max, rgba, linear, &bar);
     if (rc == CLI_OK) {
+        double write_start = cli_now_ms();
         char err[1024];
         rd_image_result ir = is_float ? rd_image_write_float(path, view->width, view->height, 4,
                                                              linear, err, sizeof err)
@@ -83,6 +85,9 @@ int cli_render_large(cli_session *s, const rd_view *view, const char *path, int 
             fprintf(stderr, "tessera: %s\n", err);
             rc = CLI_FAILED;
         }
+        const char *phases = getenv("TESSERA_PHASES"); /* the renderer's phase timer's switch */
+        if (phases && phases[0] && strcmp(phases, "0") != 0)
+            fprintf(stderr, "phases (image file): write %.0f ms\n", cli_now_ms() - write_start);
     }
     free(rgba);
     free(linear);

@@ -1,7 +1,8 @@
 // Shadow visibility from the shadow-map atlas (docs/rendering.md, "Shadows"). Prepended to
 // lit.frag in the HAS_SHADOWS variant only, so programs without shadows carry none of it. The
 // CPU twin is the shadow-ray code of render/ref/src/ref_shadow.c: the same disk of taps
-// (rd_shadow_disk_tap), the same receiver offsets, a ray where this file reads the map.
+// (rd_shadow_disk_tap), the same receiver offsets, a ray where this file reads the map; the
+// tracer takes every tap, this file stops after two where they agree (shadow_visibility).
 #ifdef HAS_SHADOWS
 uniform sampler2DShadow u_shadow_atlas; // window depth of the nearest caster
 uniform vec2 u_shadow_origin[MAX_LIGHTS]; // atlas uv of the light's first tile (face 0)
@@ -25,30 +26,33 @@ float shadow_compare(vec2 origin, vec2 uv, float ref)
     return texture(u_shadow_atlas, vec3(origin + uv * u_shadow_grid.xy, ref));
 }
 
-// Whether point q sees the light (type 0 point, 1 spot, 2 directional) in its shadow map.
-float shadow_tap(int i, int type, vec3 light_pos, vec3 q, float bias)
+// Whether point q sees cube light i (a point light or a wide spot) in its shadow map; 1 = lit.
+float shadow_cube_tap(int i, vec3 light_pos, vec3 q, float bias)
 {
-    if (u_shadow_cube[i] == 1) {
-        // The face by the major axis, and (right, up) . d / fwd . d in that face's frame:
-        // shadow.c renders face f with glm_lookat(L, L + fwd, up), fwd = +X, -X, +Y, -Y, +Z, -Z,
-        // up = +Z for the four sides and +Y for the caps, so right = fwd x up is, in order,
-        // -Y, +Y, +X, -X, -X, +X. Plain arithmetic: llvmpipe indexes constant arrays slowly.
-        // Selects, not branches: llvmpipe runs both sides of a branch that varies per pixel.
-        vec3 d = q - light_pos;
-        vec3 a = abs(d);
-        bool on_x = a.x >= a.y && a.x >= a.z, on_y = !on_x && a.y >= a.z;
-        float z = max(on_x ? a.x : on_y ? a.y : a.z, 1e-9);
-        vec2 xy = on_x ? vec2(d.x > 0.0 ? -d.y : d.y, d.z)
-                  : on_y ? vec2(d.y > 0.0 ? d.x : -d.x, d.z)
-                         : vec2(d.z > 0.0 ? -d.x : d.x, d.y);
-        float f = on_x ? (d.x > 0.0 ? 0.0 : 1.0) : on_y ? (d.y > 0.0 ? 2.0 : 3.0)
-                                                       : (d.z > 0.0 ? 4.0 : 5.0);
-        vec2 uv = xy / z * 0.5 + 0.5;
-        // The bias is along the ray; along the face's axis it shrinks by z / |d|.
-        float zb = max(z - bias * z / length(d), 1e-6);
-        return shadow_compare(u_shadow_origin[i] + vec2(f * u_shadow_grid.x, 0.0), uv,
-                              u_shadow_depth[i].x - u_shadow_depth[i].y / zb);
-    }
+    // The face by the major axis, and (right, up) . d / fwd . d in that face's frame:
+    // shadow.c renders face f with glm_lookat(L, L + fwd, up), fwd = +X, -X, +Y, -Y, +Z, -Z,
+    // up = +Z for the four sides and +Y for the caps, so right = fwd x up is, in order,
+    // -Y, +Y, +X, -X, -X, +X. Plain arithmetic: llvmpipe indexes constant arrays slowly.
+    // Selects, not branches: llvmpipe runs both sides of a branch that varies per pixel.
+    vec3 d = q - light_pos;
+    vec3 a = abs(d);
+    bool on_x = a.x >= a.y && a.x >= a.z, on_y = !on_x && a.y >= a.z;
+    float z = max(on_x ? a.x : on_y ? a.y : a.z, 1e-9);
+    vec2 xy = on_x ? vec2(d.x > 0.0 ? -d.y : d.y, d.z)
+              : on_y ? vec2(d.y > 0.0 ? d.x : -d.x, d.z)
+                     : vec2(d.z > 0.0 ? -d.x : d.x, d.y);
+    float f = on_x ? (d.x > 0.0 ? 0.0 : 1.0) : on_y ? (d.y > 0.0 ? 2.0 : 3.0)
+                                                   : (d.z > 0.0 ? 4.0 : 5.0);
+    vec2 uv = xy / z * 0.5 + 0.5;
+    // The bias is along the ray; along the face's axis it shrinks by z / |d|.
+    float zb = max(z - bias * z / length(d), 1e-6);
+    return shadow_compare(u_shadow_origin[i] + vec2(f * u_shadow_grid.x, 0.0), uv,
+                          u_shadow_depth[i].x - u_shadow_depth[i].y / zb);
+}
+
+// Whether point q sees one-tile light i (a narrow spot or a directional light); 1 = lit.
+float shadow_tile_tap(int i, vec3 light_pos, vec3 q, float bias)
+{
     vec4 c = u_shadow_matrix[i] * vec4(q, 1.0);
     if (!(c.w > 0.0))
         return 1.0;
@@ -93,6 +97,14 @@ void shadow_begin(vec3 N)
     g_shadow_b = (c * b - s * t) * u_shadow_softness;
 }
 
+// Tap k's lookup point around base: the disk turned by shadow_begin; hard shadows read base.
+vec3 shadow_tap_point(vec3 base, int k)
+{
+    if (u_shadow_taps <= 1)
+        return base;
+    return base + u_shadow_disk[k].x * g_shadow_t + u_shadow_disk[k].y * g_shadow_b;
+}
+
 // The fraction of light i that reaches p (normal N, unit direction to the light L).
 float shadow_visibility(int i, int type, vec3 light_pos, vec3 p, vec3 N, vec3 L)
 {
@@ -104,13 +116,30 @@ float shadow_visibility(int i, int type, vec3 light_pos, vec3 p, vec3 N, vec3 L)
     float slope = sqrt(1.0 - n_dot_l * n_dot_l) / n_dot_l;
     float bias = texel * min(1.5 + 2.0 * slope, 6.0);
     vec3 base = p + N * texel;
-    if (u_shadow_taps <= 1)
-        return shadow_tap(i, type, light_pos, base, bias);
+    // Loops where a branch on the light's kind would be: llvmpipe computes both sides of an if
+    // (a cube tap and a one-tile tap, two texture reads, for every tap), but it leaves a loop
+    // as soon as no pixel of the block needs another turn, so each light runs only its own
+    // kind of tap, and none where the light does not reach (the caller's if). Issue 7.
+    int taps = u_shadow_taps <= 1 ? 1 : u_shadow_taps;
+    int cube = u_shadow_cube[i];
+    // Adaptive taps: the two outermost taps of the disk first (137 degrees apart on it); where
+    // both see the light, or both see none, the rest of the disk almost always agrees (no
+    // penumbra reaches this sample), so the sample takes their answer; only where they disagree
+    // does it take all its taps. Other samples of the pixel turn their disks differently, so a
+    // penumbra the two taps missed is still found by its neighbours. Issue 7: about half the
+    // taps of a print render; docs/benchmarks.md has the before and after images compared.
+    int first = taps > 2 ? 2 : taps;
     float sum = 0.0;
-    for (int k = 0; k < u_shadow_taps; k++)
-        sum += shadow_tap(i, type, light_pos,
-                          base + u_shadow_disk[k].x * g_shadow_t + u_shadow_disk[k].y * g_shadow_b,
-                          bias);
-    return sum / float(u_shadow_taps);
+    for (int k = 0; k < (cube == 1 ? first : 0); k++)
+        sum += shadow_cube_tap(i, light_pos, shadow_tap_point(base, taps - 1 - k), bias);
+    for (int k = 0; k < (cube == 1 ? 0 : first); k++)
+        sum += shadow_tile_tap(i, light_pos, shadow_tap_point(base, taps - 1 - k), bias);
+    bool settled = taps > first && (sum >= float(first) - 1e-3 || sum <= 1e-3);
+    int rest = settled ? 0 : taps - first;
+    for (int k = 0; k < (cube == 1 ? rest : 0); k++)
+        sum += shadow_cube_tap(i, light_pos, shadow_tap_point(base, taps - 1 - first - k), bias);
+    for (int k = 0; k < (cube == 1 ? 0 : rest); k++)
+        sum += shadow_tile_tap(i, light_pos, shadow_tap_point(base, taps - 1 - first - k), bias);
+    return settled ? sum / float(first) : sum / float(taps);
 }
 #endif

@@ -6,6 +6,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <new>
@@ -130,6 +132,9 @@ extern "C" rd_oiio_status rd_oiio_write(const rd_oiio_write_desc *d, char *err, 
         OIIO::ImageSpec spec(d->width, d->height, d->channels, to_typedesc(d->file_type));
         if (d->compression != nullptr) {
             spec.attribute("Compression", d->compression);
+            // OpenImageIO 2.4's PNG writer reads its zlib level from its own attribute only.
+            if (!std::strcmp(d->format, "png") && !std::strncmp(d->compression, "zip:", 4))
+                spec.attribute("png:compressionLevel", std::atoi(d->compression + 4));
         }
         if (d->colorspace != nullptr) {
             spec.attribute("oiio:ColorSpace", d->colorspace);

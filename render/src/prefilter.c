@@ -1,6 +1,7 @@
 /* GPU prefiltering of a probe's cube map: one full-screen pass per face of a mip level. */
 #include "prefilter.h"
 #include "gl_funcs.h"
+#include "phase_timer.h"
 #include "probe.h"
 
 #include "render/reflect_ref.h"
@@ -47,8 +48,8 @@ static rd_result copy_level0(rd_context *ctx, unsigned source, unsigned dest, in
     return e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "OpenGL error 0x%x copying a probe", e);
 }
 
-rd_result rd_prefilter_level(rd_context *ctx, unsigned source, int source_size, unsigned dest,
-                             int dest_size, int level, int levels, float hdr_clamp)
+static rd_result prefilter_level(rd_context *ctx, unsigned source, int source_size, unsigned dest,
+                                 int dest_size, int level, int levels, float hdr_clamp)
 {
     if (!ctx->prefilter_program) {
         rd_result r = rd_prefilter_program_create(ctx);
@@ -93,4 +94,14 @@ rd_result rd_prefilter_level(rd_context *ctx, unsigned source, int source_size, 
     glBindVertexArray(0);
     unsigned e = rd_gl_drain_errors();
     return e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "OpenGL error 0x%x prefiltering", e);
+}
+
+rd_result rd_prefilter_level(rd_context *ctx, unsigned source, int source_size, unsigned dest,
+                             int dest_size, int level, int levels, float hdr_clamp)
+{
+    rd_phase_mark("probe captures"); /* TESSERA_PHASES: what came before was capturing */
+    rd_result r =
+        prefilter_level(ctx, source, source_size, dest, dest_size, level, levels, hdr_clamp);
+    rd_phase_mark("prefilter");
+    return r;
 }

@@ -2,6 +2,7 @@
  * off-centre projection (rd_view.crop_*, camera.c) and copied into place. Every tile sees the
  * same camera, near/far, probes and shadow maps, so the stitched image equals an untiled render
  * of the same size (tests/render/test_print_render.c). */
+#include "phase_timer.h"
 #include "render_internal.h"
 #include "scene_internal.h"
 
@@ -52,6 +53,7 @@ rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view,
     if (scene->hold_probes)
         scene->reflection.update = RD_PROBE_ONCE;
     rd_result r = RD_OK;
+    rd_phase_restart();
     for (int ty = 0; ty < rows && r == RD_OK; ty++)
         for (int tx = 0; tx < cols && r == RD_OK; tx++) {
             rd_view t = *view;
@@ -65,10 +67,12 @@ rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view,
             if (cols == 1 && rows == 1)
                 t.full_width = t.full_height = 0; /* one tile: the plain projection */
             r = rd_render(ctx, scene, &t);
+            rd_phase_mark("main pass and tone map");
             if (r == RD_OK)
                 r = rd_read_rgba8(ctx, tile8, tile_px * 4);
             if (r == RD_OK && linear)
                 r = rd_read_linear(ctx, tilef, tile_px * 4);
+            rd_phase_mark("readback");
             if (r != RD_OK)
                 break;
             for (int y = 0; y < t.height; y++) {
@@ -78,10 +82,12 @@ rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view,
                 if (linear)
                     memcpy(linear + dst, tilef + src, (size_t)t.width * 4 * sizeof(float));
             }
+            rd_phase_mark("tile copy");
             scene->reflection.update = RD_PROBE_ONCE;
             if (progress)
                 progress(user, ty * cols + tx + 1, rows * cols);
         }
+    rd_phase_report("rd_render_tiled");
     scene->reflection.update = saved_update;
     free(tile8);
     free(tilef);

@@ -8,6 +8,7 @@
 #include "shadow.h"
 
 #include "gl_funcs.h"
+#include "phase_timer.h"
 #include "probe.h"
 #include "scene_internal.h"
 
@@ -306,7 +307,7 @@ static void render_light(rd_context *ctx, const rd_scene *s, rd_shadow_maps *m, 
     draw_casters(ctx, s, m, m->tile[i], (const float *)vp);
 }
 
-rd_result rd_shadow_maps_update(rd_context *ctx, rd_scene *s)
+static rd_result shadow_maps_update(rd_context *ctx, rd_scene *s)
 {
     if (s->shadows.mode == RD_SHADOWS_OFF || s->light_count == 0)
         return RD_OK;
@@ -364,6 +365,14 @@ rd_result rd_shadow_maps_update(rd_context *ctx, rd_scene *s)
     m->light_count = s->light_count;
     m->settings = s->shadows;
     return RD_OK;
+}
+
+rd_result rd_shadow_maps_update(rd_context *ctx, rd_scene *s)
+{
+    rd_phase_mark("probe captures"); /* TESSERA_PHASES: the probes' tail (phase_timer.h) */
+    rd_result r = shadow_maps_update(ctx, s);
+    rd_phase_mark("shadow maps");
+    return r;
 }
 
 void rd_shadow_frame(rd_scene *s, const rd_view *v, int samples)
