@@ -26,6 +26,7 @@ static void usage(FILE *f)
             "                [--backend egl|osmesa] [--csv FILE]\n"
             "      milliseconds per frame (median and spread) against a full-screen floor\n"
             "      (--probes every-frame|once|on-change|time-sliced, --blur prefiltered|box-mips)\n"
+            "      (--animate OBJECT: drag it 10 mm a frame; the cpu row: CPU ms, all threads)\n"
             "  render, demo and bench take --quality draft|interactive|final|print\n"
             "  tessera probe-bench [--size WxH] [--frames N] [--csv FILE]\n"
             "      what reflection probes cost: per update by resolution, per object\n"

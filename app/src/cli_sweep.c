@@ -94,7 +94,9 @@ static void make_settings(sweep_setting out[SETTINGS])
         st->label = q->name;
         st->resolution = q->resolution;
         st->blur = q->blur;
-        st->every_n = q->update == RD_PROBE_ONCE ? 0 : q->update == RD_PROBE_TIME_SLICED ? -1 : 1;
+        /* On change, under the sweep's moving object, refreshes as time slicing does. */
+        int sliced = q->update == RD_PROBE_TIME_SLICED || q->update == RD_PROBE_ON_CHANGE;
+        st->every_n = q->update == RD_PROBE_ONCE ? 0 : sliced ? -1 : 1;
         st->max_resolution = q->max_resolution;
         st->supersample = q->supersample;
         st->correction = q->correction != RD_CORRECTION_DEFAULT ? q->correction : base.correction;

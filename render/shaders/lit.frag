@@ -222,6 +222,10 @@ void main()
     // Sections 2-6: R = I - 2 (N.I) N with I = -V; the lookup starts at the capture centre.
 #ifdef PER_VERTEX_REFLECTION
     vec3 d = v_reflect;
+#elif defined(BOX_OPAQUE_REFLECTION)
+    // The common case in a variant of its own (issue 8): llvmpipe runs every side of a
+    // uniform branch, so the "depth" search and the refraction below would cost every pixel.
+    vec3 d = correct_box(v_world, reflect(-V, N), u_proxy_min, u_proxy_max, u_probe_centre);
 #else
     vec3 r = reflect(-V, N);
     vec3 d = u_correction == 2   ? correct_box(v_world, r, u_proxy_min, u_proxy_max, u_probe_centre)
@@ -235,6 +239,7 @@ void main()
 #else
     vec3 refl = textureLod(u_probe, world_to_cmcs(d), u_lod).rgb;
 #endif
+#ifndef BOX_OPAQUE_REFLECTION
     if (u_surface_highlights == 1)
         refl += reflected_highlight(d, v_world);
     if (u_transparency > 0.0) {
@@ -258,6 +263,7 @@ void main()
         }
         lit = mix(lit, refr, u_transparency);
     }
+#endif
     lit = blend_reflection(u_blend, u_kr, u_mat_specular, lit, refl, dot(N, V));
 #endif
     // A probe capture keeps the distance to what it saw for the "depth" lookup (reflect.glsl).

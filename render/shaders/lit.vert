@@ -7,6 +7,10 @@ uniform mat4 u_model;
 uniform mat3 u_normal_matrix; // inverse transpose of u_model's 3x3, so non-uniform scale is right
 uniform mat4 u_view_proj;
 
+// The depth prepass (depth_only.frag) and the shaded pass must reach the same depths to the
+// bit for GL_LEQUAL: invariance across programs is what GLSL promises for this (4.4.6).
+invariant gl_Position;
+
 out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;

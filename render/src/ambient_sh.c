@@ -65,6 +65,18 @@ rd_result rd_ambient_update(rd_context *ctx, rd_scene *s, rd_frame_stats *stats)
               (u == RD_PROBE_ON_CHANGE && s->change_counter > p->captured_stamp) ||
               ((u == RD_PROBE_EVERY_FRAME || u == RD_PROBE_TIME_SLICED) &&
                s->frame - p->captured_frame >= every);
+    /* Under a face budget (a live view, rd_reflection_defaults.max_faces_per_frame) the
+     * irradiance waits until the scene has stood still for a frame: a fixture being dragged
+     * changes the room's ambient light by little, and the six faces and the read-back of the
+     * projection would cost every frame of the drag (RENDERING.md section 7 allows any
+     * refresh rate for the SH9 probe; the stills have no budget and are not held back). */
+    if (s->change_counter != s->ambient_seen_change) {
+        s->ambient_seen_change = s->change_counter;
+        s->ambient_seen_frame = s->frame;
+    }
+    if (due && p->captured_frame >= 0 && u == RD_PROBE_ON_CHANGE &&
+        s->reflection.max_faces_per_frame > 0 && s->frame - s->ambient_seen_frame < 2)
+        return RD_OK;
     if (!due)
         return RD_OK;
     float bmin[3], bmax[3], far_m = 0.0f;

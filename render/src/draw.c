@@ -7,30 +7,31 @@
 #include "render/reflect_ref.h"
 
 #include <cglm/cglm.h>
+#include <math.h>
 #include <stdlib.h>
 
-void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],
-                           const float eye[3])
+/* The lights of `mask` (bit i: scene light i), packed in scene order: the light loop of
+ * lit.frag runs over exactly these. */
+static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned mask)
 {
     int type[RD_MAX_LIGHTS];
     float pos[RD_MAX_LIGHTS][3], dir[RD_MAX_LIGHTS][3], dif[RD_MAX_LIGHTS][3],
         spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2];
-    int n = s->light_count;
-    for (int i = 0; i < n; i++) {
+    int n = 0;
+    for (int i = 0; i < s->light_count; i++) {
+        if (!(mask & (1u << i)))
+            continue;
         const rd_light *l = &s->lights[i];
-        type[i] = (int)l->type;
-        memcpy(pos[i], l->position, sizeof pos[i]);
-        memcpy(dir[i], l->direction, sizeof dir[i]);
-        memcpy(dif[i], l->diffuse, sizeof dif[i]);
-        memcpy(spec[i], l->specular, sizeof spec[i]);
-        memcpy(att[i], l->attenuation, sizeof att[i]);
-        spot[i][0] = l->spot_inner_cos;
-        spot[i][1] = l->spot_outer_cos;
+        type[n] = (int)l->type;
+        memcpy(pos[n], l->position, sizeof pos[n]);
+        memcpy(dir[n], l->direction, sizeof dir[n]);
+        memcpy(dif[n], l->diffuse, sizeof dif[n]);
+        memcpy(spec[n], l->specular, sizeof spec[n]);
+        memcpy(att[n], l->attenuation, sizeof att[n]);
+        spot[n][0] = l->spot_inner_cos;
+        spot[n][1] = l->spot_outer_cos;
+        n++;
     }
-    glUseProgram(p->id);
-    glUniformMatrix4fv(p->u_view_proj, 1, GL_FALSE, vp);
-    glUniform3fv(p->u_eye, 1, eye);
-    glUniform3fv(p->u_ambient_light, 1, s->ambient);
     glUniform1i(p->u_light_count, n);
     if (n > 0) {
         glUniform1iv(p->u_light_type, n, type);
@@ -41,6 +42,50 @@ void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float v
         glUniform3fv(p->u_light_attenuation, n, &att[0][0]);
         glUniform2fv(p->u_light_spot, n, &spot[0][0]);
     }
+}
+
+static unsigned all_lights(const rd_scene *s)
+{
+    return s->light_count >= 32 ? ~0u : (1u << s->light_count) - 1u;
+}
+
+/* The lights that can reach a bounding sphere (centre, radius): a spot light whose cone
+ * misses the sphere adds exactly zero everywhere on it (lit.frag's spot_factor is 0 at and
+ * beyond the outer cosine), so leaving it out changes no pixel. Point and directional lights
+ * always stay: their attenuation never reaches zero (issue 8; RENDERING.md section 1). */
+static unsigned lights_reaching(const rd_scene *s, const float sphere[4])
+{
+    unsigned mask = all_lights(s);
+    for (int i = 0; i < s->light_count; i++) {
+        const rd_light *l = &s->lights[i];
+        if (l->type != RD_LIGHT_SPOT || !(l->spot_outer_cos > -1.0f))
+            continue;
+        float d[3], dist2 = 0.0f;
+        for (int k = 0; k < 3; k++) {
+            d[k] = sphere[k] - l->position[k];
+            dist2 += d[k] * d[k];
+        }
+        float dist = sqrtf(dist2), r = sphere[3] * 1.01f + 1e-4f; /* a margin for rounding */
+        if (!(dist > r))
+            continue; /* the light is inside the sphere */
+        float axis =
+            (d[0] * l->direction[0] + d[1] * l->direction[1] + d[2] * l->direction[2]) / dist;
+        float to_centre = acosf(fminf(fmaxf(axis, -1.0f), 1.0f));
+        float outer = acosf(fminf(fmaxf(l->spot_outer_cos, -1.0f), 1.0f));
+        if (to_centre - asinf(r / dist) > outer + 1e-3f)
+            mask &= ~(1u << i);
+    }
+    return mask;
+}
+
+void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],
+                           const float eye[3])
+{
+    glUseProgram(p->id);
+    glUniformMatrix4fv(p->u_view_proj, 1, GL_FALSE, vp);
+    glUniform3fv(p->u_eye, 1, eye);
+    glUniform3fv(p->u_ambient_light, 1, s->ambient);
+    set_light_uniforms(p, s, all_lights(s));
     glUniform1i(p->u_diffuse_texture, 0);
     glUniform1f(p->u_specular_scale, 1.0f);
     glUniform1f(p->u_store_distance, 0.0f);
@@ -75,7 +120,8 @@ static float determinant3(const float m[16])
 typedef struct draw_item {
     int index;
     int background;
-    float distance;
+    float near;     /* distance from the eye to the object's world bounding box (0 inside) */
+    float distance; /* to the box's centre: breaks ties (the eye inside several boxes) */
 } draw_item;
 
 static int compare_items(const void *a, const void *b)
@@ -83,11 +129,17 @@ static int compare_items(const void *a, const void *b)
     const draw_item *x = a, *y = b;
     if (x->background != y->background)
         return x->background - y->background;
+    if (x->near != y->near)
+        return (x->near > y->near) - (x->near < y->near);
     return (x->distance > y->distance) - (x->distance < y->distance);
 }
 
 /* Front to back, enclosing surfaces last: llvmpipe's early depth test then shades each
- * pixel about once, which is what keeps a frame near one full-screen pass. */
+ * pixel about once, which is what keeps a frame near one full-screen pass. The order is by
+ * the nearest point of each object's world box, not its centre (issue 8): a wall's tiles
+ * and the grout surface behind them share a centre to the millimetre, and the tiles, a few
+ * millimetres nearer the room, then mostly come first. The main view does not depend on it
+ * (its depth prepass shades each pixel once); probe faces, drawn without one, do. */
 static draw_item *sorted_draw_list(rd_context *ctx, const rd_scene *s, const float eye[3])
 {
     draw_item *items = malloc((size_t)(s->object_count ? s->object_count : 1) * sizeof *items);
@@ -95,14 +147,18 @@ static draw_item *sorted_draw_list(rd_context *ctx, const rd_scene *s, const flo
         return NULL;
     for (int i = 0; i < s->object_count; i++) {
         const rd_object_desc *o = &s->objects[i];
-        const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
-        vec4 c = {0, 0, 0, 1};
-        if (m)
-            for (int k = 0; k < 3; k++)
-                c[k] = 0.5f * (m->bounds_min[k] + m->bounds_max[k]);
-        vec4 w;
-        glm_mat4_mulv((vec4 *)o->transform, c, w);
-        items[i] = (draw_item){i, o->background, glm_vec3_distance((float *)eye, (float *)w)};
+        float lo[3], hi[3], near2 = 0.0f, centre2 = 0.0f;
+        rd_object_world_bounds(ctx, o, lo, hi);
+        for (int k = 0; k < 3; k++) {
+            if (!(lo[k] <= hi[k])) { /* no mesh: its origin */
+                lo[k] = hi[k] = o->transform[12 + k];
+            }
+            float gap = eye[k] < lo[k] ? lo[k] - eye[k] : eye[k] > hi[k] ? eye[k] - hi[k] : 0.0f;
+            float c = 0.5f * (lo[k] + hi[k]) - eye[k];
+            near2 += gap * gap;
+            centre2 += c * c;
+        }
+        items[i] = (draw_item){i, o->background, sqrtf(near2), sqrtf(centre2)};
     }
     qsort(items, (size_t)s->object_count, sizeof *items, compare_items);
     return items;
@@ -150,6 +206,17 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glActiveTexture(GL_TEXTURE0);
 }
 
+/* Whether an object's reflection takes the box correction, shows no refraction and no
+ * re-lit highlights (set_reflection_uniforms), so the lean program variant draws it. */
+static int box_opaque(const rd_scene *s, const rd_probe *probe, const rd_object_desc *o)
+{
+    rd_correction c = rd_effective_correction(s, &o->material);
+    if (c == RD_CORRECTION_DEPTH &&
+        (!probe->capture || s->objects[probe->owner].probe.update == RD_PROBE_STATIC))
+        c = RD_CORRECTION_BOX;
+    return c == RD_CORRECTION_BOX && !(o->material.transparency > 0.0f) && !probe->surface;
+}
+
 /* Whether a bounding sphere (centre, radius) lies outside one of the frustum's planes. */
 static int outside_frustum(vec4 planes[6], const float sphere[4])
 {
@@ -159,17 +226,12 @@ static int outside_frustum(vec4 planes[6], const float sphere[4])
     return 0;
 }
 
-rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
+/* One walk over the sorted objects. depth_only: the depth prepass, the same programs and
+ * the same culling with colour writes off, so the shaded walk's depths match exactly. */
+static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass,
+                           const draw_item *items, vec4 planes[6], int *frame_uniforms_set,
+                           unsigned *light_masks, int depth_only, int fast_paths)
 {
-    draw_item *items = sorted_draw_list(ctx, scene, pass->eye);
-    if (!items)
-        return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
-    /* Only what the view can see is drawn: a probe face sees a sixth of the room. */
-    mat4 vp;
-    vec4 planes[6];
-    memcpy(vp, pass->view_proj, sizeof vp);
-    glm_frustum_planes(vp, planes);
-    int frame_uniforms_set[RD_LIT_VARIANTS] = {0};
     int shadows = pass->shadows && rd_shadows_active(scene);
     for (int i = 0; i < scene->object_count; i++) {
         int index = items[i].index;
@@ -213,13 +275,16 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
                            ? RD_LIT_SPHERE_MAP
                            : 0) |
                       (shadows ? RD_LIT_SHADOWS : 0);
+        if (probe && fast_paths && box_opaque(scene, probe, o))
+            variant |= RD_LIT_BOX_OPAQUE;
+        if (depth_only)
+            variant = RD_LIT_DEPTH_ONLY;
         const rd_program *p = rd_lit_program(ctx, variant);
-        if (!p) {
-            free(items);
+        if (!p)
             return RD_ERR_SHADER;
-        }
         if (!frame_uniforms_set[variant]) {
             rd_set_frame_uniforms(p, scene, pass->view_proj, pass->eye);
+            light_masks[variant] = all_lights(scene);
             /* A highlight depends on where it is seen from; a probe sees from its centre, not
              * from the reflecting surface, so it may leave highlights out (section 8). */
             if (pass->specular_off)
@@ -232,18 +297,34 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
         } else {
             glUseProgram(p->id);
         }
-        if (t) {
-            glActiveTexture(GL_TEXTURE0);
-            glBindTexture(GL_TEXTURE_2D, t->name);
+        /* Per-object light culling (exact, lights_reaching). Shadowed programs index their
+         * shadow maps by light, and "depth" probes re-light what they saw with every light:
+         * both keep the scene's list. */
+        if (!depth_only && fast_paths && scene->object_spheres && !(variant & RD_LIT_SHADOWS) &&
+            !(probe && probe->surface)) {
+            unsigned mask = lights_reaching(scene, scene->object_spheres[index]);
+            if (mask != light_masks[variant]) {
+                set_light_uniforms(p, scene, mask);
+                light_masks[variant] = mask;
+            }
+        } else if (!depth_only && light_masks[variant] != all_lights(scene)) {
+            set_light_uniforms(p, scene, all_lights(scene));
+            light_masks[variant] = all_lights(scene);
         }
-        if (probe)
-            set_reflection_uniforms(p, scene, probe, o);
-        if (variant & RD_LIT_SPHERE_MAP) {
-            glActiveTexture(GL_TEXTURE2);
-            glBindTexture(GL_TEXTURE_2D, probe->sphere_map);
-            glUniform1i(p->u_sphere_map, 2);
-            glUniformMatrix3fv(p->u_view_rot, 1, GL_FALSE, pass->view_rot);
-            glActiveTexture(GL_TEXTURE0);
+        if (!depth_only) {
+            if (t) {
+                glActiveTexture(GL_TEXTURE0);
+                glBindTexture(GL_TEXTURE_2D, t->name);
+            }
+            if (probe)
+                set_reflection_uniforms(p, scene, probe, o);
+            if (variant & RD_LIT_SPHERE_MAP) {
+                glActiveTexture(GL_TEXTURE2);
+                glBindTexture(GL_TEXTURE_2D, probe->sphere_map);
+                glUniform1i(p->u_sphere_map, 2);
+                glUniformMatrix3fv(p->u_view_rot, 1, GL_FALSE, pass->view_rot);
+                glActiveTexture(GL_TEXTURE0);
+            }
         }
         /* Back faces of closed meshes are never seen: culling them saves shading fragments
          * that early depth testing cannot reject when they happen to be drawn first. */
@@ -257,9 +338,45 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
         glBindVertexArray(m->vao);
         glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, 0);
     }
+    return RD_OK;
+}
+
+rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
+{
+    draw_item *items = sorted_draw_list(ctx, scene, pass->eye);
+    if (!items)
+        return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
+    /* Only what the view can see is drawn: a probe face sees a sixth of the room. */
+    mat4 vp;
+    vec4 planes[6];
+    memcpy(vp, pass->view_proj, sizeof vp);
+    glm_frustum_planes(vp, planes);
+    int frame_uniforms_set[RD_LIT_VARIANTS] = {0};
+    unsigned light_masks[RD_LIT_VARIANTS] = {0}; /* the lights each program holds now */
+    rd_result r = RD_OK;
+    /* TESSERA_NO_FAST_PATHS=1 draws without the depth prepass and the lean variant: the
+     * general path the fast ones must match (tests/render/test_frame_work.c). */
+    const char *slow = getenv("TESSERA_NO_FAST_PATHS");
+    int fast = !(slow && *slow && strcmp(slow, "0") != 0);
+    if (pass->depth_prepass && fast) {
+        /* Issue 8: a depth-only walk first, then the shaded walk with GL_LEQUAL and no depth
+         * writes, so llvmpipe's early depth test shades every pixel exactly once whatever the
+         * order (layered tiles, grout and wall; fixtures in front of each other). The
+         * prepass costs the vertices twice and a rasterisation without shading. */
+        static const GLenum none = GL_NONE, colour = GL_COLOR_ATTACHMENT0;
+        glDrawBuffers(1, &none);
+        r = draw_list(ctx, scene, pass, items, planes, frame_uniforms_set, light_masks, 1, fast);
+        glDrawBuffers(1, &colour);
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(GL_FALSE);
+    }
+    if (r == RD_OK)
+        r = draw_list(ctx, scene, pass, items, planes, frame_uniforms_set, light_masks, 0, fast);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
     free(items);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
     glBindVertexArray(0);
-    return RD_OK;
+    return r;
 }

@@ -234,7 +234,14 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
         return fixed < max_size ? fixed : max_size;
     float d = glm_vec3_distance((float *)eye, (float *)p->centre);
     float diameter_px = p->detail_size / fmaxf(d, 1e-3f) * pixels_per_tan * (float)supersample;
-    int n = next_pow2(0.5f * diameter_px);
+    float wanted = 0.5f * diameter_px;
+    int n = next_pow2(wanted);
+    /* Hysteresis (issue 8): a live view moves the eye and adapts its render scale every
+     * frame, and a new size means a new, complete capture. A probe keeps its size until the
+     * wanted texels leave (size / 3, 1.5 size], 1.5 times beyond the rounding's own
+     * (size / 2, size]; a first capture (a still) takes the plain rounding. */
+    if (p->size > 0 && wanted > (float)p->size / 3.0f && wanted <= 1.5f * (float)p->size)
+        n = p->size;
     /* A blurred reflection needs no more texels than its lobe can show: about two texels
      * across the lobe's half-width sqrt(2 ln 2 / n(g)) (a face spans pi/2). */
     float g = s->objects[p->owner].material.glossiness;
@@ -365,7 +372,17 @@ static int faces_to_capture(const rd_scene *s, rd_probe *p, rd_probe_update u, i
     case RD_PROBE_ONCE:
         return 0;
     case RD_PROBE_ON_CHANGE:
-        return s->change_counter > p->captured_stamp ? all : 0;
+        if (s->reflection.max_faces_per_frame <= 0)
+            return s->change_counter > p->captured_stamp ? all : 0;
+        /* Within a frame budget (issue 8): a face is refreshed only when the scene changed
+         * after it was captured (the camera moving changes nothing), one face a frame and
+         * probe, the faces taking turns, so a dragged fixture costs at most the budget. */
+        for (int k = 0; k < 6; k++) {
+            int f = (p->next_face + k) % 6;
+            if (p->face_stamp[f] < s->change_counter)
+                return 1 << f;
+        }
+        return 0;
     default:
         return s->frame - p->captured_frame >= every ? all : 0;
     }
@@ -573,7 +590,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             p->captured_stamp = s->change_counter;
             /* Time-sliced probes end their first round after 1 to 6 faces, by index, so that
              * their blurs (one per round) fall on different frames. */
-            p->faces_since_blur = 5 - i % 6;
+            p->faces_since_blur = u == RD_PROBE_TIME_SLICED ? 5 - i % 6 : 0;
         }
         for (int f = 0; f < 6; f++)
             if (faces & (1 << f)) {
@@ -581,12 +598,20 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                 if (r != RD_OK)
                     return r;
                 p->faces_valid |= 1 << f;
+                p->face_stamp[f] = s->change_counter;
                 stats->faces_captured++;
             }
         int round_done = 0;
         if (u == RD_PROBE_TIME_SLICED && faces != 0x3f) {
             p->next_face = (p->next_face + 1) % 6;
             round_done = ++p->faces_since_blur >= 6;
+            if (round_done)
+                p->faces_since_blur = 0;
+        } else if (u == RD_PROBE_ON_CHANGE && faces != 0x3f) {
+            /* Blur when no face is stale any more, or after six faces while the scene keeps
+             * changing (a drag), so the reflection follows. */
+            p->next_face = (__builtin_ctz((unsigned)faces) + 1) % 6;
+            round_done = ++p->faces_since_blur >= 6 || !faces_to_capture(s, p, u, every);
             if (round_done)
                 p->faces_since_blur = 0;
         }

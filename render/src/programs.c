@@ -141,17 +141,22 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
     int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
     int sphere = reflecting && (variant & RD_LIT_SPHERE_MAP);
-    char defines[256];
-    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s%s", RD_MAX_LIGHTS,
+    int box_opaque = reflecting && !per_vertex && !sphere && (variant & RD_LIT_BOX_OPAQUE);
+    char defines[320];
+    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s%s%s", RD_MAX_LIGHTS,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
              per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "",
              sphere ? "#define SPHERE_MAP 1\n" : "",
              (variant & RD_LIT_SH9) ? "#define SH9_AMBIENT 1\n" : "",
-             (variant & RD_LIT_SHADOWS) ? "#define HAS_SHADOWS 1\n" : "");
-    p->id =
-        link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
-             reflecting ? "reflect.glsl shadow.glsl lit.frag" : "shadow.glsl lit.frag", defines);
+             (variant & RD_LIT_SHADOWS) ? "#define HAS_SHADOWS 1\n" : "",
+             box_opaque ? "#define BOX_OPAQUE_REFLECTION 1\n" : "");
+    if (variant == RD_LIT_DEPTH_ONLY)
+        p->id = link("lit.vert", "depth_only.frag", defines);
+    else
+        p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
+                     reflecting ? "reflect.glsl shadow.glsl lit.frag" : "shadow.glsl lit.frag",
+                     defines);
     if (!p->id)
         return NULL;
     locate_lit(p);

@@ -113,9 +113,11 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     /* A tile's probes are as sharp as the whole image's (renderer_tiled.c). */
     float pixels_per_tan = 0.5f * (float)(v->full_width > 0 ? v->full_height : v->height) /
                            tanf(0.5f * glm_rad(v->fov_y_deg > 0.0f ? v->fov_y_deg : 60.0f));
-    rd_result r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &stats);
+    /* SH9 ambient first: the probes' captures light what they see with its coefficients
+     * (RENDERING.md section 7), and a still's one frame must not capture them without any. */
+    rd_result r = rd_ambient_update(ctx, scene, &stats);
     if (r == RD_OK)
-        r = rd_ambient_update(ctx, scene, &stats);
+        r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &stats);
     if (r == RD_OK)
         r = rd_sphere_maps_update(ctx, scene, view_rot);
     if (r == RD_OK)
@@ -125,10 +127,13 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
         return r;
     ctx->stats = stats;
     begin_hdr_pass(ctx);
-    r = rd_draw_objects(
-        ctx, scene,
-        &(rd_pass){
-            .view_proj = vp, .view_rot = view_rot, .eye = v->eye, .reflections = 1, .shadows = 1});
+    r = rd_draw_objects(ctx, scene,
+                        &(rd_pass){.view_proj = vp,
+                                   .view_rot = view_rot,
+                                   .eye = v->eye,
+                                   .reflections = 1,
+                                   .shadows = 1,
+                                   .depth_prepass = 1});
     if (r != RD_OK)
         return r;
 

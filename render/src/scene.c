@@ -101,13 +101,16 @@ rd_result rd_scene_add_light(rd_scene *s, const rd_light *light)
             l.direction[k] /= len;
     }
     s->lights[s->light_count++] = l;
+    s->change_counter++; /* probes and shadow maps that saw the scene without it are stale */
     return RD_OK;
 }
 
 void rd_scene_set_ambient(rd_scene *s, const float intensity[3])
 {
-    if (s && intensity)
+    if (s && intensity && memcmp(s->ambient, intensity, sizeof s->ambient) != 0) {
         memcpy(s->ambient, intensity, sizeof s->ambient);
+        s->change_counter++; /* the probes captured the old ambient term */
+    }
 }
 
 int rd_scene_object_count(const rd_scene *s)

@@ -18,6 +18,7 @@ typedef struct rd_probe {
     int faces_valid;          /* bit f: face f holds a capture */
     int next_face;            /* time slicing: the face captured next */
     int faces_since_blur;     /* time slicing: faces captured since the last blur */
+    long long face_stamp[6];  /* the scene's change counter when face f was last captured */
     int filtered_level;       /* the lower prefiltered level that holds data; -1 none */
     int mips_valid;           /* box mips generated since the last capture */
     unsigned sphere_map;      /* material.sphere_map: the probe as a sphere map for this view */
@@ -43,6 +44,10 @@ struct rd_scene {
     float (*object_spheres)[4]; /* per object, this frame: world bounding sphere centre, radius */
     int probes_dirty;           /* objects were added: the probe list must be rebuilt */
     long long change_counter;
+    /* The ambient probe waits for a scene in motion to settle (ambient_sh.c): the change
+     * counter it last saw and the frame it saw it change. */
+    long long ambient_seen_change;
+    int ambient_seen_frame;
     int frame;
     rd_probe ambient_probe; /* RD_AMBIENT_SH9: captured at the proxy's centre */
     float sh9[9][3];        /* its irradiance coefficients, world coordinates */
