@@ -8,7 +8,7 @@
 #include "cli_options.h"
 #include "cli_print_render.h"
 #include "render/image_io.h"
-#include "thumb_scene.h"
+#include "app/thumb_scene.h"
 
 #include <errno.h>
 #include <math.h>

@@ -676,6 +676,9 @@ app_result cmd_build(const app_project *p, const app_command_desc *d, cmd_comman
     case APP_CMD_SET_REFLECTION:
         r = build_material(p, d, out, err, err_size);
         break;
+    case APP_CMD_SET_PROBE:
+        r = cmd_build_probe(p, d, out, err, err_size);
+        break;
     default:
         r = fail(err, err_size, APP_ERR_SCHEMA, "unknown command type %d", (int)d->type);
         break;
@@ -695,6 +698,7 @@ const char *app_command_type_name(app_command_type t)
         "remove-tiling",  "set-tile-product",  "set-tile-pattern", "set-grout",
         "set-tile-start", "set-tile-rotation", "add-opening",      "remove-opening",
         "move-opening",   "move-corner",       "add-prewall",      "remove-prewall",
-        "add-niche",      "remove-niche",      "add-material",     "set-reflection"};
+        "add-niche",      "remove-niche",      "add-material",     "set-reflection",
+        "set-probe"};
     return (unsigned)t < APP_CMD_COUNT ? names[t] : "unknown";
 }

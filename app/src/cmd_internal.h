@@ -48,4 +48,14 @@ void cmd_free(cmd_command *c);
 app_result cmd_build(const app_project *p, const app_command_desc *d, cmd_command *out, char *err,
                      size_t err_size);
 
+/* cmd_probe.c: APP_CMD_SET_PROBE's checks and edit; the `probe` line's option words
+ * (count words after the material's name) into d, starting from m's policy: 1, or 0 and why;
+ * the names of the APP_PROBE_* and APP_CORRECTION_* values as the project file writes them. */
+app_result cmd_build_probe(const app_project *p, const app_command_desc *d, cmd_command *c,
+                           char *err, size_t err_size);
+int cmd_probe_words(const app_material *m, int count, const char *const *words, app_command_desc *d,
+                    char *why, size_t why_size);
+const char *cmd_probe_update_name(int update);
+const char *cmd_correction_name(int correction);
+
 #endif

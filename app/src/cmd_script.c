@@ -1,6 +1,7 @@
 /* Edit scripts: one command per line, replayed through an app_history (`tessera edit`). The
  * format is documented in docs/editing.md; every error names the script line. */
 #include "app/commands.h"
+#include "cmd_internal.h" /* cmd_probe_words */
 
 #include "catalog/catalog.h"
 #include "catalog/model_gen.h"
@@ -589,6 +590,49 @@ static int pattern_of(sctx *c, const char *w, app_tile_pattern *out)
                 w);
 }
 
+/* `tile SURFACE band FROM TO`: the heights a wall tiling covers (TO 0 = up to the ceiling). */
+static int tile_band(sctx *c, app_tiling *t)
+{
+    return number(c, 3, &t->from_mm) && number(c, 4, &t->to_mm);
+}
+
+/* `tile SURFACE border add MAKER ARTICLE [VARIANT] at BOTTOM`, `tile SURFACE border K at
+ * BOTTOM` (K from 1: moves border row K), `tile SURFACE border remove K`. */
+static int tile_border(sctx *c, app_tiling *t)
+{
+    const char *how = NULL;
+    if (!word(c, 3, &how))
+        return 0;
+    if (!strcmp(how, "add")) {
+        int at = keyword(c, 4, "at");
+        if (at < 0)
+            return fail(c, "tile: border add MANUFACTURER ARTICLE [VARIANT] at BOTTOM");
+        app_product_ref ref;
+        app_product_info info;
+        double bottom = 0;
+        if (!product_ref(c, 4, at, &ref) || !number(c, at + 1, &bottom) || !lookup(c, &ref, &info))
+            return 0;
+        if (info.category != CAT_CATEGORY_TILES)
+            return fail(c, "tile: %s %s is not a tile", ref.manufacturer, ref.article);
+        if (t->border_count >= APP_TILING_MAX_BORDERS)
+            return fail(c, "tile: \"%s\" has %d border rows already", t->name, t->border_count);
+        t->borders[t->border_count].product = ref;
+        t->borders[t->border_count++].bottom_mm = bottom;
+        return 1;
+    }
+    int remove = !strcmp(how, "remove"), k = 0;
+    if (!integer(c, remove ? 4 : 3, &k))
+        return 0;
+    if (k < 1 || k > t->border_count)
+        return fail(c, "tile: \"%s\" has %d border rows, no row %d", t->name, t->border_count, k);
+    if (!remove)
+        return kw_numbers(c, 4, "at", 1, &t->borders[k - 1].bottom_mm, 1) == 1;
+    memmove(&t->borders[k - 1], &t->borders[k],
+            (size_t)(t->border_count - k) * sizeof t->borders[0]);
+    memset(&t->borders[--t->border_count], 0, sizeof t->borders[0]);
+    return 1;
+}
+
 static int do_tile(sctx *c)
 {
     const char *surface = NULL, *what = NULL;
@@ -667,8 +711,15 @@ static int do_tile(sctx *c)
         d.type = APP_CMD_SET_TILE_ROTATION;
         if (!number(c, 3, &d.rotation_deg))
             return 0;
+    } else if (!strcmp(what, "band") || !strcmp(what, "border")) {
+        /* No command type of their own: the tiling replaced whole (one undo step). */
+        d.type = APP_CMD_SET_TILING;
+        d.tiling = *cur;
+        if (!(!strcmp(what, "band") ? tile_band(c, &d.tiling) : tile_border(c, &d.tiling)))
+            return 0;
     } else {
-        return fail(c, "tile: with, pattern, grout, start or rotate, not \"%s\"", what);
+        return fail(c, "tile: with, pattern, grout, start, rotate, band or border, not \"%s\"",
+                    what);
     }
     return all_used(c) && run(c, &d);
 }
@@ -815,6 +866,28 @@ static int do_reflect(sctx *c)
     return all_used(c) && run(c, &d);
 }
 
+/* `probe MATERIAL [update POLICY] [every N] [resolution auto|N] [correction KIND]`: the
+ * material's reflection probe policy (cmd_probe.c); words not given keep their values. */
+static int do_probe(sctx *c)
+{
+    const char *name = NULL;
+    if (!word(c, 1, &name))
+        return 0;
+    int m = app_project_find_material(c->p, name);
+    if (m < 0)
+        return fail(c, "probe: no material named \"%s\"", name);
+    app_command_desc d;
+    memset(&d, 0, sizeof d);
+    d.index = m;
+    char why[512];
+    if (!cmd_probe_words(&c->p->materials[m], c->ntok - 2, (const char *const *)c->tok + 2, &d, why,
+                         sizeof why))
+        return fail(c, "%s", why);
+    for (int i = 2; i < c->ntok; i++)
+        c->used[i] = 1;
+    return run(c, &d);
+}
+
 static int do_undo_redo(sctx *c, int redo)
 {
     int n = 1;
@@ -874,6 +947,8 @@ static int dispatch(sctx *c)
         return do_plan_edit(c);
     if (!strcmp(cmd, "reflect"))
         return do_reflect(c);
+    if (!strcmp(cmd, "probe"))
+        return do_probe(c);
     if (!strcmp(cmd, "undo") || !strcmp(cmd, "redo"))
         return do_undo_redo(c, !strcmp(cmd, "redo"));
     return fail(c, "unknown command \"%s\" (see docs/editing.md)", cmd);

@@ -3,7 +3,7 @@
  * light, and the product on the floor in its first variant; the camera frames the product's
  * bounding sphere from the front right, a little above (products face +Y, docs/catalog.md
  * "Models"). Lengths in the catalog are millimetres, the renderer's metres. */
-#include "thumb_scene.h"
+#include "app/thumb_scene.h"
 
 #include "catalog/mesh_lod.h"
 #include "catalog/model.h"

@@ -2,6 +2,8 @@
  * image scaled into framebuffer 0, and reading that framebuffer back for screenshots. The
  * planner renders its 3D view below the window size when the frame budget asks for it
  * (issue 8, "speed for accuracy, live"); the blit's linear filter is the upscale. */
+#include "render/ui_texture.h"
+
 #include "gl_funcs.h"
 #include "render_internal.h"
 
@@ -49,4 +51,15 @@ rd_result rd_read_window_rgba8(rd_context *ctx, int width, int height, uint8_t *
     return rd_gl_drain_errors() == GL_NO_ERROR
                ? RD_OK
                : rd_fail(RD_ERR_GL, "rd_read_window_rgba8: read failed");
+}
+
+rd_result rd_bind_window(rd_context *ctx, int width, int height)
+{
+    if (!ctx || ctx->backend != RD_BACKEND_ADOPT)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_bind_window: no adopted window");
+    if (width <= 0 || height <= 0)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_bind_window: window size %dx%d", width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, width, height);
+    return RD_OK;
 }

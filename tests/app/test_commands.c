@@ -245,6 +245,13 @@ static app_command_desc random_desc(const app_project *p, int serial)
         d.glossiness = (float)rnd_mm(0, 1);
         d.blend = rnd(4);
         break;
+    case APP_CMD_SET_PROBE: /* cmd_probe.c; sometimes refused (static without a map, 96) */
+        count = p->material_count;
+        d.probe_update = rnd(6);
+        d.probe_every = rnd(5);
+        d.probe_resolution = rnd(3) == 0 ? 96 : (rnd(2) ? 0 : 128);
+        d.correction = rnd(5);
+        break;
     case APP_CMD_REMOVE_OPENING:
         count = p->plan.opening_count;
         break;

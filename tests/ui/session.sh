@@ -1,7 +1,8 @@
 #!/bin/sh
 # A planner session under Xvfb (issue 8): open the demo, look around, search "basin" in the
 # catalog, place one, drag it against another wall, undo, redo, tile a wall and change its
-# pattern, save; then check the saved project. The app must exit 0 (a GL error fails the
+# pattern, save; then wall 1's elevation, its pattern, grout and start through the tile
+# actions, save again; then check the saved project. The app must exit 0 (a GL error fails the
 # next render, and so the run), every screenshot must show the room, each action must change
 # the picture, and the plan screenshots must match their goldens.
 #   usage: session.sh TESSERA OUTDIR SCREENSHOT_CHECK GOLDEN_DIR
@@ -12,6 +13,9 @@ check=$3
 golden=$4
 rm -rf "$out"
 mkdir -p "$out"
+# The shipped demo as `tessera open` alone would open it, but a copy: the session edits it, and
+# an autosave must not land beside the shipped file (it would offer recovery to every session).
+cp "$golden/../../assets/projects/designed-bathroom.json" "$out/demo.json"
 cat >"$out/session.txt" <<SCRIPT
 wait 2
 screenshot $out/open.png
@@ -58,9 +62,19 @@ turntable on
 wait 10
 screenshot $out/present.png
 print-shot $out/print-shot.png
+present off
+turntable off
+elevation-wall 1
+tile-pattern wall:1 herringbone
+expect-pattern wall:1 herringbone
+tile-grout wall:1 4
+tile-start wall:1 300 200
+wait 1
+screenshot $out/elevation.png
+save $out/saved-tiles.json
 quit
 SCRIPT
-xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open --size 800x450 --script "$out/session.txt" \
+xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open "$out/demo.json" --size 800x450 --script "$out/session.txt" \
     --frame-log "$out/frames.csv"
 for shot in open orbit walk plan placed dragged tiled draft present print-shot; do
     test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
@@ -69,6 +83,13 @@ done
 "$check" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/plan.png" "$out/placed.png" \
     "$out/dragged.png" "$out/tiled.png" "$out/draft.png"
 "$check" "$out/present.png" "$out/print-shot.png"
+# The tile actions (uitile): wall 1's elevation drawn, its new pattern, grout and start saved.
+"$check" "$out/tiled.png" "$out/elevation.png"
+grep -q '"herringbone"' "$out/saved-tiles.json" || { echo "FAIL: herringbone not saved"; exit 1; }
+grep -q '"origin":.\[300, 200\]' "$out/saved-tiles.json" || {
+    echo "FAIL: the tile start was not saved"
+    exit 1
+}
 # The plan views against their goldens; the frame-time overlay (top right) is masked.
 for shot in placed dragged; do
     "$check" --golden "$golden/ui-$shot.png" --mask 560,0,800,120 "$out/$shot.png"

@@ -2,6 +2,7 @@
 #include "catalog_browser.h"
 
 #include "gui.h"
+#include "thumbnails.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +13,7 @@ void ui_catalog_browser_open(ui_catalog_browser *b)
 {
     memset(b, 0, sizeof *b);
     b->selected = -1;
+    b->drag_hit = -1;
     b->dirty = 1;
     char src[1024];
     const char *env = getenv("TESSERA_ASSETS");
@@ -101,30 +103,39 @@ static void details(ui_catalog_browser *b)
         ui_gui_text_wrapped(p->short_text);
 }
 
-void ui_catalog_browser_draw(ui_catalog_browser *b, float x, float y)
+void ui_catalog_browser_draw(ui_catalog_browser *b, float x, float y, float width, float height,
+                             float list_height, int place)
 {
     if (!category_items[0]) {
         category_items[0] = "all categories";
         for (int c = 1; c < CAT_CATEGORY_COUNT; c++)
             category_items[c] = cat_category_name((cat_category)c);
     }
-    if (ui_gui_begin("Catalog", x, y, 340.0f, 460.0f)) {
+    b->drag_hit = -1;
+    if (ui_gui_begin_placed("Catalog", x, y, width, height, place, -1)) {
         ui_gui_input_text("search", b->text, sizeof b->text);
         ui_gui_combo("category", &b->category, category_items, CAT_CATEGORY_COUNT);
         ui_gui_input_float("max width mm", &b->max_width_mm, 50.0f);
         ui_catalog_browser_refresh(b);
         if (b->error[0])
             ui_gui_text_wrapped(b->error);
-        ui_gui_text("%d products", b->hit_count);
-        if (ui_gui_begin_child("hits", 0.0f, 180.0f)) {
+        ui_gui_text("%d products (drag one into a view)", b->hit_count);
+        if (ui_gui_begin_child("hits", 0.0f, list_height)) {
             for (int i = 0; i < b->hit_count; i++) {
                 const cat_search_hit *h = &b->hits[i];
-                char label[320];
-                snprintf(label, sizeof label, "%s  %.0fx%.0f  %lld.%02lld %s##hit%d", h->name,
+                char id[32], text[320];
+                snprintf(id, sizeof id, "##hit%d", i);
+                snprintf(text, sizeof text, "%s\n%.0f x %.0f mm  %lld.%02lld %s", h->name,
                          h->width_mm, h->depth_mm, h->price_cents / 100, h->price_cents % 100,
-                         h->currency, i);
-                if (ui_gui_list_row(label, i == b->selected))
+                         h->currency);
+                /* A row's thumbnail is asked for only while the row is in view. */
+                unsigned tex = ui_thumbnails_get(b->thumbs, h->product_id, 0);
+                if (ui_gui_image_row(id, text, i == b->selected, tex, 40.0f))
                     ui_catalog_browser_select(b, i);
+                if (!tex && ui_gui_item_visible())
+                    ui_thumbnails_get(b->thumbs, h->product_id, 1);
+                if (ui_gui_item_dragged())
+                    b->drag_hit = i; /* pressed here and moved: a drag into a view */
             }
         }
         ui_gui_end_child();

@@ -17,10 +17,12 @@ typedef struct ui_catalog_browser {
     int dirty; /* the query changed: search again */
     cat_search_hit hits[UI_BROWSER_MAX_HITS];
     int hit_count;
-    double search_ms;    /* the last search's time, shown beside the hits */
-    int selected;        /* index into hits, -1 = none */
-    cat_product product; /* details of the selected hit */
-    int variant;         /* selected variant of product */
+    double search_ms;             /* the last search's time, shown beside the hits */
+    int selected;                 /* index into hits, -1 = none */
+    cat_product product;          /* details of the selected hit */
+    int variant;                  /* selected variant of product */
+    struct ui_thumbnails *thumbs; /* thumbnails of the hits (NULL: none shown) */
+    int drag_hit; /* a hit being dragged out of the list this frame (drag and drop), -1 = none */
 } ui_catalog_browser;
 
 /* Opens the catalog (--db semantics of `tessera catalog`: $TESSERA_CATALOG or the user's
@@ -31,7 +33,11 @@ void ui_catalog_browser_close(ui_catalog_browser *b);
 int ui_catalog_browser_refresh(ui_catalog_browser *b);
 /* Selects hit i and loads its details. */
 int ui_catalog_browser_select(ui_catalog_browser *b, int i);
-/* Draws the panel. */
-void ui_catalog_browser_draw(ui_catalog_browser *b, float x, float y);
+/* Draws the panel; a hit pressed and dragged sets b->drag_hit (the planner's drag_drop.c
+ * takes it from there). */
+/* At (x, y, width x height) the first time, or now when place is 1 (panel_layout.h); the
+ * list of hits is list_height pixels tall. */
+void ui_catalog_browser_draw(ui_catalog_browser *b, float x, float y, float width, float height,
+                             float list_height, int place);
 
 #endif

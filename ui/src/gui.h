@@ -25,6 +25,11 @@ int ui_gui_wants_keyboard(void);
 
 /* A panel at a fixed place the first time it is shown. Always pair with ui_gui_end. */
 int ui_gui_begin(const char *title, float x, float y, float width, float height);
+/* uiprops: a panel placed by the layout (panel_layout.h): place = 1 moves and sizes it to the
+ * rectangle now (the window's size changed), else only the first time; collapsed 0/1 sets its
+ * collapsed state with it, -1 leaves it to the user. */
+int ui_gui_begin_placed(const char *title, float x, float y, float width, float height, int place,
+                        int collapsed);
 void ui_gui_end(void);
 /* A borderless, input-transparent overlay (frame time, product card). */
 int ui_gui_begin_overlay(const char *id, float x, float y, float alpha);
@@ -59,6 +64,22 @@ int ui_gui_slider_commit(const char *label, float *value, float lo, float hi);
 int ui_gui_input_double_enter(const char *label, double *value);
 void ui_gui_plot_lines(const char *label, const float *values, int count, float lo, float hi,
                        float width, float height);
+
+/* Images, drag sources and the pointer (uicat: thumbnails and drag and drop, issue 8 item 3). */
+/* An image of a GL texture (render/ui_texture.h) at width x height pixels. */
+void ui_gui_image(unsigned texture, float width, float height);
+/* 1 when the last widget was pressed and the pointer has moved past the drag threshold. */
+int ui_gui_item_dragged(void);
+/* 1 when the last widget is inside its window's visible area (lazy thumbnails). */
+int ui_gui_item_visible(void);
+/* 1 when the pointer is over any panel (a drop there is no drop). */
+int ui_gui_pointer_over_panel(void);
+/* A label with an optional image (texture 0: none) at (x, y) above every panel: the ghost that
+ * follows the pointer while a product is dragged. */
+void ui_gui_draw_ghost(float x, float y, unsigned texture, float image_size, const char *text);
+/* A selectable row (id "##...") of the image's height: the image (texture 0: an empty frame),
+ * then text; returns 1 when clicked. */
+int ui_gui_image_row(const char *id, const char *text, int selected, unsigned texture, float size);
 
 #ifdef __cplusplus
 }

@@ -3,6 +3,7 @@
 
 #include <GLFW/glfw3.h>
 #include <cstdarg>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 
@@ -82,6 +83,19 @@ extern "C" int ui_gui_begin(const char *title, float x, float y, float width, fl
         return 0;
     ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_FirstUseEver);
+    return ImGui::Begin(title);
+}
+
+extern "C" int ui_gui_begin_placed(const char *title, float x, float y, float width, float height,
+                                   int place, int collapsed)
+{
+    if (!g_ready)
+        return 0;
+    ImGuiCond cond = place ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+    ImGui::SetNextWindowPos(ImVec2(x, y), cond);
+    ImGui::SetNextWindowSize(ImVec2(width, height), cond);
+    if (collapsed >= 0)
+        ImGui::SetNextWindowCollapsed(collapsed != 0, cond);
     return ImGui::Begin(title);
 }
 
@@ -249,4 +263,69 @@ extern "C" int ui_gui_slider_commit(const char *label, float *value, float lo, f
         return 0;
     ImGui::SliderFloat(label, value, lo, hi);
     return ImGui::IsItemDeactivatedAfterEdit();
+}
+
+static ImTextureID texture_id(unsigned texture)
+{
+    return (ImTextureID)(intptr_t)texture;
+}
+
+extern "C" void ui_gui_image(unsigned texture, float width, float height)
+{
+    if (g_ready && texture)
+        ImGui::Image(texture_id(texture), ImVec2(width, height));
+}
+
+extern "C" int ui_gui_item_dragged(void)
+{
+    return g_ready && ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Left);
+}
+
+extern "C" int ui_gui_item_visible(void)
+{
+    return g_ready && ImGui::IsItemVisible();
+}
+
+extern "C" int ui_gui_pointer_over_panel(void)
+{
+    return g_ready && ImGui::IsWindowHovered(ImGuiHoveredFlags_AnyWindow |
+                                             ImGuiHoveredFlags_AllowWhenBlockedByActiveItem);
+}
+
+extern "C" void ui_gui_draw_ghost(float x, float y, unsigned texture, float image_size,
+                                  const char *text)
+{
+    if (!g_ready)
+        return;
+    ImDrawList *d = ImGui::GetForegroundDrawList();
+    float img = texture ? image_size : 0.0f;
+    ImVec2 ts = ImGui::CalcTextSize(text);
+    ImVec2 a(x + 14.0f, y + 14.0f);
+    ImVec2 b(a.x + img + ts.x + 16.0f, a.y + (img > ts.y ? img : ts.y) + 8.0f);
+    d->AddRectFilled(a, b, IM_COL32(30, 30, 36, 200), 4.0f);
+    d->AddRect(a, b, IM_COL32(240, 200, 80, 255), 4.0f);
+    if (texture)
+        d->AddImage(texture_id(texture), ImVec2(a.x + 4.0f, a.y + 4.0f),
+                    ImVec2(a.x + 4.0f + img, a.y + 4.0f + img));
+    d->AddText(ImVec2(a.x + img + 10.0f, a.y + 4.0f), IM_COL32(255, 255, 255, 255), text);
+    d->AddCircleFilled(ImVec2(x, y), 4.0f, IM_COL32(240, 200, 80, 255));
+}
+
+extern "C" int ui_gui_image_row(const char *id, const char *text, int selected, unsigned texture,
+                                float size)
+{
+    if (!g_ready)
+        return 0;
+    ImVec2 start = ImGui::GetCursorScreenPos();
+    bool clicked = ImGui::Selectable(id, selected != 0, 0, ImVec2(0.0f, size));
+    // The image at the row's left end, the text beside it, vertically centred.
+    ImDrawList *d = ImGui::GetWindowDrawList();
+    if (texture)
+        d->AddImage(texture_id(texture), start, ImVec2(start.x + size, start.y + size));
+    else
+        d->AddRect(start, ImVec2(start.x + size, start.y + size), IM_COL32(120, 120, 120, 160));
+    float th = ImGui::CalcTextSize(text).y;
+    d->AddText(ImVec2(start.x + size + 8.0f, start.y + (size - th) * 0.5f),
+               ImGui::GetColorU32(ImGuiCol_Text), text);
+    return clicked;
 }

@@ -166,6 +166,8 @@ static int frame(planner *p)
     ui_gui_new_frame();
     if (p->view == UI_VIEW_PLAN && !p->presenting)
         planner_plan_frame(p, fw, fh);
+    if (p->view == UI_VIEW_ELEVATION && !p->presenting)
+        planner_elevation_frame(p, fw, fh);
     if (p->presenting)
         planner_draw_presentation(p, fw, fh);
     else
@@ -274,6 +276,7 @@ int ui_run(const ui_options *o)
         rc = p.exit_code;
 done:
     planner_doc_close(&p);
+    planner_tiles_free(&p);
     ui_catalog_browser_close(&p.browser);
     ui_gui_shutdown();
     if (p.scene_ready)

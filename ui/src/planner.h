@@ -9,9 +9,14 @@
 #include "app/quality.h"
 #include "app/scene_build.h"
 #include "catalog_browser.h"
+#include "drag_drop.h"
+#include "fixture_drag.h"
 #include "plan_draw.h"
+#include "panel_layout.h"
+#include "quantities_panel.h"
 #include "render/render.h"
 #include "script.h"
+#include "thumbnails.h"
 #include "ui/navigation.h"
 #include "ui/plan_view.h"
 #include "ui/ui.h"
@@ -21,7 +26,7 @@
 struct GLFWwindow;
 
 enum { UI_MODE_ORBIT = 0, UI_MODE_WALK = 1 };
-enum { UI_VIEW_3D = 0, UI_VIEW_PLAN = 1 };
+enum { UI_VIEW_3D = 0, UI_VIEW_PLAN = 1, UI_VIEW_ELEVATION = 2 /* tiles.h */ };
 struct app_history;
 #define UI_FRAME_HISTORY 120
 
@@ -93,7 +98,26 @@ typedef struct planner {
 
     double mouse_x, mouse_y;
     int dragging;
+
+    /* Drag and drop, thumbnails, quantities, the file panel (uicat: issue 8 items 3-5). */
+    ui_drag_drop drop;
+    ui_thumbnails thumbs;
+    ui_quantities_view quantities;
+    char file_path[1024]; /* the file panel's path field */
+    int file_pending;     /* UI_FILE_*: waits for the unsaved-changes answer */
+
+    /* The tile panel and the elevation view (uitile, tiles.h), made on first use. */
+    struct ui_tiles *tiles;
+
+    /* uiprops: this frame's panel rectangles from the window's size (panel_layout.h), and
+     * where each panel was last placed (a panel is moved back when its rectangle changes). */
+    ui_layout layout, placed;
+
+    /* A placed fixture dragged in the 3D view (fixture_drag.c). */
+    ui_fixture_drag fixture_drag;
 } planner;
+
+enum { UI_FILE_NONE = 0, UI_FILE_NEW, UI_FILE_OPEN };
 
 extern const char *const ui_quality_names[4];
 
@@ -142,6 +166,38 @@ int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm);
 void planner_plan_scroll(planner *p, double steps);
 /* Tiles a surface ("wall:0", "floor", ...) with the catalog browser's selected tile. */
 int planner_tile_selected(planner *p, const char *surface);
+
+/* drag_drop.c: places the browser's selected product where a drop at window pixel (sx, sy)
+ * over view (UI_VIEW_*) lands: the plan point, or the floor point under the 3D view's ray. */
+int planner_drop_selected(planner *p, int view, double sx, double sy);
+/* Shows the dragged product's ghost at (x, y) (the drag under way). */
+void planner_drag_ghost(planner *p, int hit, double x, double y);
+/* The frame's drag: starts it from the browser, moves the ghost, drops on release. */
+void planner_drag_drop_frame(planner *p);
+/* planner_doc.c: new (the empty room template), open (a bad file leaves the document as it
+ * is and the status names the file and the problem). */
+int planner_file_new(planner *p);
+int planner_file_open(planner *p, const char *path);
+
+/* fixture_drag.c: a placed fixture dragged in the 3D view, moved live in the renderer and
+ * committed as one move edit on release. begin grabs project object `object` at the world
+ * point grab (mm); to puts its plan centre at (x, y); end commits (1) or puts it back (0).
+ * press starts a drag when window pixel (sx, sy) shows a fixture (1) and pointer follows the
+ * pointer on the grabbed height. 0 = ok for begin and end. */
+int planner_fixture_drag_begin(planner *p, int object, const double grab[3]);
+void planner_fixture_drag_to(planner *p, double x_mm, double y_mm);
+int planner_fixture_drag_end(planner *p, int commit);
+int planner_fixture_drag_press(planner *p, double sx, double sy);
+void planner_fixture_drag_pointer(planner *p, double sx, double sy);
+/* Drops the drag without touching the scene (it is being rebuilt or released). */
+void planner_fixture_drag_forget(planner *p);
+
+/* tile_panel.c, elevation_draw.c, tile_actions.c (uitile, tiles.h): the tile panel, the
+ * elevation view's frame, the tile script actions, and freeing their state. */
+void planner_tile_panel(planner *p, int width, int height);
+void planner_elevation_frame(planner *p, int width, int height);
+int planner_tile_action(planner *p, const ui_action *a);
+void planner_tiles_free(planner *p);
 
 /* planner.c */
 /* The renderer's view of what the window shows, at a size, with the quality's supersampling. */

@@ -47,6 +47,7 @@ static void refresh_findings(planner *p)
 int planner_rebuild_scene(planner *p)
 {
     char err[1024];
+    planner_fixture_drag_forget(p); /* its renderer objects go with the scene */
     if (p->scene_ready)
         app_scene_release(p->ctx, &p->scene);
     p->scene_ready = 0;
@@ -62,6 +63,7 @@ int planner_rebuild_scene(planner *p)
 void planner_doc_changed(planner *p)
 {
     p->dirty = 1;
+    p->quantities.stale = 1; /* recomputed when the panel is next drawn */
     refresh_findings(p);
     planner_rebuild_scene(p);
 }
@@ -75,11 +77,20 @@ int planner_doc_open(planner *p)
         return 1;
     }
     refresh_findings(p);
+    p->quantities.stale = 1;
     return 0;
 }
 
 void planner_doc_close(planner *p)
 {
+    planner_fixture_drag_end(p, 0);
+    ui_quantities_free(&p->quantities);
+    if (p->thumbs.rendered > 0)
+        fprintf(stderr, "tessera: %d catalog thumbnails rendered, %.1f ms each\n",
+                p->thumbs.rendered, p->thumbs.total_ms / p->thumbs.rendered);
+    if (p->thumbs.error[0])
+        fprintf(stderr, "tessera: thumbnails: %s\n", p->thumbs.error);
+    ui_thumbnails_free(&p->thumbs); /* the window's GL context is still current */
     app_history_destroy(p->history);
     p->history = NULL;
     free(p->fixtures);
@@ -135,8 +146,11 @@ int planner_save(planner *p, const char *path)
         planner_status(p, "%s", err);
         return 1;
     }
-    if (target != p->project.path)
+    if (target != p->project.path) {
         snprintf(p->project.path, sizeof p->project.path, "%s", target);
+        if (target != p->file_path) /* the file panel shows where the document now lives */
+            snprintf(p->file_path, sizeof p->file_path, "%s", target);
+    }
     char a[sizeof p->project.path + 16];
     autosave_path(p, a, sizeof a);
     unlink(a); /* the saved file is newer than any autosave */
@@ -188,5 +202,72 @@ int planner_recover(planner *p, int accept)
     app_history_clear(p->history);
     planner_doc_changed(p);
     planner_status(p, "recovered the autosaved changes (not saved yet)");
+    return 0;
+}
+
+/* Makes project (read by the caller) the document: the old one is freed, the history and the
+ * selection forgotten, the views framed on the new room. */
+static void adopt(planner *p, app_project *project)
+{
+    app_project_free_all(&p->project);
+    p->project = *project;
+    app_history_clear(p->history);
+    p->plan_o.selected_object = p->plan_o.selected_wall = -1;
+    p->plan_o.hover_corner = p->plan_o.drag_corner = p->plan_o.drag_object = -1;
+    p->plan_fitted = 0;
+    p->drop.active = 0;
+    app_point2 box[4];
+    app_room_plan fallback;
+    const app_room_plan *plan = planner_plan(p, box, &fallback);
+    p->orbit = ui_orbit_framing(plan);
+    p->walk = ui_walk_start(plan);
+    p->camera = -1;
+    p->flight.active = 0;
+    if (p->project.camera_count > 0)
+        planner_jump_to_camera(p, 0);
+    planner_doc_changed(p);
+    p->dirty = 0;
+    p->objects_at_open = p->project.object_count;
+}
+
+int planner_file_open(planner *p, const char *path)
+{
+    if (!path || !*path) {
+        planner_status(p, "open: type the path of a project file first");
+        return 1;
+    }
+    app_project next;
+    char err[1024];
+    if (app_project_read(path, &next, err, sizeof err) != APP_OK) {
+        /* app's messages start with the file name; make sure this one does. */
+        if (strncmp(err, path, strlen(path)))
+            planner_status(p, "cannot open %s: %s (the document is unchanged)", path, err);
+        else
+            planner_status(p, "cannot open %s (the document is unchanged)", err);
+        return 1;
+    }
+    adopt(p, &next);
+    snprintf(p->file_path, sizeof p->file_path, "%s", path);
+    planner_status(p, "opened %s", path);
+    return 0;
+}
+
+int planner_file_new(planner *p)
+{
+    /* The empty room: the designed bathroom's walls, openings and tiles, no fixtures. */
+    char path[1100], err[1024];
+    const char *env = getenv("TESSERA_ASSETS");
+    snprintf(path, sizeof path, "%s/projects/designed-bathroom-base.json",
+             env && *env ? env : TESSERA_SOURCE_DIR "/assets");
+    app_project next;
+    if (app_project_read(path, &next, err, sizeof err) != APP_OK) {
+        planner_status(p, "new: the empty room template cannot be read: %s", err);
+        return 1;
+    }
+    next.path[0] = 0; /* untitled: "save as" gives it a file */
+    snprintf(next.name, sizeof next.name, "New bathroom");
+    adopt(p, &next);
+    p->file_path[0] = 0;
+    planner_status(p, "new project (an empty room; save as to keep it)");
     return 0;
 }

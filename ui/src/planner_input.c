@@ -84,13 +84,21 @@ void planner_handle_input(planner *p, double dt)
     double x, y;
     glfwGetCursorPos(w, &x, &y);
     int down = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    if (p->view == UI_VIEW_PLAN)
-        return; /* planner_plan.c reads the pointer itself */
-    if (down && !p->dragging && !ui_gui_wants_mouse())
+    if (p->view != UI_VIEW_3D)
+        return; /* the plan and the elevation read the pointer themselves */
+    if (down && !p->dragging && !ui_gui_wants_mouse()) {
         p->dragging = 1;
-    else if (!down)
+        /* A press on a fixture (orbit mode) drags it; elsewhere it turns the view. */
+        if (p->mode == UI_MODE_ORBIT && !p->presenting)
+            planner_fixture_drag_press(p, x, y);
+    } else if (!down) {
+        if (p->fixture_drag.active && p->fixture_drag.by_pointer)
+            planner_fixture_drag_end(p, 1);
         p->dragging = 0;
-    if (p->dragging) {
+    }
+    if (p->fixture_drag.active && p->fixture_drag.by_pointer)
+        planner_fixture_drag_pointer(p, x, y);
+    else if (p->dragging) {
         double dx = x - p->mouse_x, dy = y - p->mouse_y;
         if (p->mode == UI_MODE_ORBIT)
             ui_orbit_drag(&p->orbit, dx, dy);

@@ -1,9 +1,12 @@
 /* The planner's panels: the frame-time overlay (issue 8 item 6: speed for accuracy, live), the
- * view panel (quality, navigation mode, stored viewpoints) and the project summary. */
+ * view panel (quality, navigation mode, stored viewpoints), the project summary and the
+ * selection's properties. Where they go comes from the window's size (panel_layout.h). */
 #include "planner.h"
 
 #include "app/commands.h"
 #include "gui.h"
+#include "probe_props.h"
+#include "render/ui_texture.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -18,9 +21,19 @@ static float mean(const float *v, long count)
     return n ? (float)(s / n) : 0.0f;
 }
 
-static void frame_overlay(planner *p, int width)
+/* Opens a panel at its layout rectangle `r`: moved there when the rectangle changed since the
+ * last frame (a resize, a selection that appeared), else where the user left it; collapsed
+ * (0/1) is applied with the move, -1 leaves it to the user. Pair with ui_gui_end. */
+static int begin_panel(const char *title, ui_rect r, ui_rect *last, int collapsed)
 {
-    if (ui_gui_begin_overlay("##frame-time", (float)width - 230.0f, 10.0f, 0.55f)) {
+    int place = memcmp(&r, last, sizeof r) != 0;
+    *last = r;
+    return ui_gui_begin_placed(title, r.x, r.y, r.w, r.h, place, place ? collapsed : -1);
+}
+
+static void frame_overlay(planner *p)
+{
+    if (ui_gui_begin_overlay("##frame-time", p->layout.overlay.x, p->layout.overlay.y, 0.55f)) {
         float ms = mean(p->frame_ms, p->frame_count), rms = mean(p->render_ms, p->frame_count);
         ui_gui_text("%.1f ms  %.0f fps", ms, ms > 0 ? 1000.0f / ms : 0.0f);
         ui_gui_text("3D view %.1f ms at %.0f %%", rms, p->render_scale * 100.0f);
@@ -33,12 +46,12 @@ static void frame_overlay(planner *p, int width)
 
 static void view_panel(planner *p)
 {
-    if (ui_gui_begin("View", 10.0f, 10.0f, 260.0f, 250.0f)) {
+    if (begin_panel("View", p->layout.view, &p->placed.view, -1)) {
         int q = p->quality;
         if (ui_gui_combo("quality", &q, ui_quality_names, 4))
             planner_set_quality(p, q);
-        static const char *const views[2] = {"3D", "plan"};
-        ui_gui_combo("view (V)", &p->view, views, 2);
+        static const char *const views[3] = {"3D", "plan", "elevation"}; /* UI_VIEW_* */
+        ui_gui_combo("view (V)", &p->view, views, 3);
         static const char *const modes[2] = {"orbit", "walk"};
         ui_gui_combo("navigate", &p->mode, modes, 2);
         ui_gui_text("%s", p->mode == UI_MODE_ORBIT ? "drag: orbit, wheel: zoom"
@@ -71,34 +84,66 @@ static void view_panel(planner *p)
     ui_gui_end();
 }
 
-static void project_panel(planner *p, int height)
+/* The project and its file: new, open, save, save as (issue 8 item 5). Open and save as take
+ * the path typed into the field; new and open ask first when there are unsaved changes. */
+static void file_request(planner *p, int what)
 {
-    if (ui_gui_begin("Project", 10.0f, (float)height - 130.0f, 260.0f, 120.0f)) {
-        ui_gui_text("%s", p->project.name);
+    if (p->dirty) {
+        p->file_pending = what; /* prompts() asks, then runs it */
+        return;
+    }
+    if (what == UI_FILE_NEW)
+        planner_file_new(p);
+    else
+        planner_file_open(p, p->file_path);
+}
+
+static void project_panel(planner *p)
+{
+    if (begin_panel("Project", p->layout.project, &p->placed.project,
+                    p->layout.project_collapsed)) {
+        ui_gui_text("%s%s", p->project.name, p->dirty ? " *" : "");
+        ui_gui_text("%s", p->project.path[0] ? p->project.path : "(not saved yet)");
         ui_gui_text("%.0f x %.0f x %.0f mm", p->project.room.width_mm, p->project.room.depth_mm,
                     p->project.room.height_mm);
         ui_gui_text("%d objects, %d lights", p->project.object_count, p->project.light_count);
+        if (ui_gui_button("New"))
+            file_request(p, UI_FILE_NEW);
+        ui_gui_same_line();
+        if (ui_gui_button("Open"))
+            file_request(p, UI_FILE_OPEN);
+        ui_gui_same_line();
+        if (ui_gui_button("Save"))
+            planner_save(p, NULL);
+        ui_gui_same_line();
+        if (ui_gui_button("Save as"))
+            planner_save(p, p->file_path);
+        ui_gui_input_text("file", p->file_path, sizeof p->file_path);
+        if (!strncmp(p->status, "cannot open", 11) || !strncmp(p->status, "open:", 5) ||
+            !strncmp(p->status, "save", 4) || strstr(p->status, ": cannot "))
+            ui_gui_text_wrapped(p->status);
     }
     ui_gui_end();
 }
 
-static void edit_panel(planner *p, int width, int height)
+static void edit_panel(planner *p)
 {
-    if (ui_gui_begin("Edit", (float)width / 2 - 200.0f, (float)height - 150.0f, 400.0f, 140.0f)) {
+    if (begin_panel("Edit", p->layout.edit, &p->placed.edit, -1)) {
+        int narrow = p->layout.edit_narrow; /* one button a row */
         char label[160];
         const char *u = app_history_undo_label(p->history), *r = app_history_redo_label(p->history);
         snprintf(label, sizeof label, "Undo %s##undo", u && *u ? u : "");
         if (ui_gui_button(label))
             planner_undo(p, 0);
-        ui_gui_same_line();
+        if (!narrow)
+            ui_gui_same_line();
         snprintf(label, sizeof label, "Redo %s##redo", r && *r ? r : "");
         if (ui_gui_button(label))
             planner_undo(p, 1);
         ui_gui_same_line();
         if (ui_gui_button(p->dirty ? "Save *" : "Save"))
             planner_save(p, NULL);
-        if (p->browser.selected >= 0) {
-            ui_gui_same_line();
+        if (p->browser.selected >= 0) { /* on a row of its own: the undo label is long */
             if (ui_gui_button("Place selected product")) {
                 /* At the room's centre; the edit snaps it to the nearest wall. */
                 double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
@@ -121,28 +166,104 @@ static void edit_panel(planner *p, int width, int height)
     ui_gui_end();
 }
 
+/* The material's reflection (RENDERING.md sections 3-6) and its probe policy (section 8):
+ * intensity, glossiness and blend commit one `reflect` line when the slider is let go or the
+ * combo changes; each probe field one `probe` line (probe_props.h). Both edit the material,
+ * so every object sharing it follows (docs/editing.md); the scene is rebuilt from the
+ * document after each (planner_doc_changed), so the 3D view shows the change at once. */
+static void material_fields(planner *p, int mi)
+{
+    const app_material *m = &p->project.materials[mi];
+    char line[256];
+    /* The sliders' values while dragging; taken from the material again whenever it changes
+     * underneath (another material, an undo). */
+    static float kr, g, seen_kr = -1, seen_g = -1;
+    static int blend, seen_blend = -1, seen_mat = -1;
+    if (seen_mat != mi || seen_kr != m->reflectivity || seen_g != m->glossiness ||
+        seen_blend != m->blend) {
+        kr = seen_kr = m->reflectivity;
+        g = seen_g = m->glossiness;
+        blend = seen_blend = m->blend;
+        seen_mat = mi;
+    }
+    static const char *const blends[3] = {"mix", "add", "fresnel"};
+    ui_gui_separator();
+    ui_gui_text("material %s", m->name);
+    int commit = ui_gui_slider_commit("reflection k_r", &kr, 0.0f, 1.0f);
+    commit |= ui_gui_slider_commit("glossiness g", &g, 0.0f, 1.0f);
+    commit |= ui_gui_combo("blend", &blend, blends, 3);
+    if (commit) {
+        snprintf(line, sizeof line, "reflect \"%s\" %.3f gloss %.3f blend %s", m->name, kr, g,
+                 blends[blend]);
+        planner_edit(p, line);
+        return; /* m may have moved */
+    }
+    ui_gui_text("reflection probe");
+    int update = m->probe_update >= 0 && m->probe_update <= APP_PROBE_STATIC ? m->probe_update : 0;
+    if (ui_gui_combo("update", &update, ui_probe_update_labels, 6) && update != m->probe_update) {
+        if (!ui_probe_line(line, sizeof line, m->name, UI_PROBE_UPDATE, update))
+            planner_edit(p, line);
+        return;
+    }
+    if (update == APP_PROBE_EVERY_FRAME) {
+        static double every;
+        static int seen_every = -1, seen_every_mat = -1;
+        if (seen_every != m->probe_every || seen_every_mat != mi) {
+            seen_every = m->probe_every;
+            seen_every_mat = mi;
+            every = m->probe_every > 1 ? m->probe_every : 1;
+        }
+        if (ui_gui_input_double_enter("every N frames", &every)) {
+            seen_every = -1; /* shows the material's value again, whatever happens */
+            if (every >= 1 && every <= 1000000 && every == (int)every) {
+                if (!ui_probe_line(line, sizeof line, m->name, UI_PROBE_EVERY, (int)every))
+                    planner_edit(p, line);
+            } else {
+                planner_status(p, "every N frames: a whole number from 1 to 1000000");
+            }
+            return;
+        }
+    }
+    const char *items[6];
+    char other[16];
+    int res_item, n = ui_probe_resolution_items(m->probe_resolution, items, other, &res_item);
+    if (ui_gui_combo("resolution", &res_item, items, n)) {
+        int res = ui_probe_resolution_of(res_item, m->probe_resolution);
+        if (res != m->probe_resolution &&
+            !ui_probe_line(line, sizeof line, m->name, UI_PROBE_RESOLUTION, res))
+            planner_edit(p, line);
+        return;
+    }
+    int corr = m->correction >= 0 && m->correction <= APP_CORRECTION_DEPTH ? m->correction : 0;
+    if (ui_gui_combo("correction", &corr, ui_probe_correction_labels, 5) && corr != m->correction &&
+        !ui_probe_line(line, sizeof line, m->name, UI_PROBE_CORRECTION, corr))
+        planner_edit(p, line);
+}
+
 /* The selected fixture's card and properties: what it is, where it stands, its finish, and
- * for power users its material's reflection (RENDERING.md sections 3-6). Each field commits
- * one edit line when the user presses Enter or lets go of a slider. */
-static void selection_panel(planner *p, int width)
+ * for power users its material's reflection and probe policy. Each field commits one edit
+ * line when the user presses Enter, lets go of a slider or picks from a combo. */
+static void selection_panel(planner *p)
 {
     int i = p->plan_o.selected_object;
     if (i < 0 || i >= p->project.object_count)
         return;
     const app_object *o = &p->project.objects[i];
-    (void)width;
-    if (ui_gui_begin("Selection", 10.0f, 270.0f, 260.0f, 230.0f)) {
+    if (begin_panel("Selection", p->layout.selection, &p->placed.selection, -1)) {
         char line[256];
         ui_gui_text("%s", o->name);
         if (o->has_product)
             ui_gui_text("%s %s %s", o->product.manufacturer, o->product.article,
                         o->product.variant);
-        static double pos[3], rot;
+        /* The fields hold what the user types until the document's own values change
+         * (another selection, a drag, an undo): then they show the document again. */
+        static double pos[3], rot, seen[4];
         static int shown = -1;
-        if (shown != i || !p->dirty) {
+        if (shown != i || seen[0] != o->position_mm[0] || seen[1] != o->position_mm[1] ||
+            seen[2] != o->position_mm[2] || seen[3] != o->rotation_deg[2]) {
             for (int k = 0; k < 3; k++)
-                pos[k] = o->position_mm[k];
-            rot = o->rotation_deg[2];
+                pos[k] = seen[k] = o->position_mm[k];
+            rot = seen[3] = o->rotation_deg[2];
             shown = i;
         }
         int moved = ui_gui_input_double_enter("x mm", &pos[0]);
@@ -153,16 +274,22 @@ static void selection_panel(planner *p, int width)
                      pos[2]);
             planner_edit(p, line);
             shown = -1;
+            ui_gui_end();
+            return;
         }
         if (ui_gui_input_double_enter("rotation deg", &rot)) {
             snprintf(line, sizeof line, "rotate \"%s\" %.1f", o->name, rot);
             planner_edit(p, line);
             shown = -1;
+            ui_gui_end();
+            return;
         }
         if (ui_gui_button("Rotate 90")) {
             snprintf(line, sizeof line, "rotate \"%s\" %.0f", o->name,
                      fmod(o->rotation_deg[2] + 90, 360));
             planner_edit(p, line);
+            ui_gui_end();
+            return;
         }
         ui_gui_same_line();
         if (ui_gui_button("Remove")) {
@@ -172,28 +299,8 @@ static void selection_panel(planner *p, int width)
             ui_gui_end();
             return;
         }
-        if (o->material >= 0 && o->material < p->project.material_count) {
-            const app_material *m = &p->project.materials[o->material];
-            static float kr, g;
-            static int blend, shown_mat = -1;
-            if (shown_mat != o->material) {
-                kr = m->reflectivity;
-                g = m->glossiness;
-                blend = m->blend;
-                shown_mat = o->material;
-            }
-            static const char *const blends[3] = {"mix", "add", "fresnel"};
-            ui_gui_text("material %s", m->name);
-            int commit = ui_gui_slider_commit("reflection k_r", &kr, 0.0f, 1.0f);
-            commit |= ui_gui_slider_commit("glossiness g", &g, 0.0f, 1.0f);
-            commit |= ui_gui_combo("blend", &blend, blends, 3);
-            if (commit) {
-                snprintf(line, sizeof line, "reflect \"%s\" %.3f gloss %.3f blend %s", m->name, kr,
-                         g, blends[blend]);
-                planner_edit(p, line);
-                shown_mat = -1;
-            }
-        }
+        if (o->material >= 0 && o->material < p->project.material_count)
+            material_fields(p, o->material);
     }
     ui_gui_end();
 }
@@ -217,6 +324,26 @@ static void prompts(planner *p, int width, int height)
         }
         ui_gui_end();
     }
+    if (p->file_pending) {
+        if (ui_gui_begin("Unsaved changes##file", x, y, 340.0f, 100.0f)) {
+            ui_gui_text("%s has unsaved changes.", p->project.name);
+            int what = p->file_pending;
+            if (ui_gui_button("Save first") && planner_save(p, NULL) == 0) {
+                p->file_pending = 0;
+                file_request(p, what);
+            }
+            ui_gui_same_line();
+            if (ui_gui_button("Discard them")) {
+                p->file_pending = 0;
+                p->dirty = 0;
+                file_request(p, what);
+            }
+            ui_gui_same_line();
+            if (ui_gui_button("Cancel"))
+                p->file_pending = 0;
+        }
+        ui_gui_end();
+    }
     if (p->close_requested) {
         if (ui_gui_begin("Unsaved changes", x, y, 340.0f, 100.0f)) {
             ui_gui_text("Save the changes to %s?", p->project.name);
@@ -235,11 +362,31 @@ static void prompts(planner *p, int width, int height)
 
 void planner_draw_panels(planner *p, int width, int height)
 {
+    int selected =
+        p->plan_o.selected_object >= 0 && p->plan_o.selected_object < p->project.object_count;
+    ui_layout_compute(width, height, selected, &p->layout);
     view_panel(p);
-    edit_panel(p, width, height);
-    selection_panel(p, width);
+    edit_panel(p);
+    selection_panel(p);
     prompts(p, width, height);
-    project_panel(p, height);
-    ui_catalog_browser_draw(&p->browser, (float)width - 350.0f, 130.0f);
-    frame_overlay(p, width);
+    project_panel(p);
+    planner_tile_panel(p, width, height); /* uitile: tile_panel.c */
+    if (!p->browser.thumbs && p->ctx) {   /* the browser was opened after the document */
+        ui_thumbnails_init(&p->thumbs, p->ctx);
+        p->browser.thumbs = &p->thumbs;
+    }
+    ui_rect c = p->layout.catalog, q = p->layout.quantities;
+    int place = memcmp(&c, &p->placed.catalog, sizeof c) != 0;
+    p->placed.catalog = c;
+    ui_catalog_browser_draw(&p->browser, c.x, c.y, c.w, c.h, p->layout.catalog_list_h, place);
+    place = memcmp(&q, &p->placed.quantities, sizeof q) != 0;
+    p->placed.quantities = q;
+    ui_quantities_draw(&p->quantities, &p->project, p->browser.db, q.x, q.y, q.w, q.h, place,
+                       p->layout.quantities_collapsed);
+    frame_overlay(p);
+    planner_drag_drop_frame(p);
+    /* One thumbnail a frame (30-100 ms on llvmpipe), rendered off screen; then the window is
+     * the target again. */
+    if (ui_thumbnails_update(&p->thumbs, p->browser.db, 1) > 0)
+        rd_bind_window(p->ctx, width, height);
 }

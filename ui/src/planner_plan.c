@@ -96,7 +96,10 @@ static void wall_panel(planner *p)
     int w = p->plan_o.selected_wall;
     if (w < 0 || w >= p->project.plan.corner_count)
         return;
-    if (ui_gui_begin("Wall", 10.0f, 410.0f, 260.0f, 90.0f)) {
+    /* In the Selection panel's place (panel_layout.h): a wall and a fixture are never both
+     * selected. */
+    const ui_rect *r = &p->layout.selection;
+    if (ui_gui_begin("Wall", r->x, r->y, r->w, 90.0f)) {
         ui_gui_text("wall %d: %.0f mm", w, ui_plan_wall_length(&p->project.plan, w));
         if (ui_gui_input_double_enter("length mm", &p->wall_length_edit) &&
             p->wall_length_edit > 0) {

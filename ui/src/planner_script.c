@@ -1,6 +1,7 @@
 /* Running a UI script (ui/src/script.h) one frame at a time, as input a user would give, and
  * the window screenshots it asks for. */
 #include "planner.h"
+#include "probe_props.h"
 
 #include "render/image_io.h"
 
@@ -48,6 +49,39 @@ static int fail(const ui_action *a, const char *why)
 }
 
 /* This frame's share of a spread action: the whole amount divided over its frames. */
+/* drag3d: the fixture grabbed at its centre, half way up, on the first frame; moved an even
+ * share of the rest of the way each frame; let go (one move edit) on the last. */
+static int drag3d(planner *p, const ui_action *a)
+{
+    ui_fixture_drag *d = &p->fixture_drag;
+    if (p->action_frame == 0) {
+        int object = -1;
+        for (int i = 0; i < p->project.object_count && object < 0; i++)
+            if (!strcmp(p->project.objects[i].name, a->text))
+                object = i;
+        const app_fixture *f = NULL;
+        for (int i = 0; object >= 0 && i < p->fixture_count; i++)
+            if (p->fixtures[i].object == object)
+                f = &p->fixtures[i];
+        if (!f) {
+            planner_status(p, "drag3d: no fixture \"%s\"", a->text);
+            return 1;
+        }
+        double grab[3] = {f->centre[0], f->centre[1], 0.5 * (f->z0 + f->z1)};
+        if (planner_fixture_drag_begin(p, object, grab))
+            return 1;
+    }
+    if (!d->active)
+        return 1;
+    p->dragging = 1; /* the frame log marks these frames "drag" */
+    double t = 1.0 / (a->frames - p->action_frame);
+    planner_fixture_drag_to(p, d->centre[0] + t * (a->a - d->centre[0]),
+                            d->centre[1] + t * (a->b - d->centre[1]));
+    if (p->action_frame + 1 < a->frames)
+        return 0;
+    return planner_fixture_drag_end(p, 1);
+}
+
 static int apply(planner *p, const ui_action *a)
 {
     double share = 1.0 / a->frames;
@@ -131,7 +165,9 @@ static int apply(planner *p, const ui_action *a)
     case UI_ACT_PRINT_SHOT:
         return planner_print_shot(p, a->text);
     case UI_ACT_VIEW:
-        p->view = strcmp(a->text, "plan") ? UI_VIEW_3D : UI_VIEW_PLAN;
+        p->view = !strcmp(a->text, "elevation") ? UI_VIEW_ELEVATION
+                  : strcmp(a->text, "plan")     ? UI_VIEW_3D
+                                                : UI_VIEW_PLAN;
         return 0;
     case UI_ACT_EDIT:
         return planner_edit(p, a->text) ? fail(a, p->status) : 0;
@@ -139,6 +175,8 @@ static int apply(planner *p, const ui_action *a)
         return planner_place_selected(p, a->a, a->b) ? fail(a, p->status) : 0;
     case UI_ACT_DRAG:
         return planner_drag_object(p, a->text, a->a, a->b) ? fail(a, p->status) : 0;
+    case UI_ACT_DRAG3D:
+        return drag3d(p, a) ? fail(a, p->status) : 0;
     case UI_ACT_UNDO:
     case UI_ACT_REDO:
         return planner_undo(p, a->kind == UI_ACT_REDO) ? fail(a, p->status) : 0;
@@ -164,6 +202,68 @@ static int apply(planner *p, const ui_action *a)
         return planner_tile_selected(p, a->text) ? fail(a, p->status) : 0;
     case UI_ACT_SHARE:
         return planner_share(p, a->text) ? fail(a, p->status) : 0;
+    case UI_ACT_DRAG_SELECTED:
+    case UI_ACT_DROP_SELECTED: {
+        int view = strcmp(a->text, "plan") ? UI_VIEW_3D : UI_VIEW_PLAN;
+        if (view != p->view)
+            return fail(a, "that view is not showing (use view first)");
+        if (p->browser.selected < 0)
+            return fail(a, "select a product in the catalog first");
+        if (p->action_frame + 1 < a->frames || a->kind == UI_ACT_DRAG_SELECTED) {
+            /* The ghost travels from where it is (else the catalog panel) to the point, as a
+             * hand drags. */
+            int w, h;
+            glfwGetFramebufferSize(p->window, &w, &h);
+            double x0 = p->drop.active ? p->drop.x : w - 200.0;
+            double y0 = p->drop.active ? p->drop.y : 250.0;
+            double t = 1.0 / (a->frames - p->action_frame); /* the rest of the way, evenly */
+            planner_drag_ghost(p, p->browser.selected, x0 + t * (a->a - x0), y0 + t * (a->b - y0));
+            return 0;
+        }
+        p->drop.active = 0;
+        return planner_drop_selected(p, view, a->a, a->b) ? fail(a, p->status) : 0;
+    }
+    case UI_ACT_EXPECT_TOTAL: {
+        if (p->quantities.stale || !p->quantities.valid)
+            ui_quantities_refresh(&p->quantities, &p->project, p->browser.db);
+        if (!p->quantities.valid)
+            return fail(a, p->quantities.error);
+        double total = p->quantities.bom.gross_cents / 100.0;
+        fprintf(stderr, "tessera: quantities total %.2f %s (net %.2f)\n", total,
+                p->quantities.bom.currency, p->quantities.bom.net_cents / 100.0);
+        if (total < a->a || total > a->b) {
+            char why[160];
+            snprintf(why, sizeof why, "the total is %.2f, expected %.2f to %.2f", total, a->a,
+                     a->b);
+            return fail(a, why);
+        }
+        return 0;
+    }
+    case UI_ACT_NEW:
+        p->dirty = 0; /* a script answers the unsaved-changes prompt with "discard" */
+        return planner_file_new(p) ? fail(a, p->status) : 0;
+    case UI_ACT_OPEN:
+        p->dirty = 0;
+        return planner_file_open(p, a->text) ? fail(a, p->status) : 0;
+    case UI_ACT_SAVE_AS:
+        return planner_save(p, a->text) ? fail(a, p->status) : 0;
+    case UI_ACT_EXPECT_PROBE: { /* uiprops: probe_props.h */
+        char why[512];
+        return ui_probe_expect(&p->project, a->text, why, sizeof why) ? fail(a, why) : 0;
+    }
+    case UI_ACT_ELEVATION_WALL: /* uitile: tiles.h */
+    case UI_ACT_TILE_SURFACE:
+    case UI_ACT_TILE_PATTERN:
+    case UI_ACT_TILE_GROUT:
+    case UI_ACT_TILE_START:
+    case UI_ACT_TILE_ROTATE:
+    case UI_ACT_TILE_BAND:
+    case UI_ACT_TILE_BORDER:
+    case UI_ACT_ELEVATION_CLICK:
+    case UI_ACT_EXPECT_PATTERN:
+    case UI_ACT_EXPECT_TILES:
+    case UI_ACT_TILE_PANEL:
+        return planner_tile_action(p, a) ? fail(a, p->status) : 0;
     case UI_ACT_QUIT:
         p->quit = 1;
         return 0;

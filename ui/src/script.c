@@ -35,6 +35,7 @@ static const struct {
     {"edit", UI_ACT_EDIT, 0, 2},
     {"place-selected", UI_ACT_PLACE_SELECTED, 2, 0},
     {"drag", UI_ACT_DRAG, -2, 1}, /* a name, then X Y */
+    {"drag3d", UI_ACT_DRAG3D, -2, 1},
     {"undo", UI_ACT_UNDO, 0, 0},
     {"redo", UI_ACT_REDO, 0, 0},
     {"save", UI_ACT_SAVE, 0, 1},
@@ -42,6 +43,25 @@ static const struct {
     {"expect-added", UI_ACT_EXPECT_ADDED, 1, 0},
     {"tile-selected", UI_ACT_TILE_SELECTED, 0, 1},
     {"share", UI_ACT_SHARE, 0, 1},
+    {"drop-selected", UI_ACT_DROP_SELECTED, -2, 1}, /* plan|3d, then SX SY */
+    {"drag-selected", UI_ACT_DRAG_SELECTED, -2, 1},
+    {"expect-total", UI_ACT_EXPECT_TOTAL, 2, 0},
+    {"new", UI_ACT_NEW, 0, 0},
+    {"open", UI_ACT_OPEN, 0, 1},
+    {"save-as", UI_ACT_SAVE_AS, 0, 1},
+    {"expect-probe", UI_ACT_EXPECT_PROBE, 0, 2}, /* MATERIAL UPDATE (probe_props.h) */
+    {"elevation-wall", UI_ACT_ELEVATION_WALL, 1, 0},
+    {"tile-surface", UI_ACT_TILE_SURFACE, 0, 1},
+    {"tile-pattern", UI_ACT_TILE_PATTERN, 0, 2},
+    {"tile-grout", UI_ACT_TILE_GROUT, 0, 2},
+    {"tile-start", UI_ACT_TILE_START, 0, 2},
+    {"tile-rotate", UI_ACT_TILE_ROTATE, 0, 2},
+    {"tile-band", UI_ACT_TILE_BAND, 0, 2},
+    {"tile-border", UI_ACT_TILE_BORDER, 0, 2},
+    {"elevation-click", UI_ACT_ELEVATION_CLICK, 2, 0},
+    {"expect-pattern", UI_ACT_EXPECT_PATTERN, 0, 2},
+    {"expect-tiles", UI_ACT_EXPECT_TILES, 0, 2},
+    {"tile-panel", UI_ACT_TILE_PANEL, 0, 1},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 
@@ -86,7 +106,8 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
             return 0;
         }
         strcpy(a->text, rest);
-        return 1;
+        return a->kind < UI_ACT_ELEVATION_WALL || a->kind > UI_ACT_EXPECT_TILES ||
+               ui_tile_action_check(a->kind, a->text, why, why_size);
     }
     if (verbs[v].text) {
         char *t = strtok_r(NULL, " \t\r\n", &save);
@@ -107,14 +128,22 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
     }
     if (verbs[v].numbers == -2 && (!parse_number(strtok_r(NULL, " \t\r\n", &save), &a->a) ||
                                    !parse_number(strtok_r(NULL, " \t\r\n", &save), &a->b))) {
-        snprintf(why, why_size, "%s needs a name and a plan point X Y (mm)", verb);
+        if (a->kind == UI_ACT_DRAG || a->kind == UI_ACT_DRAG3D)
+            snprintf(why, why_size, "%s needs a name and a plan point X Y (mm)", verb);
+        else
+            snprintf(why, why_size, "%s needs plan or 3d and a window pixel SX SY", verb);
         return 0;
     }
-    if (a->kind == UI_ACT_VIEW && strcmp(a->text, "3d") && strcmp(a->text, "plan")) {
-        snprintf(why, why_size, "view is 3d or plan, not \"%s\"", a->text);
+    if (a->kind == UI_ACT_VIEW && !strcmp(a->text, "elevation")) {
+        /* uitile: the elevation view */
+    } else if ((a->kind == UI_ACT_VIEW || a->kind == UI_ACT_DROP_SELECTED ||
+                a->kind == UI_ACT_DRAG_SELECTED) &&
+               strcmp(a->text, "3d") && strcmp(a->text, "plan")) {
+        snprintf(why, why_size, "%s is 3d or plan, not \"%s\"", verb, a->text);
         return 0;
     }
-    if ((a->kind == UI_ACT_PRESENT || a->kind == UI_ACT_TOUR || a->kind == UI_ACT_TURNTABLE) &&
+    if ((a->kind == UI_ACT_PRESENT || a->kind == UI_ACT_TOUR || a->kind == UI_ACT_TURNTABLE ||
+         a->kind == UI_ACT_TILE_PANEL) &&
         strcmp(a->text, "on") && strcmp(a->text, "off")) {
         snprintf(why, why_size, "%s is on or off, not \"%s\"", verb, a->text);
         return 0;
@@ -133,6 +162,10 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
         snprintf(why, why_size, "unexpected \"%s\" after %s", t, verb);
         return 0;
     }
+    if (a->kind == UI_ACT_EXPECT_TOTAL && !(a->a <= a->b)) {
+        snprintf(why, why_size, "expect-total needs MIN <= MAX");
+        return 0;
+    }
     if (a->kind == UI_ACT_WAIT && (a->a < 0 || a->a > 100000)) {
         snprintf(why, why_size, "wait needs a frame count from 0 to 100000");
         return 0;
@@ -140,6 +173,10 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
     if ((a->kind == UI_ACT_SELECT || a->kind == UI_ACT_EXPECT_HITS) &&
         (a->a < 1 || a->a > 200 || a->a != (int)a->a)) {
         snprintf(why, why_size, "%s needs a whole number from 1 to 200", verb);
+        return 0;
+    }
+    if (a->kind == UI_ACT_ELEVATION_WALL && (a->a < 0 || a->a > 255 || a->a != (int)a->a)) {
+        snprintf(why, why_size, "elevation-wall needs a wall number from 0 to 255");
         return 0;
     }
     if ((a->kind == UI_ACT_EXPECT_OBJECTS || a->kind == UI_ACT_EXPECT_ADDED) && a->a != (int)a->a) {

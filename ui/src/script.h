@@ -22,12 +22,39 @@
  *   place-selected X Y     place the catalog browser's selected product at a plan point
  *   drag NAME X Y          drag a fixture's footprint centre to a plan point and let go
  *                          (NAME "-": the selected fixture, e.g. the one just placed)
+ *   drag3d NAME X Y        the same as a hand drags it in the 3D view: moved live over the
+ *                          action's frames (frames N), one move edit on the last
  *   tile-selected SURFACE  tile a surface with the catalog browser's selected tile
  *   undo / redo            Ctrl+Z / Ctrl+Y
  *   save FILE              save as FILE (atomic); "save -" saves to the project's own file
  *   expect-objects N       fail unless the project has exactly N objects
  *   expect-added N         fail unless N objects were added since the window opened
  *   share DIR              the share export of the document as it is now
+ *   drop-selected plan|3d SX SY  drag the browser's selected product to window pixel SX SY
+ *                          of the plan or the 3D view and let go (with `frames N` the ghost
+ *                          travels there first); placed and snapped as place-selected
+ *   drag-selected plan|3d SX SY  the same drag, still held at SX SY (the ghost shows; a
+ *                          screenshot can catch it); the next drop-selected lets go
+ *   expect-total MIN MAX   fail unless the quantities panel's gross total is in [MIN, MAX]
+ *   new                    a new project (the empty room), unsaved changes discarded
+ *   open FILE              open a project file (a bad one fails the script, the message says why)
+ *   save-as FILE           save under a new name; the document's file is FILE from then on
+ *   view elevation         the wall elevation of the tile panel's surface (tiles.h)
+ *   elevation-wall N       show wall N (from 0) in the tile panel and the elevation view
+ *   tile-surface SURFACE   show a surface ("floor", "wall:1", "prewall:NAME:front", ...)
+ *   tile-pattern SURFACE PATTERN   straight, half-offset, third-offset, vertical-stack,
+ *                          diagonal or herringbone (SURFACE: a surface or a tiling's name)
+ *   tile-grout SURFACE WIDTH_MM [R G B]   joint width and colour (linear RGB 0-1)
+ *   tile-start SURFACE X Y | SURFACE centred|corner   where the tile grid starts
+ *   tile-rotate SURFACE DEG
+ *   tile-band SURFACE FROM TO      the heights a wall tiling covers (TO 0: to the ceiling)
+ *   tile-border SURFACE BOTTOM_MM  a border row of the browser's selected tile
+ *   elevation-click S T    click the elevation view at surface point S T (mm): the start
+ *   expect-pattern SURFACE PATTERN fail unless the tiling on SURFACE has that pattern
+ *   expect-tiles SURFACE N fail unless its layout has at least N tiles
+ *   tile-panel on|off      the tile panel over the 3D view too (it shows in the elevation)
+ *   expect-probe MATERIAL UPDATE  fail unless the material's probe updates so (every-frame,
+ *                          once, on-change, time-sliced, static, default; docs/editing.md)
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -63,6 +90,26 @@ typedef enum ui_action_kind {
     UI_ACT_EXPECT_ADDED,
     UI_ACT_TILE_SELECTED,
     UI_ACT_SHARE,
+    UI_ACT_DROP_SELECTED, /* uicat: drag and drop, quantities, files */
+    UI_ACT_DRAG_SELECTED,
+    UI_ACT_EXPECT_TOTAL,
+    UI_ACT_NEW,
+    UI_ACT_OPEN,
+    UI_ACT_SAVE_AS,
+    UI_ACT_EXPECT_PROBE,   /* uiprops: probe_props.h */
+    UI_ACT_ELEVATION_WALL, /* uitile: the tile panel and the elevation view (tiles.h) */
+    UI_ACT_TILE_SURFACE,
+    UI_ACT_TILE_PATTERN,
+    UI_ACT_TILE_GROUT,
+    UI_ACT_TILE_START,
+    UI_ACT_TILE_ROTATE,
+    UI_ACT_TILE_BAND,
+    UI_ACT_TILE_BORDER,
+    UI_ACT_ELEVATION_CLICK,
+    UI_ACT_EXPECT_PATTERN,
+    UI_ACT_EXPECT_TILES,
+    UI_ACT_TILE_PANEL,
+    UI_ACT_DRAG3D,
     UI_ACT_QUIT
 } ui_action_kind;
 
@@ -82,6 +129,9 @@ typedef struct ui_script {
 /* Reads and checks the whole script first, so a typo on line 30 is reported before the
  * window opens. 0 on success; else err holds "FILE:LINE: problem". */
 int ui_script_read(const char *path, ui_script *out, char *err, size_t err_size);
+/* tile_script.c: checks the words of a tile action (tile-pattern ...) as the script is read;
+ * 1 ok, else 0 and why. */
+int ui_tile_action_check(ui_action_kind kind, const char *text, char *why, size_t why_size);
 void ui_script_free(ui_script *s);
 
 #endif

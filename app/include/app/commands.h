@@ -55,6 +55,8 @@ typedef enum app_command_type {
     APP_CMD_REMOVE_NICHE,      /* index */
     APP_CMD_ADD_MATERIAL,      /* material (its name must be new) */
     APP_CMD_SET_REFLECTION,    /* index (material), reflectivity, glossiness, blend */
+    APP_CMD_SET_PROBE,         /* index (material), probe_update, probe_every, probe_resolution,
+                                  correction (cmd_probe.c) */
     APP_CMD_COUNT
 } app_command_type;
 
@@ -81,6 +83,9 @@ typedef struct app_command_desc {
     app_material material;
     float reflectivity, glossiness;
     int blend; /* APP_BLEND_* */
+    /* APP_CMD_SET_PROBE: the material's reflection probe policy (app_material's fields of
+     * the same names; RENDERING.md section 8). */
+    int probe_update, probe_every, probe_resolution, correction;
 } app_command_desc;
 
 /* "add-object", "move-object", ... (never NULL). */
