@@ -7,6 +7,7 @@
 #include "app/image_compare.h"
 #include "app/room_mesh.h"
 #include "catalog/model.h"
+#include "model_materials.h"
 #include "render/image_io.h"
 #include "render/primitives.h"
 #include "scene_build_internal.h"
@@ -236,20 +237,28 @@ static app_result add_model(const app_project *p, ref_scene *s, int index, const
         snprintf(err, err_size, "%s: $.objects[%d].model: %s", p->path, index, cerr);
         return APP_ERR_IO;
     }
+    app_model_materials parts;
+    if (!app_model_materials_read(o->model, &model, &parts)) {
+        cat_model_free(&model);
+        snprintf(err, err_size, "%s: $.objects[%d].model: out of memory", p->path, index);
+        return APP_ERR_OUT_OF_MEMORY;
+    }
     const double mm_to_m[3] = {1e-3, 1e-3, 1e-3};
     float transform[16];
     app_object_transform(o, mm_to_m, transform);
     app_result r = APP_OK;
     for (int i = 0; r == APP_OK && i < model.mesh_count; i++) {
         const cat_mesh *cm = &model.meshes[i];
+        rd_material own;
+        int fixed = app_model_part_material(&parts, cm, &own); /* as scene_objects.c */
         ref_mesh_desc d = {.positions = cm->positions,
                            .normals = cm->normals,
                            .uvs = cm->uvs,
                            .indices = cm->indices,
                            .vertex_count = cm->vertex_count,
                            .index_count = cm->index_count,
-                           .material = *m,
-                           .texture = texture,
+                           .material = fixed ? own : *m,
+                           .texture = fixed ? 0 : texture,
                            .double_sided = 1};
         memcpy(d.transform, transform, sizeof transform);
         ref_result rr = ref_scene_add_mesh(s, &d);
@@ -259,6 +268,7 @@ static app_result add_model(const app_project *p, ref_scene *s, int index, const
             r = rr == REF_ERR_OUT_OF_MEMORY ? APP_ERR_OUT_OF_MEMORY : APP_ERR_IO;
         }
     }
+    app_model_materials_free(&parts);
     cat_model_free(&model);
     return r;
 }

@@ -4,6 +4,7 @@
 
 #include "catalog/mesh_lod.h"
 #include "catalog/model.h"
+#include "model_materials.h"
 #include "render/primitives.h"
 
 #include <math.h>
@@ -182,6 +183,11 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
     }
     rd_probe_desc probe;
     app_result pr = probe_for(ctx, p, s, index, &probe, err, err_size);
+    app_model_materials parts;
+    if (pr == APP_OK && !app_model_materials_read(o->model, &model, &parts)) {
+        snprintf(err, err_size, "%s: $.objects[%d].model: out of memory", p->path, index);
+        pr = APP_ERR_OUT_OF_MEMORY;
+    }
     if (pr != APP_OK) {
         cat_model_free(&model);
         return pr;
@@ -231,12 +237,14 @@ static app_result add_model(rd_context *ctx, const app_project *p, app_scene *s,
                             .group = group_of(p, index), /* one probe for the model */
                             .probe = probe,
                             .probe_mesh = coarse};
+        app_model_part_material(&parts, cm, &d.material); /* a fixed part's own finish */
         memcpy(d.transform, transform, sizeof transform);
         if (rd_scene_add_object(s->scene, &d) != RD_OK) {
             snprintf(err, err_size, "%s: $.objects[%d]: %s", p->path, index, rd_last_error());
             r = APP_ERR_SCHEMA;
         }
     }
+    app_model_materials_free(&parts);
     cat_model_free(&lod);
     cat_model_free(&model);
     return r;

@@ -5,6 +5,8 @@
  * "Models"). Lengths in the catalog are millimetres, the renderer's metres. */
 #include "app/thumb_scene.h"
 
+#include "model_materials.h"
+
 #include "catalog/mesh_lod.h"
 #include "catalog/model.h"
 #include "catalog/model_gen.h"
@@ -95,26 +97,6 @@ static void scale_translate(float m[16], float sx, float sy, float sz, float tx,
            (float[3]){tx, ty, tz});
 }
 
-/* The catalog's material (RENDERING.md section 1 and 6) as the renderer's. */
-static rd_material from_catalog(const cat_render_material *c)
-{
-    rd_material m;
-    memset(&m, 0, sizeof m);
-    memcpy(m.ambient, c->ambient, sizeof m.ambient);
-    memcpy(m.diffuse, c->diffuse, sizeof m.diffuse);
-    memcpy(m.specular, c->specular, sizeof m.specular);
-    memcpy(m.emissive, c->emissive, sizeof m.emissive);
-    m.shininess = c->shininess;
-    m.reflectivity = c->reflectivity;
-    m.glossiness = c->glossiness;
-    m.blend = c->blend == CAT_BLEND_ADD       ? RD_REFLECT_ADD
-              : c->blend == CAT_BLEND_FRESNEL ? RD_REFLECT_FRESNEL
-                                              : RD_REFLECT_MIX;
-    m.transparency = c->transparency;
-    m.ior = c->ior;
-    return m;
-}
-
 /* A plain glTF material (no Tessera extras): metallic-roughness, roughly inverted from
  * cat_material_from_render (catalog/model_write.h). */
 static rd_material from_gltf(const cat_material *g)
@@ -134,7 +116,7 @@ static rd_material from_gltf(const cat_material *g)
     c.blend = CAT_BLEND_FRESNEL;
     c.transparency = 1 - fminf(fmaxf(g->base_color[3], 0), 1);
     c.ior = 1.5f;
-    return from_catalog(&c);
+    return app_material_from_catalog(&c);
 }
 
 typedef struct product_parts {
@@ -176,7 +158,7 @@ static rd_material default_material(void)
                              CAT_BLEND_MIX,
                              0,
                              1.5f};
-    return from_catalog(&c);
+    return app_material_from_catalog(&c);
 }
 
 /* The product's GLB, its parts in the materials of the file, the finish parts in the variant.
@@ -226,12 +208,12 @@ static int add_model(thumb_studio *st, rd_scene *scene, const cat_product *p, pr
             /* without --variant the model's own finish parts show its main finish (the first
              * variant of the CSV rows, docs/catalog.md "Models"), not the first by code */
             mat = extras[mi].variant_slot && st->variant && finish_of(st, p)
-                      ? from_catalog(finish_of(st, p))
-                      : from_catalog(&extras[mi].params);
+                      ? app_material_from_catalog(finish_of(st, p))
+                      : app_material_from_catalog(&extras[mi].params);
         else if (mi >= 0 && mi < m.material_count)
             mat = from_gltf(&m.materials[mi]);
         else if (finish_of(st, p))
-            mat = from_catalog(finish_of(st, p));
+            mat = app_material_from_catalog(finish_of(st, p));
         rd_object_desc o;
         memset(&o, 0, sizeof o);
         o.mesh = mesh;
@@ -262,7 +244,8 @@ static void add_box(thumb_studio *st, rd_scene *scene, const cat_product *p, pro
     rd_object_desc o;
     memset(&o, 0, sizeof o);
     o.mesh = st->box;
-    o.material = finish_of(st, p) ? from_catalog(finish_of(st, p)) : default_material();
+    o.material =
+        finish_of(st, p) ? app_material_from_catalog(finish_of(st, p)) : default_material();
     scale_translate(o.transform, w, d, h, 0, d / 2, h / 2);
     rd_scene_add_object(scene, &o);
     float lo[3] = {-w / 2, 0, 0}, hi[3] = {w / 2, d, h};
@@ -300,7 +283,7 @@ static int add_tile(thumb_studio *st, rd_scene *scene, const cat_product *p, pro
     memset(&o, 0, sizeof o);
     o.mesh = st->plane;
     const cat_render_material *f = finish_of(st, p);
-    o.material = f ? from_catalog(f) : default_material();
+    o.material = f ? app_material_from_catalog(f) : default_material();
     /* the texture carries the glaze's colour: the diffuse factor is white */
     for (int k = 0; k < 3; k++)
         o.material.diffuse[k] = 1.0f;
