@@ -7,7 +7,11 @@
  * Measured at 160 x 90, supersampling 1, 16 samples, the renderer's defaults: plain pixels
  * 36.45 dB and reflective pixels 16.53 dB with both fixes; with the tracer's constant I_a
  * instead 6.25 and 5.33 dB, and with the probes captured before the coefficients (the old
- * order in rd_render) the reflective ones 7.20 dB (docs/accuracy.md). GL through TESSERA_GL. */
+ * order in rd_render) the reflective ones 7.20 dB (docs/accuracy.md). Since products are drawn
+ * with their parts' own materials (model_materials.c: thin chrome rails, handles and lamp
+ * housings now reflect, and reflect less exactly) the reflective pixels give 12.40 dB with
+ * the fixes and 6.84 dB with the old order: the bar sits between, at 10 dB. GL through
+ * TESSERA_GL. */
 #include "../common/check.h"
 #include "app/image_compare.h"
 #include "app/project.h"
@@ -69,7 +73,7 @@ int main(void)
         printf("designed demo, SH9 ambient: PSNR plain pixels %.2f dB, reflective %.2f dB\n",
                mp.psnr, mr.psnr);
         CHECK_MSG(mp.psnr >= 30.0, "plain pixels %.2f dB: the ambient terms differ", mp.psnr);
-        CHECK_MSG(mr.psnr >= 13.0, "reflective pixels %.2f dB: the probes' ambient differs",
+        CHECK_MSG(mr.psnr >= 10.0, "reflective pixels %.2f dB: the probes' ambient differs",
                   mr.psnr);
     } else {
         CHECK_MSG(0, "render: %s", rd_last_error());
