@@ -15,9 +15,9 @@
 static const app_quality presets[] = {
     {"draft", "probes captured once, box-mip blur: the fastest frames", RD_PROBE_ONCE,
      RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0},
-    {"interactive", "probes refreshed on change, two faces a frame, prefiltered blur: live",
+    {"interactive", "probes refreshed on change, one face a frame, prefiltered blur: live",
      RD_PROBE_ON_CHANGE, RD_BLUR_PREFILTERED, 0, 256, 1, RD_SHADOWS_OFF, 1024, 1,
-     RD_CORRECTION_DEFAULT, 2},
+     RD_CORRECTION_DEFAULT, 1},
     {"final", "every probe complete at 128 texels, 2x2 supersampling: stills", RD_PROBE_EVERY_FRAME,
      RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12, RD_CORRECTION_DEFAULT, 0},
     {"print", "probes at 512 texels, depth lookups, 4x4 supersampling, soft shadows: print",
