@@ -1,8 +1,9 @@
 /* The 3D view's picking geometry (ui/src/view_ray.h), which the fixture drag and the catalog's
  * drop use: the ray through a pixel is the one the renderer's projection (cglm, as
  * render/src/camera.c) maps back onto that pixel; a ray hits a fixture's turned box where the
- * box is and nowhere else; the nearest of two boxes in line is picked; the drag plane at the
- * grabbed height gives the point under the pointer; and the script's drag3d action is read. */
+ * box is and nowhere else; projecting a point back gives its pixel; the nearest of two boxes in
+ * line is picked; the drag plane at the grabbed height gives the point under the pointer; and the
+ * script's drag3d action is read. */
 #include "check.h"
 #include "script.h"
 #include "view_ray.h"
@@ -53,6 +54,13 @@ int main(void)
     double sx = (c[0] / c[3] * 0.5 + 0.5) * w, sy = (0.5 - c[1] / c[3] * 0.5) * h;
     CHECK_NEAR(sx, 300, 0.05);
     CHECK_NEAR(sy, 500, 0.05);
+    /* ui_view_project is its inverse; behind the eye nothing shows. */
+    double back[2], pt3[3] = {eye[0] + 3 * d[0], eye[1] + 3 * d[1], eye[2] + 3 * d[2]};
+    CHECK(ui_view_project(eye, target, fov, w, h, pt3, &back[0], &back[1]));
+    CHECK_NEAR(back[0], 300, 1e-6);
+    CHECK_NEAR(back[1], 500, 1e-6);
+    double behind[3] = {eye[0] - d[0], eye[1] - d[1], eye[2] - d[2]};
+    CHECK(!ui_view_project(eye, target, fov, w, h, behind, &back[0], &back[1]));
     CHECK(!ui_view_ray(eye, eye, fov, w, h, 0, 0, d)); /* no direction */
     CHECK(!ui_view_ray(eye, target, 0, w, h, 0, 0, d));
 

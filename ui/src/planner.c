@@ -168,6 +168,8 @@ static int frame(planner *p)
         planner_plan_frame(p, fw, fh);
     if (p->view == UI_VIEW_ELEVATION && !p->presenting)
         planner_elevation_frame(p, fw, fh);
+    if (p->view == UI_VIEW_3D && !p->presenting)
+        planner_findings_3d(p, fw, fh);
     if (p->presenting)
         planner_draw_presentation(p, fw, fh);
     else

@@ -164,6 +164,15 @@ int planner_place_selected(planner *p, double x_mm, double y_mm);
 /* Moves a fixture (by object name) to a plan point, as a drag in the plan would. */
 int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm);
 void planner_plan_scroll(planner *p, double steps);
+/* planner_plan.c: the edit line that adds a door (kind 0), window (1), pre-wall (2) or niche
+ * (3) of a common size in the middle of wall `wall`, named uniquely; 0 when the wall or the
+ * line does not fit. */
+int planner_wall_item_line(const planner *p, int kind, int wall, char *line, size_t size);
+/* findings_3d.c: the placement findings marked over the 3D view. */
+void planner_findings_3d(planner *p, int width, int height);
+/* "STEM-N" with the smallest N no opening, pre-wall or niche of the plan is named (a static
+ * buffer, valid until the next call). */
+const char *planner_unique_name(const planner *p, const char *stem);
 /* Tiles a surface ("wall:0", "floor", ...) with the catalog browser's selected tile. */
 int planner_tile_selected(planner *p, const char *surface);
 

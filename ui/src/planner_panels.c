@@ -243,6 +243,48 @@ static void material_fields(planner *p, int mi)
 /* The selected fixture's card and properties: what it is, where it stands, its finish, and
  * for power users its material's reflection and probe policy. Each field commits one edit
  * line when the user presses Enter, lets go of a slider or picks from a combo. */
+
+/* The selected product's finish variants from the catalog (issue 8 item 4), one `variant`
+ * edit (with its render material, one undo step) when another is picked. The product is read
+ * once per selection. Returns 1 when the document changed. */
+static int variant_combo(planner *p, const app_object *o)
+{
+    static cat_product product;
+    static char key[256];
+    char want[256];
+    snprintf(want, sizeof want, "%s\n%s", o->product.manufacturer, o->product.article);
+    if (strcmp(key, want)) {
+        cat_product_free(&product);
+        memset(&product, 0, sizeof product);
+        char err[512];
+        snprintf(key, sizeof key, "%s", want);
+        if (!p->browser.db ||
+            cat_product_find(p->browser.db, o->product.manufacturer, o->product.article, &product,
+                             err, sizeof err) != CAT_DB_OK)
+            product.variant_count = 0;
+    }
+    if (product.variant_count <= 1)
+        return 0;
+    enum { MAX_SHOWN = 32 };
+    const char *names[MAX_SHOWN];
+    char labels[MAX_SHOWN][96];
+    int n = product.variant_count < MAX_SHOWN ? product.variant_count : MAX_SHOWN, current = 0;
+    for (int v = 0; v < n; v++) {
+        snprintf(labels[v], sizeof labels[v], "%s %s", product.variants[v].code,
+                 product.variants[v].name);
+        names[v] = labels[v];
+        if (!strcmp(product.variants[v].code, o->product.variant))
+            current = v;
+    }
+    int chosen = current;
+    if (!ui_gui_combo("variant", &chosen, names, n) || chosen == current)
+        return 0;
+    char line[256];
+    snprintf(line, sizeof line, "variant \"%s\" %s", o->name, product.variants[chosen].code);
+    planner_edit(p, line);
+    return 1;
+}
+
 static void selection_panel(planner *p)
 {
     int i = p->plan_o.selected_object;
@@ -281,6 +323,10 @@ static void selection_panel(planner *p)
             snprintf(line, sizeof line, "rotate \"%s\" %.1f", o->name, rot);
             planner_edit(p, line);
             shown = -1;
+            ui_gui_end();
+            return;
+        }
+        if (o->has_product && variant_combo(p, o)) {
             ui_gui_end();
             return;
         }

@@ -99,8 +99,9 @@ static void wall_panel(planner *p)
     /* In the Selection panel's place (panel_layout.h): a wall and a fixture are never both
      * selected. */
     const ui_rect *r = &p->layout.selection;
-    if (ui_gui_begin("Wall", r->x, r->y, r->w, 90.0f)) {
-        ui_gui_text("wall %d: %.0f mm", w, ui_plan_wall_length(&p->project.plan, w));
+    if (ui_gui_begin("Wall", r->x, r->y, r->w, 150.0f)) {
+        double length = ui_plan_wall_length(&p->project.plan, w);
+        ui_gui_text("wall %d: %.0f mm", w, length);
         if (ui_gui_input_double_enter("length mm", &p->wall_length_edit) &&
             p->wall_length_edit > 0) {
             app_point2 c = ui_plan_corner_for_length(&p->project.plan, w, p->wall_length_edit);
@@ -109,8 +110,59 @@ static void wall_panel(planner *p)
                      (w + 1) % p->project.plan.corner_count, c.x, c.y);
             planner_edit(p, line);
         }
+        /* Openings, pre-walls and niches in the middle of the wall (planner_wall_item_line),
+         * placed by the edit words so app checks that they fit (the status says why not);
+         * each is one undo step. */
+        static const char *const labels[4] = {"+ door", "+ window", "+ pre-wall", "+ niche"};
+        for (int k = 0; k < 4; k++) {
+            if (k)
+                ui_gui_same_line();
+            char line[256];
+            if (ui_gui_button(labels[k]) && planner_wall_item_line(p, k, w, line, sizeof line))
+                planner_edit(p, line);
+        }
     }
     ui_gui_end();
+}
+
+int planner_wall_item_line(const planner *p, int kind, int wall, char *line, size_t size)
+{
+    if (wall < 0 || wall >= p->project.plan.corner_count || kind < 0 || kind > 3)
+        return 0;
+    /* Common sizes (DOMAIN.md): an 800 x 2010 door, an 800 x 1000 window on a 1000 mm sill, a
+     * pre-wall 1200 wide, 200 deep and 1200 high for a wall-hung WC, a 600 x 400 shelf niche
+     * 100 deep at 1200; centred on the wall. */
+    static const char *const stems[4] = {"door", "window", "prewall", "niche"};
+    static const double widths[4] = {800, 800, 1200, 600};
+    double length = ui_plan_wall_length(&p->project.plan, wall);
+    double at = (length - widths[kind]) / 2;
+    const char *name = planner_unique_name(p, stems[kind]);
+    static const char *const formats[4] = {
+        "door %s wall %d at %.0f width 800 height 2010",
+        "window %s wall %d at %.0f width 800 height 1000 sill 1000",
+        "prewall %s wall %d at %.0f width 1200 depth 200 height 1200",
+        "niche %s wall %d at %.0f width 600 sill 1200 height 400 depth 100"};
+    int n = snprintf(line, size, formats[kind], name, wall, at);
+    return n > 0 && (size_t)n < size && at >= 0;
+}
+
+const char *planner_unique_name(const planner *p, const char *stem)
+{
+    static char name[64];
+    const app_room_plan *pl = &p->project.plan;
+    for (int n = 1; n < 1000; n++) {
+        snprintf(name, sizeof name, "%s-%d", stem, n);
+        int taken = 0;
+        for (int i = 0; i < pl->opening_count && !taken; i++)
+            taken = !strcmp(pl->openings[i].name, name);
+        for (int i = 0; i < pl->prewall_count && !taken; i++)
+            taken = !strcmp(pl->prewalls[i].name, name);
+        for (int i = 0; i < pl->niche_count && !taken; i++)
+            taken = !strcmp(pl->niches[i].name, name);
+        if (!taken)
+            break;
+    }
+    return name;
 }
 
 static void handle_plan_input(planner *p)

@@ -20,28 +20,55 @@ static int normalise(double v[3])
     return 1;
 }
 
-int ui_view_ray(const double eye[3], const double target[3], double fov_y_deg, int width,
-                int height, double sx, double sy, double dir[3])
+/* The camera's unit forward, right and up vectors (z up; straight down: north is up). */
+static int basis(const double eye[3], const double target[3], double f[3], double r[3], double u[3])
 {
-    if (width <= 0 || height <= 0 || !(fov_y_deg > 0 && fov_y_deg < 180))
-        return 0;
-    double f[3] = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]}, r[3], u[3];
     double up[3] = {0, 0, 1};
+    for (int k = 0; k < 3; k++)
+        f[k] = target[k] - eye[k];
     if (!normalise(f))
         return 0;
     cross(f, up, r);
-    if (!normalise(r)) { /* looking straight down or up: north is the screen's up */
+    if (!normalise(r)) {
         double north[3] = {0, 1, 0};
         cross(f, north, r);
         if (!normalise(r))
             return 0;
     }
     cross(r, f, u);
+    return 1;
+}
+
+int ui_view_ray(const double eye[3], const double target[3], double fov_y_deg, int width,
+                int height, double sx, double sy, double dir[3])
+{
+    double f[3], r[3], u[3];
+    if (width <= 0 || height <= 0 || !(fov_y_deg > 0 && fov_y_deg < 180) ||
+        !basis(eye, target, f, r, u))
+        return 0;
     /* Vertical field of view, aspect width / height, window y down. */
     double t = tan(fov_y_deg * 3.14159265358979323846 / 360.0), aspect = (double)width / height;
     double nx = 2.0 * sx / width - 1.0, ny = 1.0 - 2.0 * sy / height;
     for (int k = 0; k < 3; k++)
         dir[k] = f[k] + nx * t * aspect * r[k] + ny * t * u[k];
+    return 1;
+}
+
+int ui_view_project(const double eye[3], const double target[3], double fov_y_deg, int width,
+                    int height, const double pt[3], double *sx, double *sy)
+{
+    double f[3], r[3], u[3], v[3] = {pt[0] - eye[0], pt[1] - eye[1], pt[2] - eye[2]};
+    if (width <= 0 || height <= 0 || !(fov_y_deg > 0 && fov_y_deg < 180) ||
+        !basis(eye, target, f, r, u))
+        return 0;
+    double z = v[0] * f[0] + v[1] * f[1] + v[2] * f[2];
+    if (!(z > 1.0)) /* behind the eye or at it */
+        return 0;
+    double t = tan(fov_y_deg * 3.14159265358979323846 / 360.0), aspect = (double)width / height;
+    double x = (v[0] * r[0] + v[1] * r[1] + v[2] * r[2]) / (z * t * aspect);
+    double y = (v[0] * u[0] + v[1] * u[1] + v[2] * u[2]) / (z * t);
+    *sx = (x + 1.0) * 0.5 * width;
+    *sy = (1.0 - y) * 0.5 * height;
     return 1;
 }
 

@@ -13,6 +13,11 @@
 int ui_view_ray(const double eye[3], const double target[3], double fov_y_deg, int width,
                 int height, double sx, double sy, double dir[3]);
 
+/* The window pixel (sx, sy) where world point pt (mm) shows, the inverse of ui_view_ray:
+ * 0 when it lies behind the eye. */
+int ui_view_project(const double eye[3], const double target[3], double fov_y_deg, int width,
+                    int height, const double pt[3], double *sx, double *sy);
+
 /* Where the ray o + t d (t > 0) meets the plane z = height: 1 and out[2], or 0. */
 int ui_ray_plane_z(const double o[3], const double d[3], double height, double out[2]);
 
