@@ -41,7 +41,9 @@ int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm)
     const app_object *o = &p->project.objects[i];
     double x = o->position_mm[0] + x_mm - f->centre[0], y = o->position_mm[1] + y_mm - f->centre[1];
     char line[256];
-    snprintf(line, sizeof line, "move \"%s\" %.0f %.0f %.0f snap wall", o->name,
+    /* Snapped as a fitter places it (docs/editing.md): back to the nearest wall, then a side
+     * to a corner within 300 mm, then 200 mm from a neighbour within 300 mm. */
+    snprintf(line, sizeof line, "move \"%s\" %.0f %.0f %.0f snap wall corner neighbour", o->name,
              ui_plan_snap_grid(x, GRID_MM), ui_plan_snap_grid(y, GRID_MM), o->position_mm[2]);
     /* No wall near: the move without snapping. */
     if (planner_edit(p, line) == 0)
