@@ -63,5 +63,19 @@ int main(void)
     c = ui_plan_corner_for_length(&plan, 0, NAN);
     CHECK(c.x == 4000 && c.y == 0);
     CHECK(ui_plan_snap_grid(1234.4, 10) == 1230 && ui_plan_snap_grid(1236, 10) == 1240);
+
+    /* Dragging a wall moves it along its outward normal only: wall 0 (y = 0, running +x) goes
+     * to -y when dragged down, a drag along it moves nothing; the L's inner wall 3, (1500,1500)
+     * -> (1500,4000), has the room on its left (-x), so outward is +x and a drag to -x moves it
+     * into the room. */
+    CHECK(fabs(ui_plan_wall_offset(&plan, 0, 500, -200) - 200) < 1e-9);
+    CHECK(fabs(ui_plan_wall_offset(&plan, 0, 700, 0)) < 1e-9);
+    app_point2 a, b;
+    ui_plan_wall_moved(&plan, 0, 200, &a, &b);
+    CHECK(a.x == 0 && fabs(a.y + 200) < 1e-9 && b.x == 4000 && fabs(b.y + 200) < 1e-9);
+    CHECK(fabs(ui_plan_wall_offset(&plan, 3, -100, 50) + 100) < 1e-9);
+    ui_plan_wall_moved(&plan, 3, -300, &a, &b);
+    CHECK(fabs(a.x - 1200) < 1e-9 && a.y == 1500 && fabs(b.x - 1200) < 1e-9 && b.y == 4000);
+    CHECK(ui_plan_wall_offset(&plan, 9, 100, 100) == 0); /* no such wall */
     return check_report("ui_plan_view");
 }

@@ -27,6 +27,11 @@ static app_point2 corner(const app_project *p, const ui_plan_overlay *o, int i)
     i = ((i % n) + n) % n;
     if (i == o->drag_corner)
         return (app_point2){o->drag_mm[0], o->drag_mm[1]};
+    if (o->wall_dragging && (i == o->drag_wall || i == (o->drag_wall + 1) % n)) {
+        app_point2 a, b;
+        ui_plan_wall_moved(&p->plan, o->drag_wall, o->drag_wall_mm, &a, &b);
+        return i == o->drag_wall ? a : b;
+    }
     return p->plan.corners[i];
 }
 

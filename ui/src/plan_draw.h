@@ -14,6 +14,9 @@ typedef struct ui_plan_overlay {
     int drag_corner;     /* -1 = none; drag_mm is where it goes */
     int drag_object;     /* -1 = none; drag_mm is where its centre goes */
     double drag_mm[2];
+    int wall_dragging; /* 1: wall drag_wall moves by drag_wall_mm along its normal */
+    int drag_wall;
+    double drag_wall_mm;
 } ui_plan_overlay;
 
 void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fixture *fx,

@@ -118,6 +118,39 @@ double ui_plan_wall_length(const app_room_plan *plan, int wall)
     return hypot(b->x - a->x, b->y - a->y);
 }
 
+/* The outward unit normal of wall `wall`: (uy, -ux) of its direction. 0 for a degenerate one. */
+static int outward(const app_room_plan *plan, int wall, double *nx, double *ny)
+{
+    int n = plan->corner_count;
+    if (wall < 0 || wall >= n)
+        return 0;
+    const app_point2 *a = &plan->corners[wall], *b = &plan->corners[(wall + 1) % n];
+    double len = hypot(b->x - a->x, b->y - a->y);
+    if (!(len > 0))
+        return 0;
+    *nx = (b->y - a->y) / len;
+    *ny = -(b->x - a->x) / len;
+    return 1;
+}
+
+double ui_plan_wall_offset(const app_room_plan *plan, int wall, double dx, double dy)
+{
+    double nx, ny;
+    return outward(plan, wall, &nx, &ny) ? dx * nx + dy * ny : 0.0;
+}
+
+void ui_plan_wall_moved(const app_room_plan *plan, int wall, double offset_mm, app_point2 *start,
+                        app_point2 *end)
+{
+    int n = plan->corner_count;
+    double nx = 0, ny = 0;
+    if (!outward(plan, wall, &nx, &ny))
+        offset_mm = 0;
+    const app_point2 *a = &plan->corners[wall % n], *b = &plan->corners[(wall + 1) % n];
+    *start = (app_point2){a->x + offset_mm * nx, a->y + offset_mm * ny};
+    *end = (app_point2){b->x + offset_mm * nx, b->y + offset_mm * ny};
+}
+
 app_point2 ui_plan_corner_for_length(const app_room_plan *plan, int wall, double length_mm)
 {
     int n = plan->corner_count;

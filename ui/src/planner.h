@@ -164,6 +164,9 @@ int planner_place_selected(planner *p, double x_mm, double y_mm);
 /* Moves a fixture (by object name) to a plan point, as a drag in the plan would. */
 int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm);
 void planner_plan_scroll(planner *p, double steps);
+/* planner_plan.c: moves wall `wall` by offset_mm along its outward normal (both corners, one
+ * undo step); 0 ok, else the status says why. */
+int planner_move_wall(planner *p, int wall, double offset_mm);
 /* planner_plan.c: the edit line that adds a door (kind 0), window (1), pre-wall (2) or niche
  * (3) of a common size in the middle of wall `wall`, named uniquely; 0 when the wall or the
  * line does not fit. */

@@ -3,6 +3,7 @@
  * right button, zoom with the wheel. Every change is an edit line through app's commands. */
 #include "planner.h"
 
+#include "app/commands.h"
 #include "gui.h"
 
 #include <GLFW/glfw3.h>
@@ -127,6 +128,39 @@ static void wall_panel(planner *p)
     ui_gui_end();
 }
 
+int planner_move_wall(planner *p, int wall, double offset_mm)
+{
+    const app_room_plan *pl = &p->project.plan;
+    if (wall < 0 || wall >= pl->corner_count || offset_mm == 0)
+        return 1;
+    app_point2 a, b;
+    ui_plan_wall_moved(pl, wall, offset_mm, &a, &b);
+    /* Both corners in one script run inside one history group: one undo step, one rebuild;
+     * if the second corner is refused the first is taken back (app checks the plan stays a
+     * simple polygon with its openings, pre-walls and niches fitting). */
+    char text[256], err[1024];
+    snprintf(text, sizeof text, "corner %d %.0f %.0f\ncorner %d %.0f %.0f\n", wall, a.x, a.y,
+             (wall + 1) % pl->corner_count, b.x, b.y);
+    app_script_env env = {.lookup = app_placement_lazy_lookup,
+                          .user = &p->catalog,
+                          .assets_dir = app_placement_assets_dir()};
+    app_history_begin_group(p->history, "move wall");
+    if (app_script_run(&p->project, p->history, text, strlen(text), "wall", &env, NULL, err,
+                       sizeof err) != APP_OK) {
+        char ignored[256];
+        app_history_abort_group(p->history, &p->project, ignored, sizeof ignored);
+        planner_status(p, "%s", err);
+        return 1;
+    }
+    if (app_history_end_group(p->history, err, sizeof err) != APP_OK) {
+        planner_status(p, "%s", err);
+        return 1;
+    }
+    planner_status(p, "moved wall %d by %.0f mm", wall, offset_mm);
+    planner_doc_changed(p);
+    return 0;
+}
+
 int planner_wall_item_line(const planner *p, int kind, int wall, char *line, size_t size)
 {
     if (wall < 0 || wall >= p->project.plan.corner_count || kind < 0 || kind > 3)
@@ -207,8 +241,15 @@ static void handle_plan_input(planner *p)
                 p->drag_start_mm[1] = y - p->fixtures[f].centre[1];
             } else {
                 o->selected_wall = ui_plan_hit_wall(&p->plan_t, &p->project.plan, sx, sy, 6);
-                if (o->selected_wall >= 0)
+                if (o->selected_wall >= 0) {
                     p->wall_length_edit = ui_plan_wall_length(&p->project.plan, o->selected_wall);
+                    /* A drag from the wall moves it along its normal, both corners. */
+                    o->wall_dragging = 1;
+                    o->drag_wall = o->selected_wall;
+                    o->drag_wall_mm = 0;
+                    p->drag_start_mm[0] = x;
+                    p->drag_start_mm[1] = y;
+                }
             }
         }
     }
@@ -219,6 +260,11 @@ static void handle_plan_input(planner *p)
         } else if (o->drag_object >= 0) {
             o->drag_mm[0] = x - p->drag_start_mm[0];
             o->drag_mm[1] = y - p->drag_start_mm[1];
+        } else if (o->wall_dragging) {
+            o->drag_wall_mm = ui_plan_snap_grid(ui_plan_wall_offset(&p->project.plan, o->drag_wall,
+                                                                    x - p->drag_start_mm[0],
+                                                                    y - p->drag_start_mm[1]),
+                                                GRID_MM);
         }
     }
     if (!left && p->dragging) {
@@ -237,8 +283,11 @@ static void handle_plan_input(planner *p)
             if (f && hypot(f->centre[0] - o->drag_mm[0], f->centre[1] - o->drag_mm[1]) > 1)
                 planner_drag_object(p, p->project.objects[o->drag_object].name, o->drag_mm[0],
                                     o->drag_mm[1]);
+        } else if (o->wall_dragging && o->drag_wall_mm != 0) {
+            planner_move_wall(p, o->drag_wall, o->drag_wall_mm);
         }
         o->drag_corner = o->drag_object = -1;
+        o->wall_dragging = 0;
     }
     p->mouse_x = mx;
     p->mouse_y = my;

@@ -177,6 +177,8 @@ static int apply(planner *p, const ui_action *a)
         return planner_drag_object(p, a->text, a->a, a->b) ? fail(a, p->status) : 0;
     case UI_ACT_DRAG3D:
         return drag3d(p, a) ? fail(a, p->status) : 0;
+    case UI_ACT_MOVE_WALL:
+        return planner_move_wall(p, (int)a->a, a->b) ? fail(a, p->status) : 0;
     case UI_ACT_UNDO:
     case UI_ACT_REDO:
         return planner_undo(p, a->kind == UI_ACT_REDO) ? fail(a, p->status) : 0;

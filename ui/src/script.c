@@ -36,6 +36,7 @@ static const struct {
     {"place-selected", UI_ACT_PLACE_SELECTED, 2, 0},
     {"drag", UI_ACT_DRAG, -2, 1}, /* a name, then X Y */
     {"drag3d", UI_ACT_DRAG3D, -2, 1},
+    {"move-wall", UI_ACT_MOVE_WALL, 2, 0},
     {"undo", UI_ACT_UNDO, 0, 0},
     {"redo", UI_ACT_REDO, 0, 0},
     {"save", UI_ACT_SAVE, 0, 1},

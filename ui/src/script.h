@@ -22,6 +22,7 @@
  *   place-selected X Y     place the catalog browser's selected product at a plan point
  *   drag NAME X Y          drag a fixture's footprint centre to a plan point and let go
  *                          (NAME "-": the selected fixture, e.g. the one just placed)
+ *   move-wall W OFFSET     drag wall W of the plan OFFSET mm outward (negative: inward)
  *   drag3d NAME X Y        the same as a hand drags it in the 3D view: moved live over the
  *                          action's frames (frames N), one move edit on the last
  *   tile-selected SURFACE  tile a surface with the catalog browser's selected tile
@@ -110,6 +111,7 @@ typedef enum ui_action_kind {
     UI_ACT_EXPECT_TILES,
     UI_ACT_TILE_PANEL,
     UI_ACT_DRAG3D,
+    UI_ACT_MOVE_WALL,
     UI_ACT_QUIT
 } ui_action_kind;
 

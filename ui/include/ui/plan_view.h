@@ -40,6 +40,12 @@ double ui_plan_wall_length(const app_room_plan *plan, int wall);
 /* The new position of the wall's end corner that gives it length_mm, keeping its direction
  * (typing an exact length). */
 app_point2 ui_plan_corner_for_length(const app_room_plan *plan, int wall, double length_mm);
+/* Dragging a whole wall: how far (mm) a drag by (dx, dy) moves wall `wall` along its outward
+ * normal (the plan is counter-clockwise: outward is to the right of start -> end), and where
+ * its two corners go when moved by offset_mm that way. */
+double ui_plan_wall_offset(const app_room_plan *plan, int wall, double dx, double dy);
+void ui_plan_wall_moved(const app_room_plan *plan, int wall, double offset_mm, app_point2 *start,
+                        app_point2 *end);
 /* Rounds to a grid (mm), for dragged corners and fixtures. */
 double ui_plan_snap_grid(double v_mm, double grid_mm);
 
