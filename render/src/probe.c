@@ -64,11 +64,18 @@ rd_result rd_probes_sync(rd_scene *s)
         for (int j = 0; j < s->probe_count; j++)
             if (s->probes[j].key == key)
                 found = j;
+        float g = fminf(fmaxf(mat->glossiness, 0.0f), 1.0f);
         if (found < 0) {
             found = s->probe_count++;
-            s->probes[found] =
-                (rd_probe){.key = key, .owner = i, .captured_frame = -1, .filtered_level = -1};
+            s->probes[found] = (rd_probe){.key = key,
+                                          .owner = i,
+                                          .captured_frame = -1,
+                                          .filtered_level = -1,
+                                          .gloss_min = g,
+                                          .gloss_max = g};
         }
+        s->probes[found].gloss_min = fminf(s->probes[found].gloss_min, g);
+        s->probes[found].gloss_max = fmaxf(s->probes[found].gloss_max, g);
         map[i] = found;
     }
     s->probes_dirty = 0;
@@ -244,7 +251,7 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
         n = p->size;
     /* A blurred reflection needs no more texels than its lobe can show: about two texels
      * across the lobe's half-width sqrt(2 ln 2 / n(g)) (a face spans pi/2). */
-    float g = s->objects[p->owner].material.glossiness;
+    float g = p->gloss_max; /* the sharpest of the objects that look it up */
     if (g < 1.0f && s->objects[p->owner].material.transparency <= 0.0f) {
         float half_width = sqrtf(2.0f * 0.6931472f / exp2f(13.0f * fmaxf(g, 0.0f)));
         /* Twice that, so the lookup lands on level 1 or above (rd_lobe_level), never between
@@ -403,21 +410,27 @@ unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p)
     }
     if (p->faces_valid != 0x3f)
         return 0;
-    if (o->material.glossiness < 1.0f && rd_effective_blur(s) == RD_BLUR_PREFILTERED)
+    if (p->gloss_min < 1.0f && rd_effective_blur(s) == RD_BLUR_PREFILTERED)
         return p->filtered_level >= 0 ? p->filtered : 0;
     return p->capture;
 }
 
-/* After a complete capture: the blur the owner's glossiness needs, and nothing for g = 1. */
+/* After a complete capture: the blur its objects' glossiness needs (from the sharpest's
+ * level to the roughest's), and nothing when they are all mirrors. Objects sharing a probe
+ * may differ (a glass screen, g = 1, and its chrome rail, g = 0.9): a level nobody made reads
+ * black, so every level any of them looks up is made. */
 static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned source,
                             int source_size, rd_frame_stats *stats)
 {
-    const rd_material *m = &s->objects[p->owner].material;
     p->filtered_level = -1;
-    if (!(m->glossiness < 1.0f))
-        return RD_OK; /* a mirror: no blur work at all (section 5) */
-    float lod = rd_probe_lod(p, m->glossiness);
-    int lo = (int)floorf(lod), hi = lo + 1 < p->levels ? lo + 1 : lo;
+    if (!(p->gloss_min < 1.0f))
+        return RD_OK; /* mirrors only: no blur work at all (section 5) */
+    float lod_sharp = rd_probe_lod(p, p->gloss_max), lod_rough = rd_probe_lod(p, p->gloss_min);
+    int lo = (int)floorf(lod_sharp), hi = (int)floorf(lod_rough) + 1;
+    if (hi > p->levels - 1)
+        hi = p->levels - 1;
+    if (lo > hi)
+        lo = hi;
     if (source == p->capture) {
         /* Box mips: the fast method's lookup and the prefilter's source. Only the levels the
          * lookup or the filtered samples can reach are made: mipmapping a cube map is a pass

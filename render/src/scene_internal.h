@@ -12,7 +12,10 @@ typedef struct rd_probe {
     unsigned filtered; /* prefiltered chain (RD_BLUR_PREFILTERED, g < 1), else 0 */
     int size, levels;
     float centre[3], radius;
-    float detail_size;        /* metres: what its resolution follows (see place_probe) */
+    float detail_size; /* metres: what its resolution follows (see place_probe) */
+    /* The glossiness range of the objects that look it up (a product's parts share one probe
+     * and may differ: a glass screen and its chrome rail): the blur covers all of them. */
+    float gloss_min, gloss_max;
     long long captured_stamp; /* the scene's change counter at the last full capture */
     int captured_frame;       /* -1: never */
     int faces_valid;          /* bit f: face f holds a capture */
