@@ -60,10 +60,11 @@ int app_cli_render(int argc, char **argv)
             rest[n++] = argv[i];
     }
     cli_options o = {0};
-    int rc = cli_parse(n, rest, 2, "render",
-                       "output camera size supersample backend probes blur ambient quality "
-                       "shadows dpi tile",
-                       &o);
+    int rc =
+        cli_parse(n, rest, 2, "render",
+                  "output camera size supersample adaptive backend probes blur ambient quality "
+                  "shadows dpi tile",
+                  &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project || !o.output || (all_views && o.camera)) {

@@ -97,10 +97,14 @@ int cli_session_view(const cli_session *s, const cli_options *o, const char *cam
         fprintf(stderr, "tessera: %s\n", err);
         return CLI_USAGE;
     }
-    if (o->quality)
+    if (o->quality) {
         out->supersample = app_quality_supersample(o->quality, out->width, out->height);
+        out->adaptive = app_quality_adaptive(o->quality, out->width, out->height);
+    }
     if (o->supersample)
         out->supersample = o->supersample;
+    if (o->adaptive)
+        out->adaptive = o->adaptive == 1;
     return CLI_OK;
 }
 

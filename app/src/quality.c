@@ -14,15 +14,17 @@
 
 static const app_quality presets[] = {
     {"draft", "probes captured once, box-mip blur: the fastest frames", RD_PROBE_ONCE,
-     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0},
+     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0, 0},
     {"interactive", "probes refreshed on change, one face a frame, prefiltered blur: live",
      RD_PROBE_ON_CHANGE, RD_BLUR_PREFILTERED, 0, 256, 1, RD_SHADOWS_OFF, 1024, 1,
-     RD_CORRECTION_DEFAULT, 1},
+     RD_CORRECTION_DEFAULT, 1, 0},
     {"final", "every probe complete at 128 texels, 2x2 supersampling: stills", RD_PROBE_EVERY_FRAME,
-     RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12, RD_CORRECTION_DEFAULT, 0},
-    {"print", "probes at 512 texels, depth lookups, 4x4 supersampling, soft shadows: print",
+     RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12, RD_CORRECTION_DEFAULT, 0, 0},
+    {"print",
+     "probes at 512 texels, depth lookups, 4x4 supersampling (adaptive in large prints), soft "
+     "shadows: print",
      RD_PROBE_EVERY_FRAME, RD_BLUR_PREFILTERED, 512, 0, 4, RD_SHADOWS_SOFT, 2048, 16,
-     RD_CORRECTION_DEPTH, 0},
+     RD_CORRECTION_DEPTH, 0, 1},
 };
 
 const app_quality *app_quality_find(const char *name)
@@ -44,6 +46,11 @@ int app_quality_supersample(const app_quality *q, int width, int height)
     while (s > 1 && (long long)width * height * s * s > APP_QUALITY_MAX_SAMPLES)
         s--;
     return s;
+}
+
+int app_quality_adaptive(const app_quality *q, int width, int height)
+{
+    return q->adaptive && app_quality_supersample(q, width, height) < q->supersample;
 }
 
 void app_quality_apply(const app_quality *q, rd_scene *scene)

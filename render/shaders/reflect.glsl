@@ -57,9 +57,14 @@ float depth_gap(samplerCube dist, vec3 o)
 // proxy's far wall (nothing of the room lies beyond it). A crossing whose secant does not
 // converge onto the stored surface is a silhouette (the ray passes behind a nearer object
 // as seen from c) and the search goes on. No crossing: the box-corrected direction.
+// u_depth_steps linear steps (rd_depth_search_steps): 32 for a mirror, fewer for a glossy
+// lobe, whose blur hides what finer steps would place.
+uniform int u_depth_steps;
+
 vec3 correct_depth(samplerCube dist, vec3 p, vec3 r, vec3 bmin, vec3 bmax, vec3 c)
 {
-    const int LINEAR_STEPS = 32, SECANT_STEPS = 5;
+    const int SECANT_STEPS = 5;
+    int LINEAR_STEPS = clamp(u_depth_steps, 1, 64);
     float t_end = box_exit(p, r, bmin, bmax);
     vec3 fallback = correct_box(p, r, bmin, bmax, c);
     if (t_end <= 0.0)

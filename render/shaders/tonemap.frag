@@ -1,48 +1,49 @@
-// Exposure, photographic tone map and sRGB encoding; resolves s x s supersamples per pixel.
-// RENDERING.md section 9 (HDR). The CPU twin is rd_ref_tonemap in render/src/tonemap_ref.c.
-// Compiled per variant (programs.c): SAMPLES (s, 1..4) and LINEAR_OUT (write the averaged
-// exposed radiance instead of display values), so the loops unroll and nothing branches.
-uniform sampler2D u_source; // radiance at s times the output size
-uniform float u_exposure;   // 2^ev
-uniform float u_white;      // L_white
-uniform int u_mode;         // 0 photographic, 1 clamp
+// Resolves a render into output pixels: s x s supersamples per pixel averaged after the tone
+// map, or (ADAPTIVE) the pixel's one centre sample except where the edge mask had its s x s
+// samples rendered (renderer_adaptive.c), which are averaged as in the plain resolve.
+// Compiled per variant (programs.c): SAMPLES (s, 1..4), LINEAR_OUT (write the averaged
+// exposed radiance instead of display values) and ADAPTIVE, so the loops unroll and nothing
+// branches on a uniform.
+uniform sampler2D u_source; // radiance at s times the output size (ADAPTIVE: at output size)
+#if ADAPTIVE
+// The refined pixels' s x s samples; alpha is 1 where the refinement drew (only marked pixels
+// are drawn), 0 where it cleared.
+uniform sampler2D u_refined;
+#endif
 
 out vec4 frag_color;
 
-// Reinhard, Stark, Shirley, Ferwerda 2002, eq. 4, applied to luminance so hue is kept.
-vec3 tonemap(vec3 c)
+vec3 display_or_linear(vec3 c)
 {
-    c = clamp(c * u_exposure, vec3(0.0), vec3(1e30));
-    if (u_mode == 1)
-        return clamp(c, 0.0, 1.0);
-    float y = dot(c, vec3(0.2126, 0.7152, 0.0722));
-    if (!(y > 0.0))
-        return vec3(0.0);
-    float ratio = (1.0 + y / (u_white * u_white)) / (1.0 + y);
-    return clamp(c * ratio, 0.0, 1.0);
-}
-
-vec3 srgb_encode(vec3 x)
-{
-    vec3 lo = 12.92 * x;
-    vec3 hi = 1.055 * pow(x, vec3(1.0 / 2.4)) - 0.055;
-    return mix(lo, hi, step(vec3(0.0031308), x));
+#if LINEAR_OUT
+    return exposed(c);
+#else
+    return tonemap(c);
+#endif
 }
 
 void main()
 {
     ivec2 base = ivec2(gl_FragCoord.xy) * SAMPLES;
     vec3 sum = vec3(0.0);
+    float drawn = 0.0;
     for (int y = 0; y < SAMPLES; y++)
         for (int x = 0; x < SAMPLES; x++) {
-            vec3 c = texelFetch(u_source, base + ivec2(x, y), 0).rgb;
-#if LINEAR_OUT
-            sum += clamp(c * u_exposure, vec3(0.0), vec3(1e30));
+#if ADAPTIVE
+            vec4 c = texelFetch(u_refined, base + ivec2(x, y), 0);
+            drawn = max(drawn, c.a);
 #else
-            sum += tonemap(c);
+            vec4 c = texelFetch(u_source, base + ivec2(x, y), 0);
 #endif
+            sum += display_or_linear(c.rgb);
         }
     vec3 avg = sum / float(SAMPLES * SAMPLES);
+#if ADAPTIVE
+    // A pixel none of whose samples was drawn was not refined (or shows only the background,
+    // black in both): its centre sample.
+    if (!(drawn > 0.5))
+        avg = display_or_linear(texelFetch(u_source, ivec2(gl_FragCoord.xy), 0).rgb);
+#endif
 #if LINEAR_OUT
     frag_color = vec4(avg, 1.0);
 #else

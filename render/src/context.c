@@ -139,6 +139,9 @@ void rd_context_destroy(rd_context *ctx)
             rd_resources_destroy_all(ctx);
             rd_programs_destroy(ctx);
             rd_target_destroy(&ctx->hdr);
+            rd_adaptive_destroy(ctx);
+            if (ctx->isotropic_sampler)
+                glDeleteSamplers(1, &ctx->isotropic_sampler);
             rd_target_destroy(&ctx->display);
             rd_target_destroy(&ctx->linear);
             if (ctx->empty_vao)

@@ -194,6 +194,7 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glUniform1i(p->u_surface_highlights, probe->surface ? 1 : 0);
     glUniform1f(p->u_lobe_exponent,
                 m->glossiness < 1.0f ? rd_ref_gloss_exponent(m->glossiness) : 0.0f);
+    glUniform1i(p->u_depth_steps, rd_depth_search_steps(m->glossiness));
     glActiveTexture(GL_TEXTURE1);
     glUniform3fv(p->u_proxy_min, 1, bmin);
     glUniform3fv(p->u_proxy_max, 1, bmax);
@@ -358,6 +359,22 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
      * general path the fast ones must match (tests/render/test_frame_work.c). */
     const char *slow = getenv("TESSERA_NO_FAST_PATHS");
     int fast = !(slow && *slow && strcmp(slow, "0") != 0);
+    /* Probe captures sample the diffuse textures without anisotropic filtering: llvmpipe
+     * filters anisotropically by looping over the footprint, and a probe a centimetre from a
+     * wall or floor sees it at grazing angles nearly everywhere, where one 512 x 512 face took
+     * up to 3.7 s (designed demo, the mirror's probe). The capture is blurred or read through
+     * a cube map of 90-degree faces, where the sharpness along a grazing wall is not seen. */
+    if (pass->isotropic_textures) {
+        if (!ctx->isotropic_sampler) {
+            glGenSamplers(1, &ctx->isotropic_sampler);
+            glSamplerParameteri(ctx->isotropic_sampler, GL_TEXTURE_MIN_FILTER,
+                                GL_LINEAR_MIPMAP_LINEAR);
+            glSamplerParameteri(ctx->isotropic_sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            glSamplerParameteri(ctx->isotropic_sampler, GL_TEXTURE_WRAP_S, GL_REPEAT);
+            glSamplerParameteri(ctx->isotropic_sampler, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        }
+        glBindSampler(0, ctx->isotropic_sampler);
+    }
     if (pass->depth_prepass && fast) {
         /* Issue 8: a depth-only walk first, then the shaded walk with GL_LEQUAL and no depth
          * writes, so llvmpipe's early depth test shades every pixel exactly once whatever the
@@ -374,6 +391,8 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
         r = draw_list(ctx, scene, pass, items, planes, frame_uniforms_set, light_masks, 0, fast);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
+    if (pass->isotropic_textures)
+        glBindSampler(0, 0);
     free(items);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);

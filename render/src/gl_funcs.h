@@ -84,14 +84,51 @@
     X(PFNGLDRAWBUFFERSPROC, glDrawBuffers)                                                         \
     X(PFNGLCLEARBUFFERFVPROC, glClearBufferfv)                                                     \
     X(PFNGLREADBUFFERPROC, glReadBuffer)                                                           \
+    X(PFNGLGENSAMPLERSPROC, glGenSamplers)                                                         \
+    X(PFNGLDELETESAMPLERSPROC, glDeleteSamplers)                                                   \
+    X(PFNGLBINDSAMPLERPROC, glBindSampler)                                                         \
+    X(PFNGLSAMPLERPARAMETERIPROC, glSamplerParameteri)                                             \
+    X(PFNGLSTENCILFUNCPROC, glStencilFunc)                                                         \
+    X(PFNGLSTENCILOPPROC, glStencilOp)                                                             \
+    X(PFNGLSTENCILMASKPROC, glStencilMask)                                                         \
+    X(PFNGLCOLORMASKPROC, glColorMask)                                                             \
+    X(PFNGLBLENDFUNCPROC, glBlendFunc)                                                             \
+    X(PFNGLCLEARSTENCILPROC, glClearStencil)                                                       \
+    X(PFNGLGENQUERIESPROC, glGenQueries)                                                           \
+    X(PFNGLDELETEQUERIESPROC, glDeleteQueries)                                                     \
+    X(PFNGLBEGINQUERYPROC, glBeginQuery)                                                           \
+    X(PFNGLENDQUERYPROC, glEndQuery)                                                               \
+    X(PFNGLGETQUERYOBJECTUIVPROC, glGetQueryObjectuiv)                                             \
+    X(PFNGLTEXSUBIMAGE2DPROC, glTexSubImage2D)                                                     \
     X(PFNGLBLITFRAMEBUFFERPROC, glBlitFramebuffer)
 
 #define RD_GL_DECLARE(type, name) extern type rd_##name;
 RD_GL_FUNCTIONS(RD_GL_DECLARE)
 #undef RD_GL_DECLARE
 
+/* Entry points beyond GL 3.3, loaded when present (ARCHITECTURE.md: 4.x only behind a
+ * capability check); rd_gl_has_tex_storage() tells whether glTexStorage2D may be called. */
+extern PFNGLTEXSTORAGE2DPROC rd_glTexStorage2D;
+int rd_gl_has_tex_storage(void);
+
 /* Code in render/src calls glFoo(...) as usual; these names resolve to the loaded pointers. */
 #define glGetString rd_glGetString
+#define glTexSubImage2D rd_glTexSubImage2D
+#define glGenQueries rd_glGenQueries
+#define glDeleteQueries rd_glDeleteQueries
+#define glBeginQuery rd_glBeginQuery
+#define glEndQuery rd_glEndQuery
+#define glGetQueryObjectuiv rd_glGetQueryObjectuiv
+#define glGenSamplers rd_glGenSamplers
+#define glDeleteSamplers rd_glDeleteSamplers
+#define glBindSampler rd_glBindSampler
+#define glSamplerParameteri rd_glSamplerParameteri
+#define glStencilFunc rd_glStencilFunc
+#define glStencilOp rd_glStencilOp
+#define glStencilMask rd_glStencilMask
+#define glColorMask rd_glColorMask
+#define glBlendFunc rd_glBlendFunc
+#define glClearStencil rd_glClearStencil
 #define glGetIntegerv rd_glGetIntegerv
 #define glGetError rd_glGetError
 #define glEnable rd_glEnable

@@ -3,6 +3,7 @@
 #include "probe.h"
 #include "draw.h"
 #include "gl_funcs.h"
+#include "phase_timer.h"
 #include "prefilter.h"
 
 #include "render/cube_data.h"
@@ -137,8 +138,18 @@ rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m)
 {
     if (m->correction != RD_CORRECTION_DEFAULT)
         return m->correction;
-    return s->reflection.correction != RD_CORRECTION_DEFAULT ? s->reflection.correction
-                                                             : RD_CORRECTION_BOX;
+    rd_correction c = s->reflection.correction != RD_CORRECTION_DEFAULT ? s->reflection.correction
+                                                                        : RD_CORRECTION_BOX;
+    /* A scene-wide "depth" (the print preset) leaves faint, blurred reflections to the box:
+     * a glaze's k_r = 0.1 through a lobe of g = 0.6 (4.5 degrees) hides where along the ray
+     * the search would place a hit, and the search is the costliest part of their shading
+     * (designed demo, 3840 x 2160: the basin and the bath took a fifth of the main pass).
+     * A material that names its correction keeps it; glass keeps depth (what it shows through
+     * is most of its colour). docs/accuracy.md measures the trade. */
+    if (c == RD_CORRECTION_DEPTH && m->transparency <= 0.0f &&
+        m->reflectivity < RD_DEPTH_MIN_REFLECTIVITY && m->glossiness < RD_DEPTH_MIN_GLOSSINESS)
+        return RD_CORRECTION_BOX;
+    return c;
 }
 
 rd_blur_method rd_effective_blur(const rd_scene *s)
@@ -175,8 +186,8 @@ rd_result rd_reference_blur_level(rd_probe *p, unsigned source, int source_size,
                           out.faces[f]);
     glBindTexture(GL_TEXTURE_CUBE_MAP, p->filtered);
     for (int f = 0; r == RD_OK && f < 6; f++)
-        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, level, GL_RGBA16F, dst, dst, 0,
-                     GL_RGBA, GL_FLOAT, out.faces[f]);
+        glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, level, 0, 0, dst, dst, GL_RGBA,
+                        GL_FLOAT, out.faces[f]); /* the storage is rd_alloc_cube's */
     glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
     rd_cube_data_free(&src);
     rd_cube_data_free(&out);
@@ -278,12 +289,18 @@ rd_result rd_alloc_cube(unsigned *name, int size, int levels)
 {
     glGenTextures(1, name);
     glBindTexture(GL_TEXTURE_CUBE_MAP, *name);
-    for (int f = 0; f < 6; f++)
-        for (int l = 0; l < levels; l++) {
-            int n = size >> l;
-            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, l, GL_RGBA16F, n, n, 0,
-                         GL_RGBA, GL_FLOAT, NULL);
-        }
+    /* One allocation for every face and level where GL 4.2's immutable storage exists: level
+     * by level, Mesa re-creates the texture as each image is specified, and a print probe's
+     * set-up (17 cubes of 512 texels with their mips, designed demo) took 2.2 s. */
+    if (rd_gl_has_tex_storage())
+        rd_glTexStorage2D(GL_TEXTURE_CUBE_MAP, levels, GL_RGBA16F, size, size);
+    else
+        for (int f = 0; f < 6; f++)
+            for (int l = 0; l < levels; l++) {
+                int n = size >> l;
+                glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)f, l, GL_RGBA16F, n, n, 0,
+                             GL_RGBA, GL_FLOAT, NULL);
+            }
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, levels - 1);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -360,7 +377,8 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
                                    .reflections = 0,
                                    .min_solid_radius = 0.25f / (float)p->size,
                                    .specular_off = s->reflection.probe_no_specular || p->surface,
-                                   .store_distance = 1});
+                                   .store_distance = 1,
+                                   .isotropic_textures = 1});
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0,
                            0);
     glDrawBuffers(1, two);
@@ -440,6 +458,7 @@ static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned 
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAX_LEVEL, needed);
         glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
         glBindTexture(GL_TEXTURE_CUBE_MAP, 0);
+        rd_phase_mark("probe box mips");
     }
     rd_blur_method method = rd_effective_blur(s);
     if (method == RD_BLUR_BOX_MIPS)
@@ -605,6 +624,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
              * their blurs (one per round) fall on different frames. */
             p->faces_since_blur = u == RD_PROBE_TIME_SLICED ? 5 - i % 6 : 0;
         }
+        rd_phase_mark("probe set-up"); /* TESSERA_PHASES (phase_timer.h) */
         for (int f = 0; f < 6; f++)
             if (faces & (1 << f)) {
                 r = rd_probe_capture_face(ctx, s, p, f, far_m);
@@ -614,6 +634,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                 p->face_stamp[f] = s->change_counter;
                 stats->faces_captured++;
             }
+        rd_phase_mark("probe captures");
         int round_done = 0;
         if (u == RD_PROBE_TIME_SLICED && faces != 0x3f) {
             p->next_face = (p->next_face + 1) % 6;

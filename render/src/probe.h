@@ -21,6 +21,10 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                            rd_frame_stats *stats);
 
 /* The effective settings of object i's material and probe after the scene's defaults. */
+/* Under a scene-wide "depth" correction, materials with k_r and g both below these take the
+ * box (probe.c). */
+#define RD_DEPTH_MIN_REFLECTIVITY 0.25f
+#define RD_DEPTH_MIN_GLOSSINESS 0.8f
 rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m);
 rd_blur_method rd_effective_blur(const rd_scene *s);
 void rd_effective_proxy(const rd_scene *s, float bmin[3], float bmax[3]);

@@ -131,6 +131,7 @@ static void locate_lit(rd_program *p)
     p->u_probe_surface = glGetUniformLocation(id, "u_probe_surface");
     p->u_surface_highlights = glGetUniformLocation(id, "u_surface_highlights");
     p->u_lobe_exponent = glGetUniformLocation(id, "u_lobe_exponent");
+    p->u_depth_steps = glGetUniformLocation(id, "u_depth_steps");
 }
 
 const rd_program *rd_lit_program(rd_context *ctx, int variant)
@@ -173,22 +174,58 @@ rd_result rd_programs_create(rd_context *ctx)
     return rd_tonemap_program(ctx, 1, 0) ? RD_OK : RD_ERR_SHADER;
 }
 
-const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear)
+/* The full-screen programs over a radiance image (tonemap.glsl and one .frag). */
+static const struct rd_tonemap_program *make_tonemap(struct rd_tonemap_program *t, const char *frag,
+                                                     const char *defines)
 {
-    struct rd_tonemap_program *t = &ctx->tonemap[samples - 1][linear ? 1 : 0];
-    if (t->id)
-        return t;
-    char defines[96];
-    snprintf(defines, sizeof defines, "#define SAMPLES %d\n#define LINEAR_OUT %d\n", samples,
-             linear ? 1 : 0);
-    t->id = link("fullscreen.vert", "tonemap.frag", defines);
+    t->id = link("fullscreen.vert", frag, defines);
     if (!t->id)
         return NULL;
     t->u_source = glGetUniformLocation(t->id, "u_source");
     t->u_exposure = glGetUniformLocation(t->id, "u_exposure");
     t->u_white = glGetUniformLocation(t->id, "u_white");
     t->u_mode = glGetUniformLocation(t->id, "u_mode");
+    t->u_refined = glGetUniformLocation(t->id, "u_refined");
+    t->u_threshold = glGetUniformLocation(t->id, "u_threshold");
+    t->u_samples = glGetUniformLocation(t->id, "u_samples");
     return t;
+}
+
+const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear)
+{
+    struct rd_tonemap_program *t = &ctx->tonemap[samples - 1][linear ? 1 : 0];
+    if (t->id)
+        return t;
+    char defines[96];
+    snprintf(defines, sizeof defines,
+             "#define SAMPLES %d\n#define LINEAR_OUT %d\n#define ADAPTIVE 0\n", samples,
+             linear ? 1 : 0);
+    return make_tonemap(t, "tonemap.glsl tonemap.frag", defines);
+}
+
+const struct rd_tonemap_program *rd_tonemap_adaptive_program(rd_context *ctx, int samples,
+                                                             int linear)
+{
+    struct rd_tonemap_program *t = &ctx->tonemap_adaptive[samples - 1][linear ? 1 : 0];
+    if (t->id)
+        return t;
+    char defines[96];
+    snprintf(defines, sizeof defines,
+             "#define SAMPLES %d\n#define LINEAR_OUT %d\n#define ADAPTIVE 1\n", samples,
+             linear ? 1 : 0);
+    return make_tonemap(t, "tonemap.glsl tonemap.frag", defines);
+}
+
+const struct rd_tonemap_program *rd_edge_mask_program(rd_context *ctx)
+{
+    return ctx->edge_mask.id ? &ctx->edge_mask
+                             : make_tonemap(&ctx->edge_mask, "tonemap.glsl edge_mask.frag", "");
+}
+
+const struct rd_tonemap_program *rd_mask_stencil_program(rd_context *ctx)
+{
+    return ctx->mask_stencil.id ? &ctx->mask_stencil
+                                : make_tonemap(&ctx->mask_stencil, "mask_stencil.frag", "");
 }
 
 rd_result rd_prefilter_program_create(rd_context *ctx)
@@ -240,4 +277,13 @@ void rd_programs_destroy(rd_context *ctx)
                 glDeleteProgram(ctx->tonemap[s][l].id);
                 ctx->tonemap[s][l].id = 0;
             }
+    for (int k = 0; k < 10; k++) {
+        struct rd_tonemap_program *t = k < 8    ? &ctx->tonemap_adaptive[k / 2][k % 2]
+                                       : k == 8 ? &ctx->edge_mask
+                                                : &ctx->mask_stencil;
+        if (t->id) {
+            glDeleteProgram(t->id);
+            t->id = 0;
+        }
+    }
 }

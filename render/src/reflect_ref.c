@@ -115,6 +115,20 @@ float rd_ref_gloss_exponent(float g)
     return exp2f(13.0f * clamp01(g));
 }
 
+int rd_depth_search_steps(float g)
+{
+    const int mirror_steps = 32, fewest = 8;
+    const float mirror_step = 0.0227f; /* radians: 1.3 degrees */
+    g = clamp01(g);
+    if (g >= 1.0f)
+        return mirror_steps;
+    float half_width = sqrtf(2.0f * 0.6931472f / rd_ref_gloss_exponent(g));
+    float steps = ceilf((float)mirror_steps * mirror_step / half_width);
+    return steps >= (float)mirror_steps ? mirror_steps
+           : steps <= (float)fewest     ? fewest
+                                        : (int)steps;
+}
+
 /* Section 5: the blur chain's levels are matched to their resolution (docs/accuracy.md, the
  * taps): level k >= 1 of a chain of `levels` levels (a probe of 2^(levels - 1) texels) holds
  * the Phong lobe whose half-width sqrt(2 ln 2 / n) spans LOBE_TEXELS texels of that level (a

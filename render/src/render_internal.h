@@ -58,7 +58,7 @@ typedef struct rd_program {
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
         u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
     int u_probe_distance, u_store_distance; /* the "depth" correction (reflect.glsl) */
-    int u_probe_surface, u_surface_highlights, u_lobe_exponent;
+    int u_probe_surface, u_surface_highlights, u_lobe_exponent, u_depth_steps;
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */
@@ -91,7 +91,8 @@ struct rd_context {
 
     unsigned probe_fbo;
     unsigned blit_fbo;
-    unsigned probe_depth; /* depth buffer of probe captures, probe_depth_size square */
+    unsigned isotropic_sampler; /* trilinear, no anisotropy: probe captures' textures */
+    unsigned probe_depth;       /* depth buffer of probe captures, probe_depth_size square */
     int probe_depth_size;
     unsigned prefilter_program;
     unsigned sphere_program; /* sphere map from a cube map (sphere_map_gen.frag) */
@@ -106,7 +107,16 @@ struct rd_context {
     struct rd_tonemap_program {
         unsigned id;
         int u_source, u_exposure, u_white, u_mode;
+        int u_refined, u_threshold, u_samples; /* adaptive supersampling only */
     } tonemap[4][2];
+    /* Adaptive supersampling (renderer_adaptive.c): the resolves by samples per side and
+     * output, and the edge mask, made on first use. */
+    struct rd_tonemap_program tonemap_adaptive[4][2], edge_mask, mask_stencil;
+    struct rd_adaptive_target {
+        unsigned fbo, color, depth_stencil; /* s x s samples; the stencil marks refined pixels */
+        int width, height;
+        rd_target mask; /* one texel a pixel: 1 to refine */
+    } adaptive;
     unsigned empty_vao;
 
     rd_target hdr;     /* scene radiance at supersampled size */
@@ -130,6 +140,19 @@ rd_result rd_programs_create(rd_context *ctx);
 const rd_program *rd_lit_program(rd_context *ctx, int variant);
 /* The tone map program for s samples per side, display or linear output; NULL on failure. */
 const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear);
+/* Adaptive supersampling's programs (renderer_adaptive.c): the resolve of a once-per-pixel
+ * render and its refined pixels' s x s samples (display or linear), and the edge mask. */
+const struct rd_tonemap_program *rd_tonemap_adaptive_program(rd_context *ctx, int samples,
+                                                             int linear);
+const struct rd_tonemap_program *rd_edge_mask_program(rd_context *ctx);
+const struct rd_tonemap_program *rd_mask_stencil_program(rd_context *ctx);
+/* After the once-per-pixel main pass of an adaptive view (v->adaptive, samples > 1): marks
+ * the pixels to refine and renders their s x s samples (renderer_adaptive.c). */
+rd_result rd_adaptive_refine(rd_context *ctx, rd_scene *scene, const rd_view *v, int samples,
+                             const float vp[16], const float view_rot[9]);
+/* Binds the refined samples the adaptive resolve reads to texture unit 1. */
+void rd_adaptive_bind_samples(rd_context *ctx);
+void rd_adaptive_destroy(rd_context *ctx);
 void rd_programs_destroy(rd_context *ctx);
 rd_result rd_prefilter_program_create(rd_context *ctx);
 rd_result rd_sphere_program_create(rd_context *ctx);

@@ -4,6 +4,7 @@
 #include "draw.h"
 #include "probe.h"
 #include "gl_funcs.h"
+#include "phase_timer.h"
 #include "render_internal.h"
 #include "scene_internal.h"
 #include "shadow.h"
@@ -45,6 +46,10 @@ static rd_result validate_view(const rd_context *ctx, const rd_view *v, int *sam
                        (double)v->exposure_ev);
     if (v->white < 0.0f || !isfinite(v->white))
         return rd_fail(RD_ERR_INVALID_ARGUMENT, "tone map white %g must be >= 0", (double)v->white);
+    if (!(v->adaptive_threshold >= 0.0f && v->adaptive_threshold <= 1.0f))
+        return rd_fail(RD_ERR_INVALID_ARGUMENT,
+                       "adaptive supersampling threshold %g is outside [0, 1]",
+                       (double)v->adaptive_threshold);
     *samples = s;
     return RD_OK;
 }
@@ -61,12 +66,25 @@ static void begin_hdr_pass(rd_context *ctx)
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
+/* 1 when a view takes its samples adaptively (renderer_adaptive.c). */
+static int adaptive(const rd_view *v, int samples)
+{
+    return v->adaptive && samples > 1;
+}
+
 static rd_result tonemap_pass(rd_context *ctx, const rd_view *v, int samples, unsigned fbo,
                               int linear)
 {
-    const struct rd_tonemap_program *t = rd_tonemap_program(ctx, samples, linear);
+    const struct rd_tonemap_program *t = adaptive(v, samples)
+                                             ? rd_tonemap_adaptive_program(ctx, samples, linear)
+                                             : rd_tonemap_program(ctx, samples, linear);
     if (!t)
         return RD_ERR_SHADER;
+    if (adaptive(v, samples)) {
+        rd_adaptive_bind_samples(ctx);
+        glUseProgram(t->id);
+        glUniform1i(t->u_refined, 1);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glViewport(0, 0, v->width, v->height);
     glDisable(GL_DEPTH_TEST);
@@ -96,7 +114,8 @@ static rd_result prepare(rd_context *ctx, rd_scene *scene, const rd_view *v, int
         return r;
     if (ctx->ops)
         ctx->ops->make_current(ctx->backend_state);
-    r = rd_target_ensure(&ctx->hdr, v->width * *samples, v->height * *samples, HDR_FORMAT, true);
+    int scale = adaptive(v, *samples) ? 1 : *samples;
+    r = rd_target_ensure(&ctx->hdr, v->width * scale, v->height * scale, HDR_FORMAT, true);
     if (r == RD_OK)
         r = rd_target_ensure(&ctx->display, v->width, v->height, GL_RGBA8, false);
     return r;
@@ -115,14 +134,17 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
                            tanf(0.5f * glm_rad(v->fov_y_deg > 0.0f ? v->fov_y_deg : 60.0f));
     /* SH9 ambient first: the probes' captures light what they see with its coefficients
      * (RENDERING.md section 7), and a still's one frame must not capture them without any. */
+    rd_phase_mark("targets");
     rd_result r = rd_ambient_update(ctx, scene, &stats);
+    rd_phase_mark("SH9 ambient");
     if (r == RD_OK)
         r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &stats);
     if (r == RD_OK)
         r = rd_sphere_maps_update(ctx, scene, view_rot);
     if (r == RD_OK)
         r = rd_shadow_maps_update(ctx, scene);
-    rd_shadow_frame(scene, v, samples);
+    /* An adaptive view's main pass takes each pixel's centre as its one sample. */
+    rd_shadow_frame(scene, v, adaptive(v, samples) ? 1 : samples);
     if (r != RD_OK)
         return r;
     ctx->stats = stats;
@@ -134,6 +156,11 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
                                    .reflections = 1,
                                    .shadows = 1,
                                    .depth_prepass = 1});
+    if (r == RD_OK && adaptive(v, samples)) {
+        rd_phase_mark("main pass, once per pixel");
+        r = rd_adaptive_refine(ctx, scene, v, samples, vp, view_rot);
+        rd_phase_mark("adaptive refinement");
+    }
     if (r != RD_OK)
         return r;
 

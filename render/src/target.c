@@ -21,7 +21,8 @@ rd_result rd_target_ensure(rd_target *t, int width, int height, unsigned interna
         return RD_OK;
     rd_target_destroy(t);
     rd_gl_drain_errors();
-    GLenum type = internal_format == GL_RGBA8 ? GL_UNSIGNED_BYTE : GL_FLOAT;
+    GLenum type =
+        internal_format == GL_RGBA8 || internal_format == GL_R8 ? GL_UNSIGNED_BYTE : GL_FLOAT;
     glGenTextures(1, &t->color);
     glBindTexture(GL_TEXTURE_2D, t->color);
     glTexImage2D(GL_TEXTURE_2D, 0, (GLint)internal_format, width, height, 0, GL_RGBA, type, NULL);

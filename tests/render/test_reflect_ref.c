@@ -203,6 +203,19 @@ static void test_gloss(void)
     CHECK(rd_ref_level_exponent(0, 1) == 8192.0f && rd_ref_level_exponent(3, 0) == 8192.0f);
 }
 
+/* The depth search's steps (rd_depth_search_steps): 32 for a mirror and the sharp chrome whose
+ * lobe is narrower than a mirror's step, fewer as the lobe widens, never below 8, monotone. */
+static void test_depth_steps(void)
+{
+    CHECK(rd_depth_search_steps(1.0f) == 32 && rd_depth_search_steps(0.9f) == 32);
+    CHECK(rd_depth_search_steps(0.8f) == 23); /* half-width 0.0313 rad: ceil(32 * 0.0227 / it) */
+    CHECK(rd_depth_search_steps(0.6f) == 10);
+    CHECK(rd_depth_search_steps(0.0f) == 8 && rd_depth_search_steps(0.35f) == 8);
+    CHECK(rd_depth_search_steps(NAN) == 8 && rd_depth_search_steps(2.0f) == 32);
+    for (int i = 1; i <= 100; i++)
+        CHECK(rd_depth_search_steps((i - 1) / 100.0f) <= rd_depth_search_steps(i / 100.0f));
+}
+
 static void test_lobe(void)
 {
     CHECK(rd_ref_lobe(0.0f, 8) == 0.0f && rd_ref_lobe(-0.5f, 8) == 0.0f);
@@ -631,6 +644,7 @@ int main(void)
     test_correct_box();
     test_correct_sphere();
     test_gloss();
+    test_depth_steps();
     test_lobe();
     test_solid_angle();
     test_convolve();

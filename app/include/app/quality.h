@@ -20,6 +20,9 @@ typedef struct app_quality {
     rd_correction correction;
     /* Probe faces refreshed a frame at most (the live frame budget); 0 = no limit. */
     int probe_faces_per_frame;
+    /* 1: adaptive supersampling (rd_view.adaptive): the s x s samples only where a pixel
+     * differs from its neighbours; 0: every pixel s x s. */
+    int adaptive;
 } app_quality;
 
 /* NULL for an unknown name. */
@@ -31,6 +34,12 @@ const char *app_quality_names(void);
  * small pixels: 2 x 2 at 3840 x 2160 samples the view as densely as 4 x 4 at 1920 x 1080. */
 #define APP_QUALITY_MAX_SAMPLES (70LL * 1000 * 1000)
 int app_quality_supersample(const app_quality *q, int width, int height);
+/* Whether a width x height image takes the preset's samples adaptively (rd_view.adaptive): for
+ * an adaptive preset, at the sizes where its supersampling was lowered. There pixels are small
+ * against what they show (a 3 mm tile joint is 1.5 to 3 pixels at 3840 x 2160), so the centre
+ * sample of each pixel sees every feature the mask must find; in smaller images joints are
+ * thinner than a pixel, centre samples miss them and only full supersampling shows them. */
+int app_quality_adaptive(const app_quality *q, int width, int height);
 /* Applies the preset's probe and shadow settings to the scene's defaults. */
 void app_quality_apply(const app_quality *q, rd_scene *scene);
 

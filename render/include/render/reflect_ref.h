@@ -36,6 +36,12 @@ int rd_ref_correct_sphere(const float p[3], const float r[3], const float c[3], 
 
 /* n(g) = 2^(13 g), g clamped to [0, 1] (NaN -> 0): g = 0 -> 1, g = 1 -> 8192. */
 float rd_ref_gloss_exponent(float g);
+/* The linear steps of the "depth" correction's search (reflect.glsl, correct_depth) for a
+ * lookup of glossiness g: 32 for a mirror, where a step spans about 1.3 degrees as seen from
+ * the probe (docs/accuracy.md, the rail), and as many as keep a step within the lobe's
+ * half-width sqrt(2 ln 2 / n(g)) for a glossy one, 8 at the least: the lobe blurs whatever a
+ * finer step would place (a basin's glaze, g = 0.6: 10 steps). */
+int rd_depth_search_steps(float g);
 /* The level of detail in a prefiltered chain of `levels` mip levels (level 0 = the mirror
  * image): lod(g) = (1 - g) (levels - 1), g clamped as above, levels < 1 taken as 1. */
 float rd_ref_gloss_lod(float g, int levels);

@@ -292,6 +292,7 @@ rd_result rd_scene_read_probe(rd_scene *scene, int index, int face, int level, f
 /* Frame statistics of the last rd_render: faces captured, prefilter passes. */
 typedef struct rd_frame_stats {
     int probes, faces_captured, prefiltered;
+    long long refined_pixels; /* adaptive supersampling: pixels given s x s samples */
 } rd_frame_stats;
 rd_frame_stats rd_last_frame_stats(const rd_context *ctx);
 
@@ -325,6 +326,13 @@ typedef struct rd_view {
      * width x height pixels at (crop_x, crop_y) (top-left origin) of a full_width x
      * full_height image of the same camera, with an off-centre projection. */
     int crop_x, crop_y, full_width, full_height;
+    /* Adaptive supersampling (with supersample s > 1): shade once per pixel, then the s x s
+     * samples of a full supersampled render only for the pixels that differ from a neighbour
+     * by more than adaptive_threshold in a display channel (0..1; 0 = 3/255): edges, tile
+     * joints, penumbrae, highlights. Elsewhere a pixel keeps its centre sample. 0 = every
+     * pixel s x s. */
+    int adaptive;
+    float adaptive_threshold;
 } rd_view;
 
 rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *view);
