@@ -213,10 +213,14 @@ void main()
         if (k > 0.0) // no lookup where the light does not reach (outside a spot's cone)
             k *= shadow_visibility(i, u_light_type[i], u_light_position[i], v_world, N, L);
 #endif
-        vec3 H = normalize(L + V);
         lit += k * c_d * u_light_diffuse[i] * n_dot_l;                                      // eq. 2
+#ifndef NO_SPECULAR
+        // Probe captures that leave highlights to the lookup compile this out (a variant of
+        // its own): llvmpipe would evaluate the power for every texel only to scale it by 0.
+        vec3 H = normalize(L + V);
         lit += u_specular_scale * k * u_mat_specular * u_light_specular[i] *
                blinn_phong_power(dot(N, H), u_mat_shininess); // eq. 3-5
+#endif
     }
 #ifdef HAS_REFLECTION
     // Sections 2-6: R = I - 2 (N.I) N with I = -V; the lookup starts at the capture centre.

@@ -278,6 +278,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                       (shadows ? RD_LIT_SHADOWS : 0);
         if (probe && fast_paths && box_opaque(scene, probe, o))
             variant |= RD_LIT_BOX_OPAQUE;
+        if (pass->specular_off)
+            variant |= RD_LIT_NO_SPECULAR;
         if (depth_only)
             variant = RD_LIT_DEPTH_ONLY;
         const rd_program *p = rd_lit_program(ctx, variant);

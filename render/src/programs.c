@@ -143,15 +143,16 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
     int sphere = reflecting && (variant & RD_LIT_SPHERE_MAP);
     int box_opaque = reflecting && !per_vertex && !sphere && (variant & RD_LIT_BOX_OPAQUE);
-    char defines[320];
-    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s%s%s", RD_MAX_LIGHTS,
+    char defines[360];
+    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s%s%s%s", RD_MAX_LIGHTS,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
              per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "",
              sphere ? "#define SPHERE_MAP 1\n" : "",
              (variant & RD_LIT_SH9) ? "#define SH9_AMBIENT 1\n" : "",
              (variant & RD_LIT_SHADOWS) ? "#define HAS_SHADOWS 1\n" : "",
-             box_opaque ? "#define BOX_OPAQUE_REFLECTION 1\n" : "");
+             box_opaque ? "#define BOX_OPAQUE_REFLECTION 1\n" : "",
+             (variant & RD_LIT_NO_SPECULAR) ? "#define NO_SPECULAR 1\n" : "");
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else

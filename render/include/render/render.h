@@ -328,7 +328,7 @@ typedef struct rd_view {
     int crop_x, crop_y, full_width, full_height;
     /* Adaptive supersampling (with supersample s > 1): shade once per pixel, then the s x s
      * samples of a full supersampled render only for the pixels that differ from a neighbour
-     * by more than adaptive_threshold in a display channel (0..1; 0 = 3/255): edges, tile
+     * by more than adaptive_threshold in a display channel (0..1; 0 = 4/255): edges, tile
      * joints, penumbrae, highlights. Elsewhere a pixel keeps its centre sample. 0 = every
      * pixel s x s. */
     int adaptive;
