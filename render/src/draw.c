@@ -401,3 +401,15 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
     glBindVertexArray(0);
     return r;
 }
+
+rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
+                       const float *view_rot, const float *eye)
+{
+    return rd_draw_objects(ctx, scene,
+                           &(rd_pass){.view_proj = view_proj,
+                                      .view_rot = view_rot,
+                                      .eye = eye,
+                                      .reflections = 1,
+                                      .shadows = 1,
+                                      .depth_prepass = 1});
+}

@@ -20,6 +20,10 @@ typedef struct rd_pass {
 } rd_pass;
 
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);
+/* The view's own pass: reflections, shadows, the depth prepass (renderer.c, and the adaptive
+ * refinement of renderer_adaptive.c). */
+rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
+                       const float *view_rot, const float *eye);
 
 /* Per-frame (view, lights) and per-object (model, material) uniforms of a lit program. */
 void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],

@@ -192,29 +192,28 @@ static const struct rd_tonemap_program *make_tonemap(struct rd_tonemap_program *
     return t;
 }
 
-const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear)
+/* A resolve variant (tonemap.frag), made on first use into *t. */
+static const struct rd_tonemap_program *resolve_program(struct rd_tonemap_program *t, int samples,
+                                                        int linear, int adaptive)
 {
-    struct rd_tonemap_program *t = &ctx->tonemap[samples - 1][linear ? 1 : 0];
     if (t->id)
         return t;
     char defines[96];
     snprintf(defines, sizeof defines,
-             "#define SAMPLES %d\n#define LINEAR_OUT %d\n#define ADAPTIVE 0\n", samples,
-             linear ? 1 : 0);
+             "#define SAMPLES %d\n#define LINEAR_OUT %d\n#define ADAPTIVE %d\n", samples,
+             linear ? 1 : 0, adaptive);
     return make_tonemap(t, "tonemap.glsl tonemap.frag", defines);
+}
+
+const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear)
+{
+    return resolve_program(&ctx->tonemap[samples - 1][linear ? 1 : 0], samples, linear, 0);
 }
 
 const struct rd_tonemap_program *rd_tonemap_adaptive_program(rd_context *ctx, int samples,
                                                              int linear)
 {
-    struct rd_tonemap_program *t = &ctx->tonemap_adaptive[samples - 1][linear ? 1 : 0];
-    if (t->id)
-        return t;
-    char defines[96];
-    snprintf(defines, sizeof defines,
-             "#define SAMPLES %d\n#define LINEAR_OUT %d\n#define ADAPTIVE 1\n", samples,
-             linear ? 1 : 0);
-    return make_tonemap(t, "tonemap.glsl tonemap.frag", defines);
+    return resolve_program(&ctx->tonemap_adaptive[samples - 1][linear ? 1 : 0], samples, linear, 1);
 }
 
 const struct rd_tonemap_program *rd_edge_mask_program(rd_context *ctx)

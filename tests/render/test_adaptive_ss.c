@@ -11,6 +11,7 @@
  * The backend comes from TESSERA_GL. */
 #include "../common/check.h"
 #include "golden.h"
+#include "../common/gl_scene.h"
 #include "render/primitives.h"
 #include "render/render.h"
 
@@ -20,29 +21,6 @@
 
 enum { W = 192, H = 128 };
 
-static rd_mesh upload(rd_context *ctx, int sphere)
-{
-    rd_mesh_data d;
-    if (sphere)
-        rd_mesh_data_sphere(32, 16, &d);
-    else
-        rd_mesh_data_box(&d);
-    rd_mesh_desc desc = rd_mesh_data_desc(&d);
-    rd_mesh m = rd_mesh_create(ctx, &desc);
-    rd_mesh_data_free(&d);
-    return m;
-}
-
-static void place(float m[16], float x, float y, float z, float scale)
-{
-    memset(m, 0, 16 * sizeof(float));
-    m[0] = m[5] = m[10] = scale;
-    m[12] = x;
-    m[13] = y;
-    m[14] = z;
-    m[15] = 1.0f;
-}
-
 static rd_scene *make_scene(rd_context *ctx, rd_mesh box, rd_mesh sphere)
 {
     rd_scene *s = rd_scene_create(ctx);
@@ -51,14 +29,14 @@ static rd_scene *make_scene(rd_context *ctx, rd_mesh box, rd_mesh sphere)
         .double_sided = 1,
         .background = 1,
         .material = {.ambient = {0.3f, 0.3f, 0.3f}, .diffuse = {0.6f, 0.65f, 0.7f}}};
-    place(room.transform, 0, 0, 0, 4.0f);
+    test_place(room.transform, 0, 0, 0, 4.0f);
     CHECK(rd_scene_add_object(s, &room) == RD_OK);
     rd_object_desc block = {.mesh = box,
                             .material = {.ambient = {0.2f, 0.0f, 0.0f},
                                          .diffuse = {0.9f, 0.1f, 0.1f},
                                          .specular = {0.3f, 0.3f, 0.3f},
                                          .shininess = 20}};
-    place(block.transform, -0.9f, 0.8f, -1.6f, 0.4f);
+    test_place(block.transform, -0.9f, 0.8f, -1.6f, 0.4f);
     CHECK(rd_scene_add_object(s, &block) == RD_OK);
     rd_object_desc chrome = {.mesh = sphere,
                              .material = {.diffuse = {0.1f, 0.1f, 0.1f},
@@ -66,7 +44,7 @@ static rd_scene *make_scene(rd_context *ctx, rd_mesh box, rd_mesh sphere)
                                           .shininess = 80,
                                           .reflectivity = 0.9f,
                                           .glossiness = 0.95f}};
-    place(chrome.transform, 0.3f, 0, -1.5f, 0.5f);
+    test_place(chrome.transform, 0.3f, 0, -1.5f, 0.5f);
     CHECK(rd_scene_add_object(s, &chrome) == RD_OK);
     rd_light l = {.type = RD_LIGHT_POINT,
                   .position = {0.5f, -0.5f, 1.2f},
@@ -214,7 +192,7 @@ int main(void)
         fprintf(stderr, "no GL context: %s\n", rd_last_error());
         return 1;
     }
-    rd_mesh box = upload(ctx, 0), sphere = upload(ctx, 1);
+    rd_mesh box = test_upload_mesh(ctx, 0), sphere = test_upload_mesh(ctx, 1);
     rd_scene *s = make_scene(ctx, box, sphere);
     test_adaptive_equals_full(ctx, s);
     test_linear_readback(ctx, s);

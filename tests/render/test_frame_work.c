@@ -7,6 +7,7 @@
  *    general path draws (TESSERA_NO_FAST_PATHS=1), to within one 8-bit step on a few pixels.
  * The backend comes from TESSERA_GL. */
 #include "../common/check.h"
+#include "../common/gl_scene.h"
 #include "render/primitives.h"
 #include "render/render.h"
 
@@ -15,29 +16,6 @@
 #include <string.h>
 
 enum { W = 96, H = 72, BUDGET = 2 };
-
-static rd_mesh upload(rd_context *ctx, int sphere)
-{
-    rd_mesh_data d;
-    if (sphere)
-        rd_mesh_data_sphere(32, 16, &d);
-    else
-        rd_mesh_data_box(&d);
-    rd_mesh_desc desc = rd_mesh_data_desc(&d);
-    rd_mesh m = rd_mesh_create(ctx, &desc);
-    rd_mesh_data_free(&d);
-    return m;
-}
-
-static void place(float m[16], float x, float y, float z, float scale)
-{
-    memset(m, 0, 16 * sizeof(float));
-    m[0] = m[5] = m[10] = scale;
-    m[12] = x;
-    m[13] = y;
-    m[14] = z;
-    m[15] = 1.0f;
-}
 
 /* A room-like box seen from inside, a red block and a chrome sphere that reflects it. */
 static rd_scene *make_scene(rd_context *ctx, rd_mesh box, rd_mesh sphere, float block_x,
@@ -49,14 +27,14 @@ static rd_scene *make_scene(rd_context *ctx, rd_mesh box, rd_mesh sphere, float 
         .double_sided = 1,
         .background = 1,
         .material = {.ambient = {0.3f, 0.3f, 0.3f}, .diffuse = {0.6f, 0.65f, 0.7f}}};
-    place(room.transform, 0, 0, 0, 4.0f);
+    test_place(room.transform, 0, 0, 0, 4.0f);
     CHECK(rd_scene_add_object(s, &room) == RD_OK);
     rd_object_desc block = {.mesh = box,
                             .material = {.ambient = {0.2f, 0.0f, 0.0f},
                                          .diffuse = {0.9f, 0.1f, 0.1f},
                                          .specular = {0.3f, 0.3f, 0.3f},
                                          .shininess = 20}};
-    place(block.transform, block_x, 0.8f, 0.0f, 0.4f);
+    test_place(block.transform, block_x, 0.8f, 0.0f, 0.4f);
     CHECK(rd_scene_add_object(s, &block) == RD_OK);
     rd_object_desc chrome = {.mesh = sphere,
                              .material = {.diffuse = {0.1f, 0.1f, 0.1f},
@@ -64,7 +42,7 @@ static rd_scene *make_scene(rd_context *ctx, rd_mesh box, rd_mesh sphere, float 
                                           .shininess = 80,
                                           .reflectivity = 0.9f,
                                           .glossiness = 0.95f}};
-    place(chrome.transform, 0, 0, 0, 0.5f);
+    test_place(chrome.transform, 0, 0, 0, 0.5f);
     CHECK(rd_scene_add_object(s, &chrome) == RD_OK);
     rd_light l = {.type = RD_LIGHT_POINT,
                   .position = {0.5f, -1.0f, 1.5f},
@@ -124,7 +102,7 @@ static double max_diff(const uint8_t *a, const uint8_t *b, size_t n, size_t *dif
 
 static void test_on_change_probes(rd_context *ctx)
 {
-    rd_mesh box = upload(ctx, 0), sphere = upload(ctx, 1);
+    rd_mesh box = test_upload_mesh(ctx, 0), sphere = test_upload_mesh(ctx, 1);
     rd_scene *s = make_scene(ctx, box, sphere, -0.9f, RD_PROBE_ON_CHANGE, 0);
     rd_view v = orbit_view(0, 1.6f);
     CHECK(rd_render(ctx, s, &v) == RD_OK);
@@ -170,7 +148,7 @@ static void test_on_change_probes(rd_context *ctx)
     float before[6][4] = {{0}}, after[6][4];
     {
         float moved[16];
-        place(moved, 0.9f, 0.8f, 0.0f, 0.4f);
+        test_place(moved, 0.9f, 0.8f, 0.0f, 0.4f);
         /* the mean of every face before the move */
         for (int face = 0; face < 6; face++) {
             static float px[512 * 512 * 4];
@@ -238,7 +216,7 @@ static void test_on_change_probes(rd_context *ctx)
     CHECK(rd_render(ctx, s, &v) == RD_OK);
     CHECK(rd_last_frame_stats(ctx).faces_captured == 0);
     float moved[16];
-    place(moved, 0.9f, 0.8f, 0.0f, 0.4f);
+    test_place(moved, 0.9f, 0.8f, 0.0f, 0.4f);
     CHECK(rd_scene_set_transform(s, 1, moved) == RD_OK);
     CHECK(rd_render(ctx, s, &v) == RD_OK);
     CHECK_MSG(rd_last_frame_stats(ctx).faces_captured == 6, "unbudgeted on change: %d faces",
@@ -250,7 +228,7 @@ static void test_on_change_probes(rd_context *ctx)
 
 static void test_fast_paths_match(rd_context *ctx)
 {
-    rd_mesh box = upload(ctx, 0), sphere = upload(ctx, 1);
+    rd_mesh box = test_upload_mesh(ctx, 0), sphere = test_upload_mesh(ctx, 1);
     static uint8_t img[2][W * H * 4];
     for (int slow = 0; slow < 2; slow++) {
         setenv("TESSERA_NO_FAST_PATHS", slow ? "1" : "0", 1);
@@ -258,7 +236,7 @@ static void test_fast_paths_match(rd_context *ctx)
         /* a second reflective sphere partly behind the first: overdraw among fixtures */
         rd_object_desc second;
         CHECK(rd_scene_object_desc(s, 2, &second) == RD_OK);
-        place(second.transform, 0.35f, 0.5f, 0.1f, 0.45f);
+        test_place(second.transform, 0.35f, 0.5f, 0.1f, 0.45f);
         second.material.glossiness = 1.0f;
         CHECK(rd_scene_add_object(s, &second) == RD_OK);
         rd_view v = orbit_view(20, 1.7f);

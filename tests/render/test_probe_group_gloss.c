@@ -7,22 +7,13 @@
  * is at least half as bright as the same sphere alone in its own group) in both orders of the
  * group. The backend comes from TESSERA_GL. */
 #include "../common/check.h"
+#include "../common/gl_scene.h"
 #include "render/primitives.h"
 #include "render/render.h"
 
 #include <string.h>
 
 enum { W = 64, H = 48 };
-
-static void place(float m[16], float x, float y, float z, float scale)
-{
-    memset(m, 0, 16 * sizeof(float));
-    m[0] = m[5] = m[10] = scale;
-    m[12] = x;
-    m[13] = y;
-    m[14] = z;
-    m[15] = 1.0f;
-}
 
 /* The centre pixel's brightness of the glossy sphere (at x = 0.6), 0..765. */
 static int glossy_brightness(rd_context *ctx, rd_mesh box, rd_mesh sphere, int mirror_first,
@@ -34,7 +25,7 @@ static int glossy_brightness(rd_context *ctx, rd_mesh box, rd_mesh sphere, int m
         .double_sided = 1,
         .background = 1,
         .material = {.ambient = {0.5f, 0.5f, 0.5f}, .diffuse = {0.7f, 0.7f, 0.7f}}};
-    place(room.transform, 0, 0, 0, 4.0f);
+    test_place(room.transform, 0, 0, 0, 4.0f);
     CHECK(rd_scene_add_object(s, &room) == RD_OK);
     rd_object_desc mirror = {.mesh = sphere,
                              .group = 7,
@@ -43,11 +34,11 @@ static int glossy_brightness(rd_context *ctx, rd_mesh box, rd_mesh sphere, int m
                                           .shininess = 500,
                                           .reflectivity = 0.9f,
                                           .glossiness = 1.0f}};
-    place(mirror.transform, -0.6f, 0, 0, 0.25f);
+    test_place(mirror.transform, -0.6f, 0, 0, 0.25f);
     rd_object_desc glossy = mirror;
     glossy.group = shared ? 7 : 8;
     glossy.material.glossiness = 0.9f;
-    place(glossy.transform, 0.6f, 0, 0, 0.25f);
+    test_place(glossy.transform, 0.6f, 0, 0, 0.25f);
     CHECK(rd_scene_add_object(s, mirror_first ? &mirror : &glossy) == RD_OK);
     CHECK(rd_scene_add_object(s, mirror_first ? &glossy : &mirror) == RD_OK);
     rd_light l = {.type = RD_LIGHT_POINT,
