@@ -134,6 +134,15 @@ static void place_probe(rd_context *ctx, const rd_scene *s, rd_probe *p)
     p->detail_size = sqrtf(big * mid);
 }
 
+/* A material that does not name its correction, under a scene-wide "depth" (the print preset),
+ * whose reflection is faint and blurred (k_r and g below RD_DEPTH_MIN_*), not glass. */
+static int faint_under_depth(const rd_scene *s, const rd_material *m)
+{
+    return m->correction == RD_CORRECTION_DEFAULT &&
+           s->reflection.correction == RD_CORRECTION_DEPTH && m->transparency <= 0.0f &&
+           m->reflectivity < RD_DEPTH_MIN_REFLECTIVITY && m->glossiness < RD_DEPTH_MIN_GLOSSINESS;
+}
+
 rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m)
 {
     if (m->correction != RD_CORRECTION_DEFAULT)
@@ -146,10 +155,7 @@ rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m)
      * (designed demo, 3840 x 2160: the basin and the bath took a fifth of the main pass).
      * A material that names its correction keeps it; glass keeps depth (what it shows through
      * is most of its colour). docs/accuracy.md measures the trade. */
-    if (c == RD_CORRECTION_DEPTH && m->transparency <= 0.0f &&
-        m->reflectivity < RD_DEPTH_MIN_REFLECTIVITY && m->glossiness < RD_DEPTH_MIN_GLOSSINESS)
-        return RD_CORRECTION_BOX;
-    return c;
+    return faint_under_depth(s, m) ? RD_CORRECTION_BOX : c;
 }
 
 rd_blur_method rd_effective_blur(const rd_scene *s)
@@ -248,7 +254,13 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
                                                : (supersample > 1 ? 512 : 256);
     if (cap > max_size)
         cap = max_size;
-    if (fixed > 0)
+    /* A fixed size (the print preset's 512) is kept, but for the faint glazes that the print
+     * preset's scene-wide "depth" leaves to the box (faint_under_depth): their colour is only
+     * ever read through their lobe, so the gloss cap below holds for them as in auto sizing
+     * (a glaze of g = 0.6 is read at the 64-texel level of a 512 capture, which a 128 capture
+     * makes as well; designed demo, 4K print: six such probes). */
+    int glaze = faint_under_depth(s, &s->objects[p->owner].material);
+    if (fixed > 0 && !glaze)
         return fixed < max_size ? fixed : max_size;
     float d = glm_vec3_distance((float *)eye, (float *)p->centre);
     float diameter_px = p->detail_size / fmaxf(d, 1e-3f) * pixels_per_tan * (float)supersample;
@@ -260,6 +272,8 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
      * (size / 2, size]; a first capture (a still) takes the plain rounding. */
     if (p->size > 0 && wanted > (float)p->size / 3.0f && wanted <= 1.5f * (float)p->size)
         n = p->size;
+    if (fixed > 0) /* a glaze's fixed size: only the gloss cap applies */
+        n = fixed < max_size ? fixed : max_size;
     /* A blurred reflection needs no more texels than its lobe can show: about two texels
      * across the lobe's half-width sqrt(2 ln 2 / n(g)) (a face spans pi/2). */
     float g = p->gloss_max; /* the sharpest of the objects that look it up */
@@ -274,6 +288,8 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
     /* Below 64 texels a face costs about the same (the capture is its fixed overhead:
      * tessera probe-bench), while bright surroundings bleed across its coarse texels: 64 is
      * the floor (docs/accuracy.md). */
+    if (fixed > 0)
+        return n < 64 && fixed >= 64 ? 64 : n;
     return n < 64 ? (cap < 64 ? cap : 64) : n > cap ? cap : n;
 }
 
