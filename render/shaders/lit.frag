@@ -41,6 +41,10 @@ in vec3 v_reflect;
 uniform sampler2D u_sphere_map;
 uniform mat3 u_view_rot; // world to view: the viewer looks down -Z
 #endif
+#ifdef PLANAR_REFLECTION
+uniform sampler2D u_planar;       // a flat mirror's capture from the eye's image (probe_planar.c)
+uniform mat4 u_planar_view_proj; // world -> that capture's clip space
+#endif
 #ifdef HAS_REFLECTION
 uniform samplerCube u_probe;
 uniform vec3 u_probe_centre;
@@ -240,6 +244,11 @@ void main()
 #endif
 #ifdef SPHERE_MAP
     vec3 refl = textureLod(u_sphere_map, sphere_map_st(u_view_rot * d), u_lod).rgb;
+#elif defined(PLANAR_REFLECTION)
+    // A flat mirror: every reflected ray comes from the eye's image, whose view through the
+    // mirror shows what the ray from this point sees, at this point's own projection.
+    vec4 pc = u_planar_view_proj * vec4(v_world, 1.0);
+    vec3 refl = pc.w > 0.0 ? textureLod(u_planar, pc.xy / pc.w * 0.5 + 0.5, 0.0).rgb : vec3(0.0);
 #else
     vec3 refl = textureLod(u_probe, world_to_cmcs(d), u_lod).rgb;
 #endif

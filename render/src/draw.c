@@ -177,7 +177,14 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     rd_effective_proxy(s, bmin, bmax);
     rd_correction c = rd_effective_correction(s, m);
     glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, rd_probe_texture(s, probe));
+    glBindTexture(GL_TEXTURE_CUBE_MAP, probe->planar ? 0 : rd_probe_texture(s, probe));
+    if (probe->planar) {
+        glActiveTexture(GL_TEXTURE5);
+        glBindTexture(GL_TEXTURE_2D, probe->planar_texture);
+        glUniform1i(p->u_planar, 5);
+        glUniformMatrix4fv(p->u_planar_view_proj, 1, GL_FALSE, probe->planar_view_proj);
+        glActiveTexture(GL_TEXTURE1);
+    }
     glUniform1i(p->u_probe, 1);
     glUniform3fv(p->u_probe_centre, 1, probe->centre);
     glUniform1i(p->u_correction, (int)c);
@@ -253,7 +260,7 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
         if (!pass->reflections && o->material.transparency > 0.0f)
             continue;
         const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
-        if (!pass->reflections && o->probe_mesh.id) {
+        if (!pass->reflections && !pass->full_meshes && o->probe_mesh.id) {
             const rd_mesh_slot *coarse = rd_mesh_lookup(ctx, o->probe_mesh);
             if (coarse)
                 m = coarse;
@@ -278,6 +285,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                       (shadows ? RD_LIT_SHADOWS : 0);
         if (probe && fast_paths && box_opaque(scene, probe, o))
             variant |= RD_LIT_BOX_OPAQUE;
+        if (probe && probe->planar)
+            variant |= RD_LIT_PLANAR; /* its own lookup (probe_planar.c) */
         if (pass->specular_off)
             variant |= RD_LIT_NO_SPECULAR;
         if (depth_only)

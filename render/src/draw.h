@@ -17,6 +17,7 @@ typedef struct rd_pass {
     int shadows;            /* 1: the scene's shadow maps darken what they cover (main view) */
     int depth_prepass;      /* 1: depth only first, then shade each visible pixel once */
     int isotropic_textures; /* 1: trilinear textures without anisotropy (probe captures) */
+    int full_meshes;        /* 1: a capture draws objects' full meshes, not probe meshes */
 } rd_pass;
 
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);

@@ -1,6 +1,7 @@
 /* Per-object reflection probes (RENDERING.md sections 3, 5, 8): which objects get one, when
  * each is captured, at what resolution, and which texture the main pass samples. */
 #include "probe.h"
+#include "probe_planar.h"
 #include "draw.h"
 #include "gl_funcs.h"
 #include "phase_timer.h"
@@ -16,7 +17,12 @@
 
 int rd_object_key(const rd_scene *s, int i)
 {
-    return s->objects[i].group > 0 ? s->objects[i].group : -(i + 1);
+    const rd_object_desc *o = &s->objects[i];
+    /* Glass in a group (a screen's panes beside its profiles) takes a probe of its own, which
+     * leaves only the glass out of its capture: what the panes show through them includes
+     * their own product's profiles, as the traced reference sees them. */
+    int own = rd_planar_candidate(s, o) || o->material.transparency > 0.0f;
+    return o->group > 0 && !own ? o->group : -(i + 1);
 }
 
 static void free_probe_textures(rd_probe *p)
@@ -29,7 +35,10 @@ static void free_probe_textures(rd_probe *p)
         glDeleteTextures(1, &p->sphere_map);
     if (p->surface)
         glDeleteTextures(1, &p->surface);
-    p->capture = p->filtered = p->sphere_map = p->surface = 0;
+    if (p->planar_texture)
+        glDeleteTextures(1, &p->planar_texture);
+    p->capture = p->filtered = p->sphere_map = p->surface = p->planar_texture = 0;
+    p->planar_width = p->planar_height = 0;
 }
 
 void rd_probes_destroy(rd_scene *s)
@@ -376,6 +385,7 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
      * surface): the near plane must not cut that wall away. */
     glm_perspective(glm_rad(90.0f), 1.0f, fmaxf(far_m * 1e-4f, 1e-5f), far_m, proj);
     glm_mat4_mul(proj, view, vp);
+
     if (p->surface) {
         /* No surface (the clear) has no highlight: shininess -1. */
         static const float none[4] = {0.0f, 0.0f, 0.0f, -1.0f};
@@ -437,6 +447,8 @@ float rd_probe_lod(const rd_probe *p, float glossiness)
 
 unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p)
 {
+    if (p->planar) /* a 2D texture (probe_planar.c), of this frame's eye or none */
+        return p->planar_frame == s->frame ? p->planar_texture : 0;
     const rd_object_desc *o = &s->objects[p->owner];
     if (o->probe.update == RD_PROBE_STATIC) {
         const rd_texture_slot *t = rd_cubemap_lookup(s->ctx, o->probe.static_map);
@@ -451,8 +463,9 @@ unsigned rd_probe_texture(const rd_scene *s, const rd_probe *p)
 
 /* After a complete capture: the blur its objects' glossiness needs (from the sharpest's
  * level to the roughest's), and nothing when they are all mirrors. Objects sharing a probe
- * may differ (a glass screen, g = 1, and its chrome rail, g = 0.9): a level nobody made reads
- * black, so every level any of them looks up is made. */
+ * may differ (a mirror and its frame, g = 1 and 0.9, with planar mirrors off; glass and planar
+ * mirrors take probes of their own, rd_object_key): a level nobody made reads black, so every
+ * level any of them looks up is made. */
 static rd_result blur_probe(rd_context *ctx, rd_scene *s, rd_probe *p, unsigned source,
                             int source_size, rd_frame_stats *stats)
 {
@@ -530,6 +543,18 @@ rd_result rd_scene_update_spheres(rd_context *ctx, rd_scene *s)
 }
 
 /* Whether any object of the probe's key is inside the main view's frustum. */
+/* A capture's far plane: far enough to see the whole scene (the proxy) from `centre`. */
+static float capture_far(const float centre[3], const float bmin[3], const float bmax[3])
+{
+    float reach = 0.0f;
+    for (int c = 0; c < 8; c++) {
+        vec3 corner = {c & 1 ? bmax[0] : bmin[0], c & 2 ? bmax[1] : bmin[1],
+                       c & 4 ? bmax[2] : bmin[2]};
+        reach = fmaxf(reach, glm_vec3_distance((float *)centre, corner));
+    }
+    return isfinite(reach) && reach > 0.0f ? reach * 2.0f : 100.0f;
+}
+
 static int probe_visible(const rd_scene *s, const rd_probe *p, vec4 planes[6])
 {
     for (int i = 0; i < s->object_count; i++) {
@@ -547,7 +572,7 @@ static int probe_visible(const rd_scene *s, const rd_probe *p, vec4 planes[6])
 
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
                            const float eye[3], float pixels_per_tan, int supersample,
-                           rd_frame_stats *stats)
+                           const rd_planar_view *planar, rd_frame_stats *stats)
 {
     rd_result r = rd_probes_sync(s);
     if (r == RD_OK)
@@ -574,6 +599,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         rd_probe *p = &s->probes[i];
         const rd_object_desc *owner = &s->objects[p->owner];
         place_probe(ctx, s, p);
+        rd_probe_plan_planar(ctx, s, p, eye);
         if (owner->probe.update == RD_PROBE_STATIC) {
             const rd_texture_slot *t = rd_cubemap_lookup(ctx, owner->probe.static_map);
             if (!t)
@@ -585,6 +611,25 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                 if (r != RD_OK)
                     return r;
                 p->captured_frame = s->frame;
+            }
+            continue;
+        }
+        /* A planar mirror's capture follows the eye: made afresh every frame it is seen (a
+         * cube it may have kept is stale by the time it is used again). */
+        if (p->planar) {
+            p->faces_valid = 0;
+            if (probe_visible(s, p, planes)) {
+                rd_phase_mark("probe set-up");
+                r = rd_planar_capture(ctx, s, p, planar, capture_far(p->centre, bmin, bmax));
+                rd_phase_mark("probe captures");
+                if (r != RD_OK)
+                    return r;
+                if (p->planar_frame != s->frame)
+                    continue; /* none of it in view */
+                stats->planar_mirrors++;
+                if (rd_phase_enabled())
+                    fprintf(stderr, "planar mirror: %d x %d texels\n", p->planar_width,
+                            p->planar_height);
             }
             continue;
         }
@@ -626,14 +671,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                 continue; /* its turn comes in a later frame */
             spent += n;
         }
-        /* Far enough to see the whole scene from the probe. */
-        float reach = 0.0f;
-        for (int c = 0; c < 8; c++) {
-            vec3 corner = {c & 1 ? bmax[0] : bmin[0], c & 2 ? bmax[1] : bmin[1],
-                           c & 4 ? bmax[2] : bmin[2]};
-            reach = fmaxf(reach, glm_vec3_distance(p->centre, corner));
-        }
-        float far_m = isfinite(reach) && reach > 0.0f ? reach * 2.0f : 100.0f;
+        float far_m = capture_far(p->centre, bmin, bmax);
         if (faces == 0x3f) {
             p->captured_stamp = s->change_counter;
             /* Time-sliced probes end their first round after 1 to 6 faces, by index, so that

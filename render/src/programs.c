@@ -128,6 +128,8 @@ static void locate_lit(rd_program *p)
     p->u_thin = glGetUniformLocation(id, "u_thin");
     p->u_probe_distance = glGetUniformLocation(id, "u_probe_distance");
     p->u_store_distance = glGetUniformLocation(id, "u_store_distance");
+    p->u_planar = glGetUniformLocation(id, "u_planar");
+    p->u_planar_view_proj = glGetUniformLocation(id, "u_planar_view_proj");
     p->u_probe_surface = glGetUniformLocation(id, "u_probe_surface");
     p->u_surface_highlights = glGetUniformLocation(id, "u_surface_highlights");
     p->u_lobe_exponent = glGetUniformLocation(id, "u_lobe_exponent");
@@ -142,9 +144,12 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
     int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
     int sphere = reflecting && (variant & RD_LIT_SPHERE_MAP);
-    int box_opaque = reflecting && !per_vertex && !sphere && (variant & RD_LIT_BOX_OPAQUE);
-    char defines[360];
-    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s%s%s%s", RD_MAX_LIGHTS,
+    int planar = reflecting && !per_vertex && !sphere && (variant & RD_LIT_PLANAR);
+    /* A planar mirror needs none of the full path's refraction, search or highlights. */
+    int box_opaque =
+        reflecting && !per_vertex && !sphere && (planar || (variant & RD_LIT_BOX_OPAQUE));
+    char defines[400];
+    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s%s%s%s%s", RD_MAX_LIGHTS,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
              per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "",
@@ -152,7 +157,8 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
              (variant & RD_LIT_SH9) ? "#define SH9_AMBIENT 1\n" : "",
              (variant & RD_LIT_SHADOWS) ? "#define HAS_SHADOWS 1\n" : "",
              box_opaque ? "#define BOX_OPAQUE_REFLECTION 1\n" : "",
-             (variant & RD_LIT_NO_SPECULAR) ? "#define NO_SPECULAR 1\n" : "");
+             (variant & RD_LIT_NO_SPECULAR) ? "#define NO_SPECULAR 1\n" : "",
+             planar ? "#define PLANAR_REFLECTION 1\n" : "");
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else

@@ -58,6 +58,7 @@ typedef struct rd_program {
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
         u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
     int u_probe_distance, u_store_distance; /* the "depth" correction (reflect.glsl) */
+    int u_planar, u_planar_view_proj;       /* a flat mirror's planar capture (probe_planar.c) */
     int u_probe_surface, u_surface_highlights, u_lobe_exponent, u_depth_steps;
 } rd_program;
 
@@ -73,7 +74,8 @@ enum {
                                  highlights: llvmpipe runs untaken uniform branches (issue 8) */
     RD_LIT_DEPTH_ONLY = 128,  /* alone: lit.vert with depth_only.frag (the depth prepass) */
     RD_LIT_NO_SPECULAR = 256, /* probe captures that leave highlights out: no specular code */
-    RD_LIT_VARIANTS = 512
+    RD_LIT_PLANAR = 512,      /* a flat mirror's lookup in its planar capture (probe_planar.c) */
+    RD_LIT_VARIANTS = 1024
 };
 
 struct rd_context {
@@ -95,6 +97,9 @@ struct rd_context {
     unsigned isotropic_sampler; /* trilinear, no anisotropy: probe captures' textures */
     unsigned probe_depth;       /* depth buffer of probe captures, probe_depth_size square */
     int probe_depth_size;
+    unsigned planar_depth; /* depth buffer of planar mirror captures, planar_depth_w x _h: kept
+                              apart, so the cube captures do not clear a buffer that big */
+    int planar_depth_w, planar_depth_h;
     unsigned prefilter_program;
     unsigned sphere_program; /* sphere map from a cube map (sphere_map_gen.frag) */
     int sm_u_source, sm_u_view_rot, sm_u_size;
@@ -134,6 +139,11 @@ rd_texture_slot *rd_texture_lookup(rd_context *ctx, rd_texture tex);
 rd_texture_slot *rd_cubemap_lookup(rd_context *ctx, rd_cubemap map);
 /* A depth buffer of at least size x size attached to ctx->probe_fbo (bound). */
 rd_result rd_probe_depth_ensure(rd_context *ctx, int size);
+/* (Re)specifies *name (made when 0) as a w x h RGBA16F texture, linear filtering, clamped to
+ * its edges; `mipmapped`: trilinear over mips to be generated, else level 0 only. */
+void rd_float_texture_2d(unsigned *name, int w, int h, int mipmapped);
+/* The same for a planar mirror's w x h capture (probe_planar.c). */
+rd_result rd_planar_depth_ensure(rd_context *ctx, int w, int h);
 void rd_resources_destroy_all(rd_context *ctx);
 
 rd_result rd_programs_create(rd_context *ctx);

@@ -3,6 +3,7 @@
 #include "camera.h"
 #include "draw.h"
 #include "probe.h"
+#include "probe_planar.h"
 #include "gl_funcs.h"
 #include "phase_timer.h"
 #include "render_internal.h"
@@ -137,14 +138,18 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     rd_phase_mark("targets");
     rd_result r = rd_ambient_update(ctx, scene, &stats);
     rd_phase_mark("SH9 ambient");
+    int shaded = adaptive(v, samples) ? 1 : samples; /* the main pass's samples a pixel side */
+    rd_planar_view planar = {vp,
+                             {(float)(v->width * shaded), (float)(v->height * shaded)},
+                             pixels_per_tan * (float)shaded};
     if (r == RD_OK)
-        r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &stats);
+        r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &planar, &stats);
     if (r == RD_OK)
         r = rd_sphere_maps_update(ctx, scene, view_rot);
     if (r == RD_OK)
         r = rd_shadow_maps_update(ctx, scene);
     /* An adaptive view's main pass takes each pixel's centre as its one sample. */
-    rd_shadow_frame(scene, v, adaptive(v, samples) ? 1 : samples);
+    rd_shadow_frame(scene, v, shaded);
     if (r != RD_OK)
         return r;
     ctx->stats = stats;

@@ -337,22 +337,51 @@ void rd_cubemap_destroy(rd_context *ctx, rd_cubemap map)
     s->live = false;
 }
 
-rd_result rd_probe_depth_ensure(rd_context *ctx, int size)
+void rd_float_texture_2d(unsigned *name, int w, int h, int mipmapped)
 {
-    if (!ctx->probe_depth || ctx->probe_depth_size < size) {
-        if (!ctx->probe_depth)
-            glGenRenderbuffers(1, &ctx->probe_depth);
-        glBindRenderbuffer(GL_RENDERBUFFER, ctx->probe_depth);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
-        ctx->probe_depth_size = size;
+    if (!*name)
+        glGenTextures(1, name);
+    glBindTexture(GL_TEXTURE_2D, *name);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, w, h, 0, GL_RGBA, GL_FLOAT, NULL);
+    if (!mipmapped)
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+                    mipmapped ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+/* Makes *rb at least (or, exact, just) w x h and attaches it to the bound framebuffer. */
+static rd_result depth_ensure(unsigned *rb, int *rb_w, int *rb_h, int w, int h, int exact)
+{
+    int small = *rb_w < w || *rb_h < h;
+    if (!*rb || small || (exact && (*rb_w != w || *rb_h != h))) {
+        if (!*rb)
+            glGenRenderbuffers(1, rb);
+        glBindRenderbuffer(GL_RENDERBUFFER, *rb);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
+        *rb_w = w;
+        *rb_h = h;
     }
     /* Attached on every capture: the prefilter pass detaches it. */
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                              ctx->probe_depth);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, *rb);
     unsigned e = rd_gl_drain_errors();
     return e == GL_NO_ERROR
                ? RD_OK
-               : rd_fail(RD_ERR_OUT_OF_MEMORY, "cannot make a %d probe depth buffer", size);
+               : rd_fail(RD_ERR_OUT_OF_MEMORY, "cannot make a %dx%d probe depth buffer", w, h);
+}
+
+rd_result rd_probe_depth_ensure(rd_context *ctx, int size)
+{
+    int side = ctx->probe_depth_size; /* square: one size stands for both sides */
+    return depth_ensure(&ctx->probe_depth, &ctx->probe_depth_size, &side, size, size, 0);
+}
+
+rd_result rd_planar_depth_ensure(rd_context *ctx, int w, int h)
+{
+    return depth_ensure(&ctx->planar_depth, &ctx->planar_depth_w, &ctx->planar_depth_h, w, h, 1);
 }
 
 void rd_resources_destroy_all(rd_context *ctx)
@@ -362,6 +391,10 @@ void rd_resources_destroy_all(rd_context *ctx)
             rd_cubemap_destroy(ctx, (rd_cubemap){make_id(ctx->cubemaps[i].generation, i)});
     if (ctx->probe_depth)
         glDeleteRenderbuffers(1, &ctx->probe_depth);
+    if (ctx->planar_depth)
+        glDeleteRenderbuffers(1, &ctx->planar_depth);
+    ctx->planar_depth = 0;
+    ctx->planar_depth_w = ctx->planar_depth_h = 0;
     if (ctx->probe_fbo)
         glDeleteFramebuffers(1, &ctx->probe_fbo);
     if (ctx->blit_fbo)

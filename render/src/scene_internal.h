@@ -14,7 +14,7 @@ typedef struct rd_probe {
     float centre[3], radius;
     float detail_size; /* metres: what its resolution follows (see place_probe) */
     /* The glossiness range of the objects that look it up (a product's parts share one probe
-     * and may differ: a glass screen and its chrome rail): the blur covers all of them. */
+     * and may differ: a mirror and its frame): the blur covers all of them. */
     float gloss_min, gloss_max;
     long long captured_stamp; /* the scene's change counter at the last full capture */
     int captured_frame;       /* -1: never */
@@ -29,6 +29,15 @@ typedef struct rd_probe {
     /* "depth" correction: the captured surfaces' normals (octahedral), specular and shininess,
      * for highlights seen from the reflecting point (probe.c); 0 for the other modes. */
     unsigned surface;
+    /* A flat mirror under rd_reflection_defaults.planar_mirrors (probe_planar.c): captured
+     * from the eye's mirror image, of what lies in front of its plane only. */
+    int planar;
+    float plane[4];          /* world plane n.x + d = 0, n towards the eye */
+    float quad[4][3];        /* the mirror's front face (world corners), a little enlarged */
+    unsigned planar_texture; /* the capture: what the eye's image sees through the quad */
+    int planar_width, planar_height;
+    long long planar_frame;     /* the scene frame it was captured for; a stale one is not read */
+    float planar_view_proj[16]; /* world -> the capture's clip space (column-major) */
 } rd_probe;
 
 struct rd_scene {

@@ -8,15 +8,7 @@ static rd_result ensure_texture(rd_probe *p, int size)
 {
     if (p->sphere_map && p->sphere_size == size)
         return RD_OK;
-    if (!p->sphere_map)
-        glGenTextures(1, &p->sphere_map);
-    glBindTexture(GL_TEXTURE_2D, p->sphere_map);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, size, size, 0, GL_RGBA, GL_FLOAT, NULL);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glBindTexture(GL_TEXTURE_2D, 0);
+    rd_float_texture_2d(&p->sphere_map, size, size, 1);
     p->sphere_size = size;
     unsigned e = rd_gl_drain_errors();
     return e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "cannot make a %d sphere map", size);

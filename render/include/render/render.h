@@ -243,6 +243,9 @@ typedef struct rd_reflection_defaults {
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
     int max_faces_per_frame; /* refreshes of probes already complete: at most this many faces
                                 a frame, probes taking turns; 0 = no limit */
+    int planar_mirrors;      /* 1: a flat mirror's probe is captured from the eye's mirror image,
+                                clipped at its plane, at the view's resolution (a planar reflection
+                                through the probe's cube map; docs/rendering.md) */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
@@ -293,6 +296,7 @@ rd_result rd_scene_read_probe(rd_scene *scene, int index, int face, int level, f
 typedef struct rd_frame_stats {
     int probes, faces_captured, prefiltered;
     long long refined_pixels; /* adaptive supersampling: pixels given s x s samples */
+    int planar_mirrors;       /* flat mirrors captured as planar reflections (probe_planar.c) */
 } rd_frame_stats;
 rd_frame_stats rd_last_frame_stats(const rd_context *ctx);
 
