@@ -18,8 +18,8 @@ static const char *assets_dir(void)
 int app_cli_demo(int argc, char **argv)
 {
     cli_options o = {0};
-    int rc =
-        cli_parse(argc, argv, 2, "demo", "output size supersample adaptive backend quality", &o);
+    int rc = cli_parse(argc, argv, 2, "demo",
+                       "output size supersample adaptive planar-mirrors backend quality", &o);
     if (rc != CLI_OK)
         return rc;
     if (o.project) {

@@ -117,9 +117,10 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             ok = cli_parse_size(v, &o->width, &o->height);
         else if (!strcmp(name, "supersample"))
             ok = parse_int(v, 1, 4, &o->supersample);
-        else if (!strcmp(name, "adaptive")) {
+        else if (!strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors")) {
             ok = !strcmp(v, "on") || !strcmp(v, "off");
-            o->adaptive = !strcmp(v, "on") ? 1 : 2;
+            *(!strcmp(name, "adaptive") ? &o->adaptive : &o->planar_mirrors) =
+                !strcmp(v, "on") ? 1 : 2;
         } else if (!strcmp(name, "frames"))
             ok = parse_int(v, 1, 100000, &o->frames);
         else if (!strcmp(name, "warmup"))
@@ -153,7 +154,8 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
                     !strcmp(name, "size")          ? " (expected WIDTHxHEIGHT, e.g. 1280x720)"
                     : !strcmp(name, "backend")     ? " (expected egl or osmesa)"
                     : !strcmp(name, "supersample") ? " (expected 1 to 4)"
-                    : !strcmp(name, "adaptive")    ? " (expected on or off)"
+                    : !strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors")
+                        ? " (expected on or off)"
                     : !strcmp(name, "probes")
                         ? " (expected every-frame, once, on-change or time-sliced)"
                     : !strcmp(name, "blur")    ? " (expected prefiltered, box-mips or reference)"

@@ -107,11 +107,11 @@ static int make_panorama(cli_session *s, const cli_options *o, int w, int h)
 int app_cli_panorama(int argc, char **argv)
 {
     cli_options o = {0};
-    int rc =
-        cli_parse(argc, argv, 2, "panorama",
-                  "output camera size supersample adaptive backend probes blur ambient quality "
-                  "shadows faces tile",
-                  &o);
+    int rc = cli_parse(argc, argv, 2, "panorama",
+                       "output camera size supersample adaptive planar-mirrors backend probes blur "
+                       "ambient quality "
+                       "shadows faces tile",
+                       &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project || !o.output) {

@@ -29,9 +29,10 @@ typedef struct sweep_setting {
     int max_resolution; /* cap of auto; 0 = the renderer's */
     int no_specular;    /* probes capture without highlights */
     int supersample;    /* 1 = none (the reference is traced at the same) */
+    int planar;         /* flat mirrors as planar reflections (probe_planar.c) */
 } sweep_setting;
 
-enum { FACTOR_SETTINGS = 20, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
+enum { FACTOR_SETTINGS = 21, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
 
 /* The baseline is what the renderer does by default; every other setting changes one factor. */
 static void make_settings(sweep_setting out[SETTINGS])
@@ -83,6 +84,11 @@ static void make_settings(sweep_setting out[SETTINGS])
     out[19].factor = "correction";
     out[19].label = "depth";
     out[19].correction = RD_CORRECTION_DEPTH;
+    /* Flat mirrors captured from the eye's mirror image (probe_planar.c). */
+    out[20] = base;
+    out[20].factor = "mirrors";
+    out[20].label = "planar";
+    out[20].planar = 1;
     /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
      * against a reference traced with the same. */
     static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
@@ -100,6 +106,7 @@ static void make_settings(sweep_setting out[SETTINGS])
         st->max_resolution = q->max_resolution;
         st->supersample = q->supersample;
         st->correction = q->correction != RD_CORRECTION_DEFAULT ? q->correction : base.correction;
+        st->planar = q->planar_mirrors;
     }
 }
 
@@ -124,6 +131,7 @@ static void apply(rd_scene *scene, const rd_reflection_defaults *base, const swe
     d.ambient = s->ambient;
     d.max_resolution = s->max_resolution;
     d.probe_no_specular = s->no_specular;
+    d.planar_mirrors = s->planar;
     rd_scene_set_reflection_defaults(scene, &d);
 }
 

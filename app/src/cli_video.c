@@ -109,11 +109,11 @@ static int render_frames(cli_session *s, const cli_options *o, const char *dir, 
 int app_cli_video(int argc, char **argv)
 {
     cli_options o = {0};
-    int rc =
-        cli_parse(argc, argv, 2, "video",
-                  "output size supersample adaptive backend probes blur ambient quality shadows "
-                  "seconds fps tile",
-                  &o);
+    int rc = cli_parse(argc, argv, 2, "video",
+                       "output size supersample adaptive planar-mirrors backend probes blur "
+                       "ambient quality shadows "
+                       "seconds fps tile",
+                       &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project || !o.output) {

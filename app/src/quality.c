@@ -7,24 +7,26 @@
  * +2 dB, 512 for +4 dB; 1024 loses again). Print also takes the "depth" correction (distance
  * impostors: demo print 25.75 -> 29.63 dB, mirror room 12.85 -> 26.49 dB on reflective
  * pixels) at about twice the frame time, which the faster presets do not buy
- * (docs/accuracy.md). */
+ * (docs/accuracy.md), and flat mirrors as planar reflections (demo print 29.51 -> 32.14 dB,
+ * mirror room 26.67 -> 37.33 dB; docs/accuracy.md, "Fifth round"): a capture every frame that
+ * follows the eye, for stills only. */
 #include "app/quality.h"
 
 #include <string.h>
 
 static const app_quality presets[] = {
     {"draft", "probes captured once, box-mip blur: the fastest frames", RD_PROBE_ONCE,
-     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0, 0},
+     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0, 0, 0},
     {"interactive", "probes refreshed on change, one face a frame, prefiltered blur: live",
      RD_PROBE_ON_CHANGE, RD_BLUR_PREFILTERED, 0, 256, 1, RD_SHADOWS_OFF, 1024, 1,
-     RD_CORRECTION_DEFAULT, 1, 0},
+     RD_CORRECTION_DEFAULT, 1, 0, 0},
     {"final", "every probe complete at 128 texels, 2x2 supersampling: stills", RD_PROBE_EVERY_FRAME,
-     RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12, RD_CORRECTION_DEFAULT, 0, 0},
+     RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12, RD_CORRECTION_DEFAULT, 0, 0, 0},
     {"print",
-     "probes at 512 texels, depth lookups, 4x4 supersampling (adaptive in large prints), soft "
-     "shadows: print",
+     "probes at 512 texels, depth lookups, flat mirrors as planar reflections, 4x4 "
+     "supersampling (adaptive in large prints), soft shadows: print",
      RD_PROBE_EVERY_FRAME, RD_BLUR_PREFILTERED, 512, 0, 4, RD_SHADOWS_SOFT, 2048, 16,
-     RD_CORRECTION_DEPTH, 0, 1},
+     RD_CORRECTION_DEPTH, 0, 1, 1},
 };
 
 const app_quality *app_quality_find(const char *name)
@@ -63,6 +65,7 @@ void app_quality_apply(const app_quality *q, rd_scene *scene)
     if (q->correction != RD_CORRECTION_DEFAULT)
         d.correction = q->correction;
     d.max_faces_per_frame = q->probe_faces_per_frame;
+    d.planar_mirrors = q->planar_mirrors;
     rd_scene_set_reflection_defaults(scene, &d);
     /* Shadows by preset (issue 7): none in drafts and live walk-throughs (hard shadows cost
      * about 180 ns of CPU per sample on llvmpipe with the demo's three lights, some 80 ms a

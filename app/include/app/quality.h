@@ -23,6 +23,9 @@ typedef struct app_quality {
     /* 1: adaptive supersampling (rd_view.adaptive): the s x s samples only where a pixel
      * differs from its neighbours; 0: every pixel s x s. */
     int adaptive;
+    /* 1: flat mirrors reflect from the eye's mirror image (rd_reflection_defaults); their
+     * captures follow the eye, so only stills take them. */
+    int planar_mirrors;
 } app_quality;
 
 /* NULL for an unknown name. */
