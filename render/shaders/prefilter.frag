@@ -2,8 +2,8 @@
 // (RENDERING.md section 5; seed 001 eq. 6), by importance sampling the lobe itself, so the
 // estimate is a plain mean and brightness is conserved. Each sample reads the source's box
 // mips at the level matching its share of the lobe's solid angle ("filtered importance
-// sampling"), which keeps 24 samples free of fireflies; samples are clamped first so a lamp
-// does not turn into speckles. Directions are cube-map coordinates (CMCS) throughout, and
+// sampling", one level finer: see below), which keeps 24 samples free of fireflies; samples
+// are clamped first so a lamp does not turn into speckles. Directions are cube-map coordinates (CMCS) throughout, and
 // sampling is by direction with seamless filtering, so face edges leave no seams.
 uniform samplerCube u_source;
 uniform int u_face;
@@ -61,7 +61,13 @@ void main()
         vec3 l = t1 * (cos(phi) * sin_t) + t2 * (sin(phi) * sin_t) + d * cos_t;
         float pdf = (u_exponent + 1.0) / (2.0 * PI) * pow(cos_t, u_exponent);
         float sample_solid_angle = 1.0 / (float(u_samples) * max(pdf, 1e-8));
-        float lod = max(0.5 * log2(sample_solid_angle / texel_solid_angle) + 1.0, 0.0);
+        // The level whose texels match the sample's share of the lobe, one finer: box mips
+        // spread a bright source in squares wider than their texel, and GPU Gems 3's "+1"
+        // (coarser, against noise) made the lobe of a glossy tap before a window of radiance
+        // 20 several times too wide (stress-taps, print: 12.72 dB on reflective pixels at +1,
+        // 16.06 at 0, 17.70 at -1, 17.83 at -1.5; the demo 32.14, 32.33, 32.40, 32.40 dB;
+        // docs/accuracy.md, "Fifth round").
+        float lod = max(0.5 * log2(sample_solid_angle / texel_solid_angle) - 1.0, 0.0);
         sum += min(textureLod(u_source, l, lod).rgb, vec3(u_clamp));
     }
     frag_color = vec4(sum / float(u_samples), 1.0);
