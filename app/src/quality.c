@@ -7,9 +7,11 @@
  * +2 dB, 512 for +4 dB; 1024 loses again). Print also takes the "depth" correction (distance
  * impostors: demo print 25.75 -> 29.63 dB, mirror room 12.85 -> 26.49 dB on reflective
  * pixels) at about twice the frame time, which the faster presets do not buy
- * (docs/accuracy.md), and flat mirrors as planar reflections (demo print 29.51 -> 32.14 dB,
- * mirror room 26.67 -> 37.33 dB; docs/accuracy.md, "Fifth round"): a capture every frame that
- * follows the eye, for stills only. */
+ * (docs/accuracy.md). Final and print take flat mirrors as planar reflections: on the Pareto
+ * front of every sweep (at the baseline, demo 19.99 -> 25.53 dB in 130 instead of 170 ms, mirror
+ * room 12.72 -> 30.39 dB; print demo 29.51 -> 32.14 dB; docs/accuracy.md, "Fifth round"), a
+ * capture every frame that follows the eye: stills only, as a live view's frame budget holds
+ * its probes still. */
 #include "app/quality.h"
 
 #include <string.h>
@@ -20,8 +22,11 @@ static const app_quality presets[] = {
     {"interactive", "probes refreshed on change, one face a frame, prefiltered blur: live",
      RD_PROBE_ON_CHANGE, RD_BLUR_PREFILTERED, 0, 256, 1, RD_SHADOWS_OFF, 1024, 1,
      RD_CORRECTION_DEFAULT, 1, 0, 0},
-    {"final", "every probe complete at 128 texels, 2x2 supersampling: stills", RD_PROBE_EVERY_FRAME,
-     RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12, RD_CORRECTION_DEFAULT, 0, 0, 0},
+    {"final",
+     "every probe complete at 128 texels, flat mirrors as planar reflections, 2x2 supersampling: "
+     "stills",
+     RD_PROBE_EVERY_FRAME, RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12,
+     RD_CORRECTION_DEFAULT, 0, 0, 1},
     {"print",
      "probes at 512 texels, depth lookups, flat mirrors as planar reflections, 4x4 "
      "supersampling (adaptive in large prints), soft shadows: print",
