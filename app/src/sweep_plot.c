@@ -19,18 +19,21 @@ void app_sweep_mark_front(app_sweep_point *p, int n)
     }
 }
 
-static const char *const factors[] = {"resolution", "correction", "blur",    "update",
-                                      "per-vertex", "ambient",    "baseline"};
-static const double colours[][3] = {{0.12, 0.47, 0.71}, {0.84, 0.15, 0.16}, {0.17, 0.63, 0.17},
-                                    {1.0, 0.5, 0.05},   {0.58, 0.4, 0.74},  {0.55, 0.34, 0.29},
-                                    {0.1, 0.1, 0.1}};
+/* A colour a factor; anything else (the baseline) the last. */
+static const char *const factors[] = {"resolution", "correction", "blur",    "update", "per-vertex",
+                                      "ambient",    "highlights", "mirrors", "preset", "baseline"};
+enum { FACTORS = sizeof factors / sizeof factors[0] };
+static const double colours[FACTORS][3] = {
+    {0.12, 0.47, 0.71}, {0.84, 0.15, 0.16}, {0.17, 0.63, 0.17}, {1.0, 0.5, 0.05},
+    {0.58, 0.4, 0.74},  {0.55, 0.34, 0.29}, {0.5, 0.5, 0.5},    {0.09, 0.75, 0.81},
+    {0.89, 0.47, 0.76}, {0.1, 0.1, 0.1}};
 
 static int factor_index(const char *f)
 {
-    for (int i = 0; i < (int)(sizeof factors / sizeof factors[0]); i++)
+    for (int i = 0; i < FACTORS; i++)
         if (!strcmp(f, factors[i]))
             return i;
-    return 6;
+    return FACTORS - 1;
 }
 
 static int compare_ms(const void *a, const void *b)
@@ -148,7 +151,7 @@ int app_sweep_plot(const char *path, const app_sweep_point *p, int n, const char
     }
     /* legend */
     cairo_set_font_size(cr, 13);
-    for (int k = 0; k < 7; k++) {
+    for (int k = 0; k < FACTORS; k++) {
         double y = T + 20 + 24 * k;
         cairo_set_source_rgb(cr, colours[k][0], colours[k][1], colours[k][2]);
         cairo_arc(cr, W - R + 24, y - 4, 5, 0, 2 * PI);
@@ -158,7 +161,7 @@ int app_sweep_plot(const char *path, const app_sweep_point *p, int n, const char
         cairo_show_text(cr, factors[k]);
     }
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    cairo_move_to(cr, W - R + 16, T + 20 + 24 * 7 + 10);
+    cairo_move_to(cr, W - R + 16, T + 20 + 24 * FACTORS + 10);
     cairo_show_text(cr, "line: the Pareto front");
 #undef PX
 #undef PY
