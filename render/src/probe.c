@@ -385,7 +385,6 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
      * surface): the near plane must not cut that wall away. */
     glm_perspective(glm_rad(90.0f), 1.0f, fmaxf(far_m * 1e-4f, 1e-5f), far_m, proj);
     glm_mat4_mul(proj, view, vp);
-
     if (p->surface) {
         /* No surface (the clear) has no highlight: shininess -1. */
         static const float none[4] = {0.0f, 0.0f, 0.0f, -1.0f};
@@ -542,7 +541,6 @@ rd_result rd_scene_update_spheres(rd_context *ctx, rd_scene *s)
     return RD_OK;
 }
 
-/* Whether any object of the probe's key is inside the main view's frustum. */
 /* A capture's far plane: far enough to see the whole scene (the proxy) from `centre`. */
 static float capture_far(const float centre[3], const float bmin[3], const float bmax[3])
 {
@@ -555,6 +553,7 @@ static float capture_far(const float centre[3], const float bmin[3], const float
     return isfinite(reach) && reach > 0.0f ? reach * 2.0f : 100.0f;
 }
 
+/* Whether any object of the probe's key is inside the main view's frustum. */
 static int probe_visible(const rd_scene *s, const rd_probe *p, vec4 planes[6])
 {
     for (int i = 0; i < s->object_count; i++) {

@@ -4,11 +4,10 @@
  * point: the eye's image in the mirror's plane (the law of reflection; why a mirror shows a
  * second room behind it). A probe centred there sees, in each lookup direction R, exactly what
  * the reflected ray from the mirror's point sees, once it draws only what lies in front of the
- * mirror's plane: its cube map holds the planar reflection of the classic mirrored-camera
- * technique, and no proxy is needed (every correction returns R; draw.c box_opaque). Nothing
- * is hidden from the centre that the mirror's points see, which a probe at the mirror's own
- * centre cannot promise even with its stored distances (thin rails in front of a wall;
- * docs/accuracy.md).
+ * mirror's plane: its capture holds the planar reflection of the classic mirrored-camera
+ * technique, and no proxy or search is needed. Nothing is hidden from the centre that the
+ * mirror's points see, which a probe at the mirror's own centre cannot promise even with its
+ * stored distances (thin rails in front of a wall; docs/accuracy.md).
  *
  * The capture depends on the eye, so it is made every frame the probe is used. It is a 2D
  * texture, not a cube: from the eye's image the mirror is one window, and the capture is the
