@@ -1,6 +1,7 @@
-/* tessera compare A B [--mask M] [--heatmap OUT.png] [--heat-max E]
- * RMSE and PSNR in linear RGB between two images, over all pixels and over a mask, and a heat
- * map of the per-pixel error (RENDERING.md section 10, docs/reference.md). */
+/* tessera compare A B [--mask M] [--heatmap OUT.png] [--heat-max E] [--worst N [--block PX]]
+ * RMSE and PSNR in linear RGB between two images, over all pixels and over a mask, a heat map
+ * of the per-pixel error, and the blocks that carry most of it (RENDERING.md section 10,
+ * docs/reference.md). */
 #include "app/cli_ref.h"
 #include "app/image_compare.h"
 #include "cli_options.h"
@@ -12,7 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define USAGE "usage: tessera compare A B [--mask MASK] [--heatmap OUT.png] [--heat-max E]\n"
+#define USAGE                                                                                      \
+    "usage: tessera compare A B [--mask MASK] [--heatmap OUT.png] [--heat-max E] [--worst N "      \
+    "[--block PX]]\n"
 
 /* An image as linear RGBA floats: EXR/HDR as stored, 8-bit files decoded from sRGB. */
 typedef struct linear_image {
@@ -62,12 +65,44 @@ static const char *number(double x, char *buf, size_t size)
     return buf;
 }
 
-static int parse_args(int argc, char **argv, const char **a, const char **b, const char **mask,
-                      const char **heatmap, double *heat_max)
+typedef struct compare_args {
+    const char *a, *b, *mask, *heatmap;
+    double heat_max;
+    int worst, block; /* --worst N blocks of --block PX (default 20) */
+} compare_args;
+
+/* A whole number in [lo, hi] for option `name`, or CLI_USAGE with a message. */
+static int parse_count(const char *name, const char *v, int lo, int hi, int *out)
 {
+    char *end;
+    errno = 0;
+    long x = strtol(v, &end, 10);
+    if (end == v || *end || errno || x < lo || x > hi) {
+        fprintf(stderr, "tessera compare: bad value \"%s\" for %s (expected %d to %d)\n", v, name,
+                lo, hi);
+        return CLI_USAGE;
+    }
+    *out = (int)x;
+    return CLI_OK;
+}
+
+static int parse_args(int argc, char **argv, compare_args *o)
+{
+    const char **a = &o->a, **b = &o->b, **mask = &o->mask, **heatmap = &o->heatmap;
+    double *heat_max = &o->heat_max;
     for (int i = 2; i < argc; i++) {
         const char *arg = argv[i];
-        if (!strcmp(arg, "--mask") || !strcmp(arg, "--heatmap") || !strcmp(arg, "--heat-max")) {
+        if (!strcmp(arg, "--worst") || !strcmp(arg, "--block")) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "tessera compare: option %s needs a value\n", arg);
+                return CLI_USAGE;
+            }
+            int rc = !strcmp(arg, "--worst") ? parse_count(arg, argv[++i], 1, 1000, &o->worst)
+                                             : parse_count(arg, argv[++i], 1, 4096, &o->block);
+            if (rc != CLI_OK)
+                return rc;
+        } else if (!strcmp(arg, "--mask") || !strcmp(arg, "--heatmap") ||
+                   !strcmp(arg, "--heat-max")) {
             if (i + 1 >= argc) {
                 fprintf(stderr, "tessera compare: option %s needs a value\n", arg);
                 return CLI_USAGE;
@@ -105,6 +140,47 @@ static int parse_args(int argc, char **argv, const char **a, const char **b, con
         fprintf(stderr, USAGE);
         return CLI_USAGE;
     }
+    if (o->block > 0 && o->worst == 0) {
+        fprintf(stderr, "tessera compare: --block sets the size of --worst's blocks: give --worst "
+                        "N as well\n");
+        return CLI_USAGE;
+    }
+    return CLI_OK;
+}
+
+/* The blocks carrying most of the squared error (of the mask's, if given), with what the
+ * PSNR would be were they exact: where to look first. */
+static int print_worst(const linear_image *a, const linear_image *b, const float *mask,
+                       const app_image_metrics *m, int count, int block)
+{
+    app_error_block *blocks = malloc((size_t)count * sizeof *blocks);
+    if (!blocks) {
+        fprintf(stderr, "tessera compare: out of memory for --worst\n");
+        return CLI_FAILED;
+    }
+    int n =
+        app_image_worst_blocks(a->rgba, b->rgba, a->width, a->height, mask, block, blocks, count);
+    if (n < 0) {
+        free(blocks);
+        fprintf(stderr, "tessera compare: out of memory for --worst\n");
+        return CLI_FAILED;
+    }
+    printf("worst %d x %d blocks, by share of the %ssquared error (PSNR were they exact):\n", block,
+           block, mask ? "masked " : "");
+    double cumulative = 0.0;
+    for (int i = 0; i < n; i++) {
+        const app_error_block *k = &blocks[i];
+        cumulative += k->share;
+        double left = 1.0 - cumulative; /* rounding leaves about 1e-16 when all are listed */
+        double rest = left > 1e-9 ? m->mse * left : 0.0;
+        char p[32];
+        printf("  x %4d-%-4d y %4d-%-4d %6.2f %%  cumulative %6.2f %%  psnr %s dB\n", k->x,
+               k->x + k->width, k->y, k->y + k->height, 100.0 * k->share, 100.0 * cumulative,
+               rest > 0.0 ? number(-10.0 * log10(rest), p, sizeof p) : "inf");
+    }
+    if (n == 0)
+        printf("  none: the images are identical there\n");
+    free(blocks);
     return CLI_OK;
 }
 
@@ -118,11 +194,12 @@ static void print_metrics(const char *label, const app_image_metrics *m)
 
 int app_cli_compare(int argc, char **argv)
 {
-    const char *pa = NULL, *pb = NULL, *pm = NULL, *heat = NULL;
-    double heat_max = 0.0;
-    int rc = parse_args(argc, argv, &pa, &pb, &pm, &heat, &heat_max);
+    compare_args o = {0};
+    int rc = parse_args(argc, argv, &o);
     if (rc != CLI_OK)
         return rc;
+    const char *pa = o.a, *pb = o.b, *pm = o.mask, *heat = o.heatmap;
+    double heat_max = o.heat_max;
     if (heat) {
         rc = cli_check_output_path(heat);
         if (rc == CLI_OK && rd_image_format_is_float(heat) != 0) {
@@ -188,6 +265,9 @@ int app_cli_compare(int argc, char **argv)
             if (in_mask.pixels == 0)
                 fprintf(stderr, "tessera compare: warning: mask %s selects no pixel\n", pm);
         }
+        if (o.worst > 0)
+            rc = print_worst(&a, &b, mask, mask ? &in_mask : &all, o.worst,
+                             o.block > 0 ? o.block : 20);
     }
     double scale = heat_max;
     if (rc == CLI_OK && heat) {

@@ -97,6 +97,50 @@ double app_image_error_percentile(const float *a, const float *b, int w, int h, 
     return result;
 }
 
+static int larger_share(const void *x, const void *y)
+{
+    double a = ((const app_error_block *)x)->share, b = ((const app_error_block *)y)->share;
+    return (a < b) - (a > b);
+}
+
+int app_image_worst_blocks(const float *a, const float *b, int w, int h, const float *mask,
+                           int block, app_error_block *out, int count)
+{
+    if (!a || !b || w <= 0 || h <= 0 || block <= 0 || !out || count <= 0)
+        return -1;
+    int bw = (w + block - 1) / block, bh = (h + block - 1) / block;
+    app_error_block *all = calloc((size_t)bw * (size_t)bh, sizeof *all);
+    if (!all)
+        return -1;
+    double total = 0.0;
+    for (int by = 0; by < bh; by++)
+        for (int bx = 0; bx < bw; bx++) {
+            app_error_block *k = &all[(size_t)by * (size_t)bw + (size_t)bx];
+            k->x = bx * block;
+            k->y = by * block;
+            k->width = k->x + block <= w ? block : w - k->x;
+            k->height = k->y + block <= h ? block : h - k->y;
+            for (int y = k->y; y < k->y + k->height; y++)
+                for (int x = k->x; x < k->x + k->width; x++) {
+                    size_t i = (size_t)y * (size_t)w + (size_t)x;
+                    if (!counted(mask, i))
+                        continue;
+                    k->share += pixel_sq_sum(a + 4 * i, b + 4 * i);
+                    k->pixels++;
+                }
+            total += k->share;
+        }
+    size_t n = (size_t)bw * (size_t)bh;
+    qsort(all, n, sizeof *all, larger_share);
+    int written = 0;
+    for (size_t i = 0; i < n && written < count && all[i].share > 0.0; i++) {
+        out[written] = all[i];
+        out[written++].share = all[i].share / total;
+    }
+    free(all);
+    return written;
+}
+
 void app_heat_ramp(float t, unsigned char rgb[3])
 {
     static const float stops[5][3] = {

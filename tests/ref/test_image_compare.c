@@ -183,5 +183,39 @@ int main(void)
     CHECK(heat[0] == 0 && heat[4] == 255 && heat[8] == 255 && heat[16] == 0);
     app_image_heatmap(a, b, W, H, NAN, heat);
     CHECK(heat[0] == 0 && heat[4] == 255);
+
+    /* Where the error is: 3 x 3 blocks over 8 x 4 give 3 x 2 blocks, the last column 2 wide
+     * and the last row 1 high. Pixel (7, 3) (the corner block) carries squared error 3 x 1.0,
+     * pixel (4, 0) 3 x 0.25 and pixel (0, 0) 3 x 0.01: shares 1 / 1.26, 0.25 / 1.26, 0.01 / 1.26,
+     * largest first; the blocks without error are left out. */
+    fill(a, 0.5f, 0.5f, 0.5f);
+    fill(b, 0.5f, 0.5f, 0.5f);
+    for (int k = 0; k < 3; k++) {
+        b[4 * (3 * W + 7) + k] = 1.5f;
+        b[4 * 4 + k] = 1.0f;
+        b[k] = 0.6f;
+    }
+    app_error_block blocks[8];
+    int nb = app_image_worst_blocks(a, b, W, H, NULL, 3, blocks, 8);
+    CHECK_MSG(nb == 3, "%d blocks", nb);
+    CHECK(blocks[0].x == 6 && blocks[0].y == 3 && blocks[0].width == 2 && blocks[0].height == 1);
+    CHECK(blocks[0].pixels == 2);
+    CHECK_MSG(near(blocks[0].share, 1.0 / 1.26, 1e-6), "share %.9f", blocks[0].share);
+    CHECK(blocks[1].x == 3 && blocks[1].y == 0 && blocks[1].width == 3 && blocks[1].height == 3);
+    CHECK(near(blocks[1].share, 0.25 / 1.26, 1e-6));
+    CHECK(blocks[2].x == 0 && blocks[2].y == 0 && near(blocks[2].share, 0.01 / 1.26, 1e-6));
+    /* At most `count`. */
+    CHECK(app_image_worst_blocks(a, b, W, H, NULL, 3, blocks, 1) == 1 && blocks[0].x == 6);
+    /* A mask: the shares are of the masked error; the corner pixel left out. */
+    for (int i = 0; i < W * H; i++)
+        mask[i] = i == 3 * W + 7 ? 0.0f : 1.0f;
+    nb = app_image_worst_blocks(a, b, W, H, mask, 3, blocks, 8);
+    CHECK(nb == 2 && blocks[0].x == 3 && near(blocks[0].share, 0.25 / 0.26, 1e-6));
+    CHECK(blocks[1].share < blocks[0].share);
+    /* Identical images: no block. Bad arguments: -1. */
+    CHECK(app_image_worst_blocks(a, a, W, H, NULL, 3, blocks, 8) == 0);
+    CHECK(app_image_worst_blocks(a, b, W, H, NULL, 0, blocks, 8) == -1);
+    CHECK(app_image_worst_blocks(a, b, W, H, NULL, 3, NULL, 8) == -1);
+    CHECK(app_image_worst_blocks(NULL, b, W, H, NULL, 3, blocks, 8) == -1);
     return check_report("test_image_compare");
 }

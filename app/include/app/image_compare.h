@@ -39,6 +39,21 @@ int app_image_metrics_compute(const float *a, const float *b, int w, int h, cons
 double app_image_error_percentile(const float *a, const float *b, int w, int h, const float *mask,
                                   double q);
 
+/* One square block of an image and the squared error it carries (app_image_worst_blocks). */
+typedef struct app_error_block {
+    int x, y, width, height; /* pixels; blocks at the right and bottom edges may be smaller */
+    double share;            /* its part of the summed squared error, 0..1 */
+    long long pixels;        /* counted pixels in it */
+} app_error_block;
+
+/* Where the error is: the image cut into `block` x `block` squares, the (at most) `count`
+ * squares carrying the largest parts of the squared error over the counted pixels, largest
+ * first, into out[]. A few blocks on a small feature often carry most of a PSNR's error (a
+ * tap's spout in a whole bathroom); this names them. Returns how many were written (blocks
+ * without error are left out), or -1 for invalid arguments or out of memory. */
+int app_image_worst_blocks(const float *a, const float *b, int w, int h, const float *mask,
+                           int block, app_error_block *out, int count);
+
 /* The heat-map ramp: black -> blue -> red -> yellow -> white, linear between stops at t = 0,
  * 1/4, 1/2, 3/4, 1 (its luminance rises all the way); t is clamped to [0, 1], NaN -> 0. */
 void app_heat_ramp(float t, unsigned char rgb[3]);
