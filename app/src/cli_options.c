@@ -117,10 +117,12 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             ok = cli_parse_size(v, &o->width, &o->height);
         else if (!strcmp(name, "supersample"))
             ok = parse_int(v, 1, 4, &o->supersample);
-        else if (!strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors")) {
+        else if (!strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors") ||
+                 !strcmp(name, "room-probe")) {
             ok = !strcmp(v, "on") || !strcmp(v, "off");
-            *(!strcmp(name, "adaptive") ? &o->adaptive : &o->planar_mirrors) =
-                !strcmp(v, "on") ? 1 : 2;
+            *(!strcmp(name, "adaptive")         ? &o->adaptive
+              : !strcmp(name, "planar-mirrors") ? &o->planar_mirrors
+                                                : &o->room_probe) = !strcmp(v, "on") ? 1 : 2;
         } else if (!strcmp(name, "frames"))
             ok = parse_int(v, 1, 100000, &o->frames);
         else if (!strcmp(name, "warmup"))
@@ -154,7 +156,8 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
                     !strcmp(name, "size")          ? " (expected WIDTHxHEIGHT, e.g. 1280x720)"
                     : !strcmp(name, "backend")     ? " (expected egl or osmesa)"
                     : !strcmp(name, "supersample") ? " (expected 1 to 4)"
-                    : !strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors")
+                    : !strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors") ||
+                            !strcmp(name, "room-probe")
                         ? " (expected on or off)"
                     : !strcmp(name, "probes")
                         ? " (expected every-frame, once, on-change or time-sliced)"

@@ -30,9 +30,10 @@ typedef struct sweep_setting {
     int no_specular;    /* probes capture without highlights */
     int supersample;    /* 1 = none (the reference is traced at the same) */
     int planar;         /* flat mirrors as planar reflections (probe_planar.c) */
+    int room_off;       /* "depth" searches the own probe only (no room probe) */
 } sweep_setting;
 
-enum { FACTOR_SETTINGS = 21, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
+enum { FACTOR_SETTINGS = 22, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
 
 /* The baseline is what the renderer does by default; every other setting changes one factor. */
 static void make_settings(sweep_setting out[SETTINGS])
@@ -89,6 +90,10 @@ static void make_settings(sweep_setting out[SETTINGS])
     out[20].factor = "mirrors";
     out[20].label = "planar";
     out[20].planar = 1;
+    /* Depth with the object's own probe alone: what the room probe buys (probe.c). */
+    out[21] = out[19];
+    out[21].label = "depth, own probe only";
+    out[21].room_off = 1;
     /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
      * against a reference traced with the same. */
     static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
@@ -132,6 +137,7 @@ static void apply(rd_scene *scene, const rd_reflection_defaults *base, const swe
     d.max_resolution = s->max_resolution;
     d.probe_no_specular = s->no_specular;
     d.planar_mirrors = s->planar;
+    d.room_probe_off = s->room_off;
     rd_scene_set_reflection_defaults(scene, &d);
 }
 

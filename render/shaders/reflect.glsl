@@ -61,20 +61,18 @@ float depth_gap(samplerCube dist, vec3 o)
 // lobe, whose blur hides what finer steps would place.
 uniform int u_depth_steps;
 
-vec3 correct_depth(samplerCube dist, vec3 p, vec3 r, vec3 bmin, vec3 bmax, vec3 c)
+// The t along the ray o + t r (o relative to the probe centre) of the first crossing after
+// t_start that lands on the stored surface, or -1 when the search finds none before t_end;
+// `steps` linear steps.
+float search_depth(samplerCube dist, vec3 o, vec3 r, float t_start, float t_end, int steps)
 {
     const int SECANT_STEPS = 5;
-    int LINEAR_STEPS = clamp(u_depth_steps, 1, 64);
-    float t_end = box_exit(p, r, bmin, bmax);
-    vec3 fallback = correct_box(p, r, bmin, bmax, c);
-    if (t_end <= 0.0)
-        return fallback;
-    vec3 o = p - c;
+    int LINEAR_STEPS = clamp(steps, 1, 128);
     float s = max(length(o), 1e-3 * t_end);
-    float a_end = t_end / (s + t_end);
-    float t_prev = 0.0, g_prev = -1.0;
+    float a_start = t_start / (s + t_start), a_end = t_end / (s + t_end);
+    float t_prev = t_start, g_prev = t_start > 0.0 ? depth_gap(dist, o + t_start * r) : -1.0;
     for (int i = 1; i <= LINEAR_STEPS; i++) {
-        float a = a_end * float(i) / float(LINEAR_STEPS);
+        float a = a_start + (a_end - a_start) * float(i) / float(LINEAR_STEPS);
         float t = i == LINEAR_STEPS ? t_end : s * a / (1.0 - a);
         float g = depth_gap(dist, o + t * r);
         if (g <= 0.0 && g_prev > 0.0) {
@@ -94,12 +92,22 @@ vec3 correct_depth(samplerCube dist, vec3 p, vec3 r, vec3 bmin, vec3 bmax, vec3 
             vec3 hit = o + t_hit * r;
             // On the stored surface within a few per cent of its distance: a hit.
             if (abs(depth_gap(dist, hit)) < 0.03 * length(hit) + 0.25 * (t - t_prev))
-                return hit;
+                return t_hit;
         }
         t_prev = t;
         g_prev = g;
     }
-    return fallback;
+    return -1.0;
+}
+
+vec3 correct_depth(samplerCube dist, vec3 p, vec3 r, vec3 bmin, vec3 bmax, vec3 c)
+{
+    float t_end = box_exit(p, r, bmin, bmax);
+    vec3 fallback = correct_box(p, r, bmin, bmax, c);
+    if (t_end <= 0.0)
+        return fallback;
+    float t = search_depth(dist, p - c, r, 0.0, t_end, u_depth_steps);
+    return t > 0.0 ? p - c + t * r : fallback;
 }
 
 // Section 4, sphere proxy of radius rad around c: the t > 0 root of |P + tR - c| = rad.

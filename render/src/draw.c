@@ -202,6 +202,40 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glUniform1f(p->u_lobe_exponent,
                 m->glossiness < 1.0f ? rd_ref_gloss_exponent(m->glossiness) : 0.0f);
     glUniform1i(p->u_depth_steps, rd_depth_search_steps(m->glossiness));
+    /* The room probe beside the own for "depth" lookups (probe.c, lit.frag's pick_depth_hit). */
+    const rd_probe *room = &s->room_probe;
+    int room_ready = c == RD_CORRECTION_DEPTH && !s->reflection.room_probe_off &&
+                     room->faces_valid == 0x3f &&
+                     (room->gloss_min >= 1.0f || room->filtered_level >= 0 ||
+                      rd_effective_blur(s) != RD_BLUR_PREFILTERED);
+    glUniform1i(p->u_room_active, room_ready ? 1 : 0);
+    glActiveTexture(GL_TEXTURE6);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, room_ready && room->gloss_min < 1.0f &&
+                                               rd_effective_blur(s) == RD_BLUR_PREFILTERED
+                                           ? room->filtered
+                                           : room->capture);
+    glUniform1i(p->u_room_probe, 6);
+    glActiveTexture(GL_TEXTURE7);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, room->capture);
+    glUniform1i(p->u_room_distance, 7);
+    glActiveTexture(GL_TEXTURE8);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, room->surface);
+    glUniform1i(p->u_room_surface, 8);
+    glUniform3fv(p->u_room_centre, 1, room->centre);
+    float lo[3], hi[3], glo[3], ghi[3];
+    rd_object_world_bounds(s->ctx, o, lo, hi);
+    for (int k = 0; k < 3; k++) { /* a point on the box's face is outside box_exit's open box */
+        float pad = 1e-4f * (fabsf(lo[k]) + fabsf(hi[k])) + 1e-5f;
+        lo[k] -= pad;
+        hi[k] += pad;
+        glo[k] = probe->box_min[k] - 1e-3f; /* hits are placed to about a millimetre */
+        ghi[k] = probe->box_max[k] + 1e-3f;
+    }
+    glUniform3fv(p->u_object_min, 1, lo);
+    glUniform3fv(p->u_object_max, 1, hi);
+    glUniform3fv(p->u_group_min, 1, glo);
+    glUniform3fv(p->u_group_max, 1, ghi);
+    glUniform1f(p->u_room_lod, room_ready ? rd_probe_lod(room, m->glossiness) : 0.0f);
     glActiveTexture(GL_TEXTURE1);
     glUniform3fv(p->u_proxy_min, 1, bmin);
     glUniform3fv(p->u_proxy_max, 1, bmax);

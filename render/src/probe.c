@@ -14,6 +14,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 int rd_object_key(const rd_scene *s, int i)
 {
@@ -45,6 +46,8 @@ void rd_probes_destroy(rd_scene *s)
 {
     for (int i = 0; i < s->probe_count; i++)
         free_probe_textures(&s->probes[i]);
+    free_probe_textures(&s->room_probe);
+    s->room_probe = (rd_probe){.captured_frame = -1, .filtered_level = -1};
     free(s->probes);
     s->probes = NULL;
     s->probe_count = 0;
@@ -130,6 +133,8 @@ static void place_probe(rd_context *ctx, const rd_scene *s, rd_probe *p)
         }
     }
     float r2 = 0.0f, e[3];
+    memcpy(p->box_min, lo, sizeof lo);
+    memcpy(p->box_max, hi, sizeof hi);
     for (int k = 0; k < 3; k++) {
         p->centre[k] = lo[k] <= hi[k] ? 0.5f * (lo[k] + hi[k]) : 0.0f;
         e[k] = lo[k] <= hi[k] ? hi[k] - lo[k] : 0.0f;
@@ -144,7 +149,8 @@ static void place_probe(rd_context *ctx, const rd_scene *s, rd_probe *p)
 }
 
 /* A material that does not name its correction, under a scene-wide "depth" (the print preset),
- * whose reflection is faint and blurred (k_r and g below RD_DEPTH_MIN_*), not glass. */
+ * whose reflection is faint and blurred (k_r and g below RD_DEPTH_MIN_*), not glass: a glaze,
+ * whose probe is sized by its lobe (probe_resolution). */
 static int faint_under_depth(const rd_scene *s, const rd_material *m)
 {
     return m->correction == RD_CORRECTION_DEFAULT &&
@@ -158,13 +164,11 @@ rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m)
         return m->correction;
     rd_correction c = s->reflection.correction != RD_CORRECTION_DEFAULT ? s->reflection.correction
                                                                         : RD_CORRECTION_BOX;
-    /* A scene-wide "depth" (the print preset) leaves faint, blurred reflections to the box:
-     * a glaze's k_r = 0.1 through a lobe of g = 0.6 (4.5 degrees) hides where along the ray
-     * the search would place a hit, and the search is the costliest part of their shading
-     * (designed demo, 3840 x 2160: the basin and the bath took a fifth of the main pass).
-     * A material that names its correction keeps it; glass keeps depth (what it shows through
-     * is most of its colour). docs/accuracy.md measures the trade. */
-    return faint_under_depth(s, m) ? RD_CORRECTION_BOX : c;
+    /* Faint, blurred glazes keep a scene-wide "depth" (the print preset) too: their probe
+     * leaves their own product out, and the room probe's search brings it back (a WC's seat
+     * reflects its cistern). Until the room probe they took the box, for speed; the seventh
+     * round of docs/accuracy.md measures both. */
+    return c;
 }
 
 rd_blur_method rd_effective_blur(const rd_scene *s)
@@ -263,11 +267,11 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
                                                : (supersample > 1 ? 512 : 256);
     if (cap > max_size)
         cap = max_size;
-    /* A fixed size (the print preset's 512) is kept, but for the faint glazes that the print
-     * preset's scene-wide "depth" leaves to the box (faint_under_depth): their colour is only
-     * ever read through their lobe, so the gloss cap below holds for them as in auto sizing
-     * (a glaze of g = 0.6 is read at the 64-texel level of a 512 capture, which a 128 capture
-     * makes as well; designed demo, 4K print: six such probes). */
+    /* A fixed size (the print preset's 512) is kept, but for the faint glazes under the print
+     * preset's scene-wide "depth" (faint_under_depth): their colour is only ever read through
+     * their lobe, so the gloss cap below holds for them as in auto sizing (a glaze of g = 0.6
+     * is read at the 64-texel level of a 512 capture, which a 128 capture makes as well;
+     * designed demo, 4K print: six such probes). */
     int glaze = faint_under_depth(s, &s->objects[p->owner].material);
     if (fixed > 0 && !glaze)
         return fixed < max_size ? fixed : max_size;
@@ -291,6 +295,11 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
         /* Twice that, so the lookup lands on level 1 or above (rd_lobe_level), never between
          * the unblurred capture and the first blurred level. */
         int gloss_cap = next_pow2(2.0f * RD_LOBE_TEXELS * 1.5707963f / half_width);
+        /* A glaze's "depth" search reads the capture's distances unblurred, at the texels'
+         * own size: twice the texels place its hits closer (demo, print: 34.68 -> 35.03 dB;
+         * docs/accuracy.md, seventh round). */
+        if (glaze)
+            gloss_cap *= 2;
         if (n > gloss_cap)
             n = gloss_cap;
     }
@@ -569,6 +578,58 @@ static int probe_visible(const rd_scene *s, const rd_probe *p, vec4 planes[6])
     return 0;
 }
 
+/* The room probe (lit.frag, pick_depth_hit): a cube of everything, the owners of the other
+ * probes included, captured at the proxy's centre with distances and surfaces as a "depth"
+ * probe is, and blurred for the glossiness of every object that searches it. It is made on the
+ * frames that capture a "depth" probe completely, so the two always show the same scene. */
+static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmin[3],
+                                   const float bmax[3], rd_frame_stats *stats)
+{
+    rd_probe *p = &s->room_probe;
+    float g_min = 1.0f, g_max = 0.0f;
+    for (int i = 0; i < s->object_count; i++) {
+        const rd_material *m = &s->objects[i].material;
+        if (s->object_probe[i] < 0 || s->probes[s->object_probe[i]].planar ||
+            rd_effective_correction(s, m) != RD_CORRECTION_DEPTH)
+            continue;
+        float g = fminf(fmaxf(m->glossiness, 0.0f), 1.0f);
+        g_min = fminf(g_min, g);
+        g_max = fmaxf(g_max, g);
+    }
+    int fixed = s->reflection.resolution > 0 ? s->reflection.resolution : 256;
+    int size = fixed < ctx->max_size ? fixed : ctx->max_size;
+    if (size != p->size) {
+        free_probe_textures(p);
+        p->size = size;
+        p->levels = rd_level_count(size);
+        rd_result r = rd_alloc_cube(&p->capture, size, p->levels);
+        if (r == RD_OK)
+            r = rd_alloc_cube(&p->surface, size, 1);
+        if (r != RD_OK)
+            return r;
+    }
+    p->key = 0;
+    p->gloss_min = g_min;
+    p->gloss_max = g_max > g_min ? g_max : g_min;
+    for (int k = 0; k < 3; k++)
+        p->centre[k] = 0.5f * (bmin[k] + bmax[k]);
+    float far_m = capture_far(p->centre, bmin, bmax);
+    rd_phase_mark("probe set-up");
+    for (int f = 0; f < 6; f++) {
+        rd_result r = rd_probe_capture_face(ctx, s, p, f, far_m);
+        if (r != RD_OK)
+            return r;
+        stats->faces_captured++;
+    }
+    rd_phase_mark("probe captures");
+    p->faces_valid = 0x3f;
+    p->captured_frame = s->frame;
+    stats->room_probe = 1;
+    if (rd_phase_enabled())
+        fprintf(stderr, "room probe: %d texels a face\n", p->size);
+    return blur_probe(ctx, s, p, p->capture, p->size, stats);
+}
+
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
                            const float eye[3], float pixels_per_tan, int supersample,
                            const rd_planar_view *planar, rd_frame_stats *stats)
@@ -591,7 +652,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     /* The frame budget for refreshing probes (issue 8: probe updates within a frame budget):
      * at most max_faces_per_frame faces re-captured a frame, the probes taking turns from a
      * start that moves every frame. A probe's first, complete capture is never held back. */
-    int budget = s->reflection.max_faces_per_frame, spent = 0;
+    int budget = s->reflection.max_faces_per_frame, spent = 0, depth_fresh = 0;
     int start = (int)(s->frame % s->probe_count);
     for (int k = 0; k < s->probe_count; k++) {
         int i = (start + k) % s->probe_count;
@@ -709,8 +770,12 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             r = blur_probe(ctx, s, p, p->capture, p->size, stats);
             if (r != RD_OK)
                 return r;
+            depth_fresh |= depth;
         }
     }
+    if (depth_fresh && !s->reflection.room_probe_off &&
+        (r = room_probe_update(ctx, s, bmin, bmax, stats)) != RD_OK)
+        return r;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     unsigned e = rd_gl_drain_errors();
     return e == GL_NO_ERROR ? RD_OK : rd_fail(RD_ERR_GL, "OpenGL error 0x%x in a probe", e);

@@ -134,6 +134,16 @@ static void locate_lit(rd_program *p)
     p->u_surface_highlights = glGetUniformLocation(id, "u_surface_highlights");
     p->u_lobe_exponent = glGetUniformLocation(id, "u_lobe_exponent");
     p->u_depth_steps = glGetUniformLocation(id, "u_depth_steps");
+    p->u_room_active = glGetUniformLocation(id, "u_room_active");
+    p->u_room_probe = glGetUniformLocation(id, "u_room_probe");
+    p->u_room_distance = glGetUniformLocation(id, "u_room_distance");
+    p->u_room_surface = glGetUniformLocation(id, "u_room_surface");
+    p->u_room_centre = glGetUniformLocation(id, "u_room_centre");
+    p->u_room_lod = glGetUniformLocation(id, "u_room_lod");
+    p->u_object_min = glGetUniformLocation(id, "u_object_min");
+    p->u_object_max = glGetUniformLocation(id, "u_object_max");
+    p->u_group_min = glGetUniformLocation(id, "u_group_min");
+    p->u_group_max = glGetUniformLocation(id, "u_group_max");
 }
 
 const rd_program *rd_lit_program(rd_context *ctx, int variant)

@@ -12,7 +12,8 @@ typedef struct rd_probe {
     unsigned filtered; /* prefiltered chain (RD_BLUR_PREFILTERED, g < 1), else 0 */
     int size, levels;
     float centre[3], radius;
-    float detail_size; /* metres: what its resolution follows (see place_probe) */
+    float box_min[3], box_max[3]; /* its objects' joint world box (place_probe) */
+    float detail_size;            /* metres: what its resolution follows (see place_probe) */
     /* The glossiness range of the objects that look it up (a product's parts share one probe
      * and may differ: a mirror and its frame): the blur covers all of them. */
     float gloss_min, gloss_max;
@@ -63,6 +64,9 @@ struct rd_scene {
     int frame;
     rd_probe ambient_probe; /* RD_AMBIENT_SH9: captured at the proxy's centre */
     float sh9[9][3];        /* its irradiance coefficients, world coordinates */
+    /* The "depth" lookup's second probe (probe.c, room_probe_update): everything, seen from
+     * the proxy's centre; key 0, which no object has, so nothing is left out. */
+    rd_probe room_probe;
 
     rd_shadow_settings shadows;         /* rd_scene_set_shadows */
     struct rd_shadow_maps *shadow_maps; /* shadow.c; NULL until shadows are first drawn */

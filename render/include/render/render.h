@@ -246,6 +246,8 @@ typedef struct rd_reflection_defaults {
     int planar_mirrors;      /* 1: a flat mirror's probe is captured from the eye's mirror image,
                                 clipped at its plane, at the view's resolution (a planar reflection
                                 through the probe's cube map; docs/rendering.md) */
+    int room_probe_off;      /* 1: the "depth" lookup searches the object's own probe only, not
+                                also the room probe (docs/rendering.md, "The room probe") */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
@@ -297,6 +299,7 @@ typedef struct rd_frame_stats {
     int probes, faces_captured, prefiltered;
     long long refined_pixels; /* adaptive supersampling: pixels given s x s samples */
     int planar_mirrors;       /* flat mirrors captured as planar reflections (probe_planar.c) */
+    int room_probe;           /* 1: the room probe was captured ("depth" lookups; probe.c) */
 } rd_frame_stats;
 rd_frame_stats rd_last_frame_stats(const rd_context *ctx);
 
