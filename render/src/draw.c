@@ -222,17 +222,11 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glBindTexture(GL_TEXTURE_CUBE_MAP, room->surface);
     glUniform1i(p->u_room_surface, 8);
     glUniform3fv(p->u_room_centre, 1, room->centre);
-    float lo[3], hi[3], glo[3], ghi[3];
-    rd_object_world_bounds(s->ctx, o, lo, hi);
-    for (int k = 0; k < 3; k++) { /* a point on the box's face is outside box_exit's open box */
-        float pad = 1e-4f * (fabsf(lo[k]) + fabsf(hi[k])) + 1e-5f;
-        lo[k] -= pad;
-        hi[k] += pad;
+    float glo[3], ghi[3];
+    for (int k = 0; k < 3; k++) {
         glo[k] = probe->box_min[k] - 1e-3f; /* hits are placed to about a millimetre */
         ghi[k] = probe->box_max[k] + 1e-3f;
     }
-    glUniform3fv(p->u_object_min, 1, lo);
-    glUniform3fv(p->u_object_max, 1, hi);
     glUniform3fv(p->u_group_min, 1, glo);
     glUniform3fv(p->u_group_max, 1, ghi);
     glUniform1f(p->u_room_lod, room_ready ? rd_probe_lod(room, m->glossiness) : 0.0f);

@@ -140,8 +140,6 @@ static void locate_lit(rd_program *p)
     p->u_room_surface = glGetUniformLocation(id, "u_room_surface");
     p->u_room_centre = glGetUniformLocation(id, "u_room_centre");
     p->u_room_lod = glGetUniformLocation(id, "u_room_lod");
-    p->u_object_min = glGetUniformLocation(id, "u_object_min");
-    p->u_object_max = glGetUniformLocation(id, "u_object_max");
     p->u_group_min = glGetUniformLocation(id, "u_group_min");
     p->u_group_max = glGetUniformLocation(id, "u_group_max");
 }

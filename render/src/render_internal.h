@@ -61,7 +61,7 @@ typedef struct rd_program {
     int u_planar, u_planar_view_proj;       /* a flat mirror's planar capture (probe_planar.c) */
     int u_probe_surface, u_surface_highlights, u_lobe_exponent, u_depth_steps;
     int u_room_active, u_room_probe, u_room_distance, u_room_surface, u_room_centre, u_room_lod,
-        u_object_min, u_object_max, u_group_min, u_group_max;
+        u_group_min, u_group_max;
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */
