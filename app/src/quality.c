@@ -12,7 +12,7 @@
  * room 12.72 -> 30.39 dB; print demo 29.51 -> 32.14 dB; docs/accuracy.md, "Fifth round"), a
  * capture every frame that follows the eye: stills only, as a live view's frame budget holds
  * its probes still. Print's depth lookups also search the room probe, a capture of the whole
- * room from its centre, and cover the glazes too (demo print 32.40 -> 35.14 dB; docs/accuracy.md,
+ * room from its centre, and cover the glazes too (demo print 32.40 -> 35.26 dB; docs/accuracy.md,
  * "Seventh round"). */
 #include "app/quality.h"
 
