@@ -139,7 +139,14 @@ static app_result add_primitive(rd_context *ctx, const app_project *p, app_scene
         return APP_ERR_SCHEMA;
     }
     /* Closed shapes cull their back faces; a plane is a sheet seen from either side. */
+    /* The unit shape the mesh approximates: a lamp of one is reflected exactly (emitters.c). */
+    rd_shape shape = o->shape == APP_SHAPE_BOX        ? RD_SHAPE_BOX
+                     : o->shape == APP_SHAPE_SPHERE   ? RD_SHAPE_SPHERE
+                     : o->shape == APP_SHAPE_CYLINDER ? RD_SHAPE_CYLINDER
+                     : o->shape == APP_SHAPE_PLANE    ? RD_SHAPE_PLANE
+                                                      : RD_SHAPE_MESH;
     rd_object_desc d = {.mesh = mesh,
+                        .shape = shape,
                         .material = *m,
                         .double_sided = o->shape == APP_SHAPE_PLANE,
                         .probe = probe,

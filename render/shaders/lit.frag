@@ -105,6 +105,24 @@ float spot_factor(float cos_angle, vec2 inner_outer)
     return t * t * (3.0 - 2.0 * t);
 }
 
+// Light i as seen from x: its unit direction L and the factor of its distance attenuation and
+// spot cone (1 for a directional light); n stands in for L at the light's own position.
+float light_towards(int i, vec3 x, vec3 n, out vec3 L)
+{
+    if (u_light_type[i] == 2) {
+        L = -u_light_direction[i];
+        return 1.0;
+    }
+    vec3 d = u_light_position[i] - x;
+    float dist = length(d);
+    L = dist > 0.0 ? d / dist : n;
+    vec3 a = u_light_attenuation[i];
+    float k = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-4);
+    if (u_light_type[i] == 1)
+        k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
+    return k;
+}
+
 // Octahedral normal encoding (Cigolle et al. 2014, "A survey of efficient representations for
 // independent unit vectors"): a unit vector in two numbers.
 vec2 sign_not_zero(vec2 v)
@@ -157,23 +175,46 @@ vec3 reflected_highlight(samplerCube surface, samplerCube distance, vec3 centre,
     vec3 sum = vec3(0.0);
     for (int i = 0; i < u_light_count; i++) {
         vec3 L;
-        float k = 1.0;
-        if (u_light_type[i] == 2) {
-            L = -u_light_direction[i];
-        } else {
-            vec3 ld = u_light_position[i] - x;
-            float ll = length(ld);
-            L = ll > 0.0 ? ld / ll : n;
-            vec3 a = u_light_attenuation[i];
-            k = 1.0 / max(a.x + a.y * ll + a.z * ll * ll, 1e-4);
-            if (u_light_type[i] == 1)
-                k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
-        }
+        float k = light_towards(i, x, n, L);
         if (dot(n, L) <= 0.0)
             continue;
         sum += k * sf.z * u_light_specular[i] * blinn_phong_power(dot(n, normalize(L + v)), shininess);
     }
     return peak * sum;
+}
+#endif
+
+#if defined(HAS_REFLECTION) && !defined(PLANAR_REFLECTION)
+// What a sharp lookup sees where its ray from p meets a lamp (emitters.glsl) before t_max:
+// the lamp shaded by eqs. 1-7 as the tracer's secondary ray shades it, seen from p, without
+// shadows or texture as captures draw it. The probe was captured without the lamps
+// (emitters.c), so this takes the texel's place; false where the ray meets none.
+bool emitter_reflection(vec3 p, vec3 r, float t_max, out vec3 colour)
+{
+    float t;
+    vec3 n;
+    int i = nearest_emitter(p, r, t_max, t, n);
+    colour = vec3(0.0);
+    if (i < 0)
+        return false;
+    vec3 x = p + t * r;
+#ifdef SH9_AMBIENT
+    vec3 lit = u_emitter_ambient[i] * max(sh9_irradiance(n), vec3(0.0)) / 3.14159265;
+#else
+    vec3 lit = u_emitter_ambient[i] * u_ambient_light;
+#endif
+    for (int j = 0; j < u_light_count; j++) {
+        vec3 L;
+        float k = light_towards(j, x, n, L);
+        float n_dot_l = dot(n, L);
+        if (n_dot_l <= 0.0)
+            continue;
+        lit += k * u_emitter_diffuse[i] * u_light_diffuse[j] * n_dot_l;
+        lit += k * u_emitter_specular[i] * u_light_specular[j] *
+               blinn_phong_power(dot(n, normalize(L - r)), u_emitter_shininess[i]);
+    }
+    colour = max(u_emitter_emissive[i], lit); // eq. 7
+    return true;
 }
 #endif
 
@@ -250,18 +291,7 @@ void main()
 #endif
     for (int i = 0; i < u_light_count; i++) {
         vec3 L;
-        float k = 1.0;
-        if (u_light_type[i] == 2) {
-            L = -u_light_direction[i];
-        } else {
-            vec3 d = u_light_position[i] - v_world;
-            float dist = length(d);
-            L = dist > 0.0 ? d / dist : N;
-            vec3 a = u_light_attenuation[i];
-            k = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-4);
-            if (u_light_type[i] == 1)
-                k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
-        }
+        float k = light_towards(i, v_world, N, L);
         float n_dot_l = dot(N, L);
         if (n_dot_l <= 0.0)
             continue; // no diffuse and no specular from behind the surface
@@ -313,6 +343,24 @@ void main()
                     ? reflected_highlight(u_room_surface, u_room_distance, u_room_centre, d, v_world)
                     : reflected_highlight(u_probe_surface, u_probe_distance, u_probe_centre, d,
                                           v_world);
+#endif
+#ifndef PLANAR_REFLECTION
+    // A lamp the probe left out (emitters.c), where the reflected ray meets it. Behind the
+    // surface a "depth" lookup found (what the ray meets first, by its search) it is hidden.
+    if (u_emitter_count > 0) {
+        vec3 r_lamp = reflect(-V, N);
+        float t_max = 1e30;
+#if !defined(BOX_OPAQUE_REFLECTION) && !defined(PER_VERTEX_REFLECTION)
+        vec3 centre = room == 1 ? u_room_centre : u_probe_centre;
+        if (u_correction == 4) // a small margin: the search places its hits to about 2 %
+            t_max = 1.02 * dot(centre + d - v_world, r) + 0.01;
+#endif
+        vec3 lamp;
+        if (emitter_reflection(v_world, r_lamp, t_max, lamp))
+            refl = lamp;
+    }
+#endif
+#ifndef BOX_OPAQUE_REFLECTION
     if (u_transparency > 0.0) {
         // Seed 003: refraction with an IOR, total internal reflection, optional dispersion
         // (one IOR per channel). A thin sheet displaces the ray but does not turn it.
@@ -326,9 +374,13 @@ void main()
                       : u_correction == 4 ? correct_depth(u_probe_distance, v_world, t, u_proxy_min,
                                                           u_proxy_max, u_probe_centre)
                                           : t;
-            refr[ch] = textureLod(u_probe, world_to_cmcs(dt), u_lod)[ch];
+            vec3 seen = textureLod(u_probe, world_to_cmcs(dt), u_lod).rgb, lamp;
+            vec3 ray = dot(t, t) == 0.0 ? reflect(-V, N) : t;
+            if (u_emitter_count > 0 && emitter_reflection(v_world, ray, 1e30, lamp))
+                seen = lamp; // a lamp seen through the pane, as in the reflection above
+            refr[ch] = seen[ch];
             if (u_dispersion <= 0.0) {
-                refr = textureLod(u_probe, world_to_cmcs(dt), u_lod).rgb;
+                refr = seen;
                 break;
             }
         }

@@ -1,5 +1,6 @@
 /* The lit draw of a scene's objects, shared by the main view and the probe faces. */
 #include "draw.h"
+#include "emitters.h"
 #include "gl_funcs.h"
 #include "probe.h"
 #include "shadow.h"
@@ -239,6 +240,7 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glUniform1f(p->u_kr, fminf(fmaxf(m->reflectivity, 0.0f), 1.0f));
     glUniform1f(p->u_lod, rd_probe_lod(probe, m->glossiness));
     glUniform1i(p->u_blend, (int)m->blend);
+    rd_set_emitter_uniforms(p, s, probe->leaves_emitters);
     glActiveTexture(GL_TEXTURE0);
 }
 
@@ -286,6 +288,9 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
         /* Probes see no glass: drawn plain it would be an opaque dark sheet, and what a clear
          * pane shows is what lies behind it, which the probe sees anyway. */
         if (!pass->reflections && o->material.transparency > 0.0f)
+            continue;
+        /* A sharp probe's lookups intersect the lamps themselves (emitters.c). */
+        if (pass->exclude_emitters && scene->object_emitter && scene->object_emitter[index])
             continue;
         const rd_mesh_slot *m = rd_mesh_lookup(ctx, o->mesh);
         if (!pass->reflections && !pass->full_meshes && o->probe_mesh.id) {
@@ -338,10 +343,11 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
             glUseProgram(p->id);
         }
         /* Per-object light culling (exact, lights_reaching). Shadowed programs index their
-         * shadow maps by light, and "depth" probes re-light what they saw with every light:
-         * both keep the scene's list. */
+         * shadow maps by light, and "depth" probes re-light what they saw with every light,
+         * as the lookups of lamps left out of a probe light those lamps: all keep the
+         * scene's list. */
         if (!depth_only && fast_paths && scene->object_spheres && !(variant & RD_LIT_SHADOWS) &&
-            !(probe && probe->surface)) {
+            !(probe && (probe->surface || probe->leaves_emitters))) {
             unsigned mask = lights_reaching(scene, scene->object_spheres[index]);
             if (mask != light_masks[variant]) {
                 set_light_uniforms(p, scene, mask);

@@ -18,6 +18,7 @@ typedef struct rd_pass {
     int depth_prepass;      /* 1: depth only first, then shade each visible pixel once */
     int isotropic_textures; /* 1: trilinear textures without anisotropy (probe captures) */
     int full_meshes;        /* 1: a capture draws objects' full meshes, not probe meshes */
+    int exclude_emitters;   /* 1: the scene's analytic emitters are left out (emitters.c) */
 } rd_pass;
 
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);

@@ -60,6 +60,7 @@
     X(PFNGLUNIFORM1IVPROC, glUniform1iv)                                                           \
     X(PFNGLUNIFORM1FVPROC, glUniform1fv)                                                           \
     X(PFNGLUNIFORM2FVPROC, glUniform2fv)                                                           \
+    X(PFNGLUNIFORM4FVPROC, glUniform4fv)                                                           \
     X(PFNGLUNIFORMMATRIX3FVPROC, glUniformMatrix3fv)                                               \
     X(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv)                                               \
     X(PFNGLGENTEXTURESPROC, glGenTextures)                                                         \
@@ -181,6 +182,7 @@ int rd_gl_has_tex_storage(void);
 #define glUniform1iv rd_glUniform1iv
 #define glUniform1fv rd_glUniform1fv
 #define glUniform2fv rd_glUniform2fv
+#define glUniform4fv rd_glUniform4fv
 #define glUniformMatrix3fv rd_glUniformMatrix3fv
 #define glUniformMatrix4fv rd_glUniformMatrix4fv
 #define glGenTextures rd_glGenTextures

@@ -3,6 +3,7 @@
 #include "probe.h"
 #include "probe_planar.h"
 #include "draw.h"
+#include "emitters.h"
 #include "gl_funcs.h"
 #include "phase_timer.h"
 #include "prefilter.h"
@@ -408,6 +409,7 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
                         &(rd_pass){.view_proj = &vp[0][0],
                                    .eye = p->centre,
                                    .exclude_key = p->key,
+                                   .exclude_emitters = p->leaves_emitters,
                                    .reflections = 0,
                                    .min_solid_radius = 0.25f / (float)p->size,
                                    .specular_off = s->reflection.probe_no_specular || p->surface,
@@ -637,10 +639,13 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     rd_result r = rd_probes_sync(s);
     if (r == RD_OK)
         r = rd_scene_update_spheres(ctx, s);
+    if (r == RD_OK)
+        r = rd_emitters_update(s);
     if (r != RD_OK)
         return r;
     s->frame++;
     stats->probes = s->probe_count;
+    stats->emitters = s->emitter_count;
     if (!s->probe_count)
         return RD_OK;
     float bmin[3], bmax[3];
@@ -660,6 +665,15 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         const rd_object_desc *owner = &s->objects[p->owner];
         place_probe(ctx, s, p);
         rd_probe_plan_planar(ctx, s, p, eye);
+        /* Sharp probes leave the lamps to their lookups (emitters.c); a change of mind needs
+         * a new capture. */
+        int leave = rd_probe_wants_leave_emitters(s, p);
+        if (leave != p->leaves_emitters) {
+            p->leaves_emitters = leave;
+            p->faces_valid = 0;
+            p->next_face = 0;
+        }
+        stats->emitter_probes += leave;
         if (owner->probe.update == RD_PROBE_STATIC) {
             const rd_texture_slot *t = rd_cubemap_lookup(ctx, owner->probe.static_map);
             if (!t)
@@ -773,6 +787,9 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             depth_fresh |= depth;
         }
     }
+    if (rd_phase_enabled() && stats->emitter_probes)
+        fprintf(stderr, "lamps reflected exactly: %d, in %d probes captured without them\n",
+                s->emitter_count, stats->emitter_probes);
     if (depth_fresh && !s->reflection.room_probe_off &&
         (r = room_probe_update(ctx, s, bmin, bmax, stats)) != RD_OK)
         return r;

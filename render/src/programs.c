@@ -2,6 +2,7 @@
  * (ARCHITECTURE.md): code a material does not need is not in its program. */
 #include "gl_funcs.h"
 #include "render_internal.h"
+#include "scene_internal.h"
 #include "shadow.h"
 
 #include <stdio.h>
@@ -142,6 +143,15 @@ static void locate_lit(rd_program *p)
     p->u_room_lod = glGetUniformLocation(id, "u_room_lod");
     p->u_group_min = glGetUniformLocation(id, "u_group_min");
     p->u_group_max = glGetUniformLocation(id, "u_group_max");
+    p->u_emitter_count = glGetUniformLocation(id, "u_emitter_count");
+    p->u_emitter_shape = glGetUniformLocation(id, "u_emitter_shape");
+    p->u_emitter_to_local = glGetUniformLocation(id, "u_emitter_to_local");
+    p->u_emitter_ambient = glGetUniformLocation(id, "u_emitter_ambient");
+    p->u_emitter_diffuse = glGetUniformLocation(id, "u_emitter_diffuse");
+    p->u_emitter_specular = glGetUniformLocation(id, "u_emitter_specular");
+    p->u_emitter_emissive = glGetUniformLocation(id, "u_emitter_emissive");
+    p->u_emitter_shininess = glGetUniformLocation(id, "u_emitter_shininess");
+    p->u_emitter_sphere = glGetUniformLocation(id, "u_emitter_sphere");
 }
 
 const rd_program *rd_lit_program(rd_context *ctx, int variant)
@@ -157,8 +167,9 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     int box_opaque =
         reflecting && !per_vertex && !sphere && (planar || (variant & RD_LIT_BOX_OPAQUE));
     char defines[400];
-    snprintf(defines, sizeof defines, "#define MAX_LIGHTS %d\n%s%s%s%s%s%s%s%s%s", RD_MAX_LIGHTS,
-             textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
+    snprintf(defines, sizeof defines,
+             "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n%s%s%s%s%s%s%s%s%s", RD_MAX_LIGHTS,
+             RD_MAX_EMITTERS, textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
              per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "",
              sphere ? "#define SPHERE_MAP 1\n" : "",
@@ -171,7 +182,8 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
         p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
-                     reflecting ? "reflect.glsl shadow.glsl lit.frag" : "shadow.glsl lit.frag",
+                     reflecting ? "reflect.glsl emitters.glsl shadow.glsl lit.frag"
+                                : "shadow.glsl lit.frag",
                      defines);
     if (!p->id)
         return NULL;

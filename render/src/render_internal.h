@@ -62,6 +62,9 @@ typedef struct rd_program {
     int u_probe_surface, u_surface_highlights, u_lobe_exponent, u_depth_steps;
     int u_room_active, u_room_probe, u_room_distance, u_room_surface, u_room_centre, u_room_lod,
         u_group_min, u_group_max;
+    int u_emitter_count, u_emitter_shape, u_emitter_to_local, u_emitter_ambient, u_emitter_diffuse,
+        u_emitter_specular, u_emitter_emissive, u_emitter_shininess,
+        u_emitter_sphere; /* emitters.c */
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */

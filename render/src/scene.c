@@ -34,6 +34,7 @@ void rd_scene_destroy(rd_scene *s)
     free(s->object_stamps);
     free(s->object_probe);
     free(s->object_spheres);
+    free(s->object_emitter);
     free(s);
 }
 

@@ -39,7 +39,20 @@ typedef struct rd_probe {
     int planar_width, planar_height;
     long long planar_frame;     /* the scene frame it was captured for; a stale one is not read */
     float planar_view_proj[16]; /* world -> the capture's clip space (column-major) */
+    /* 1: captured without the scene's analytic emitters, which its lookups intersect exactly
+     * instead (emitters.c); its readers are all sharp. */
+    int leaves_emitters;
 } rd_probe;
+
+/* A lamp of a known shape, reflected exactly by sharp lookups (emitters.c). */
+#define RD_MAX_EMITTERS 8
+typedef struct rd_emitter {
+    int object;
+    rd_shape shape;
+    int two_sided;      /* a plane lit from both sides */
+    float to_local[16]; /* world -> the unit shape's space (column-major) */
+    float sphere[4];    /* its world bounding sphere: centre, radius */
+} rd_emitter;
 
 struct rd_scene {
     rd_context *ctx;
@@ -67,6 +80,10 @@ struct rd_scene {
     /* The "depth" lookup's second probe (probe.c, room_probe_update): everything, seen from
      * the proxy's centre; key 0, which no object has, so nothing is left out. */
     rd_probe room_probe;
+    /* This frame's analytic emitters (emitters.c) and, per object, whether it is one. */
+    rd_emitter emitters[RD_MAX_EMITTERS];
+    int emitter_count;
+    unsigned char *object_emitter;
 
     rd_shadow_settings shadows;         /* rd_scene_set_shadows */
     struct rd_shadow_maps *shadow_maps; /* shadow.c; NULL until shadows are first drawn */

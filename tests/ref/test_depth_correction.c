@@ -4,8 +4,10 @@
  * as docs/accuracy.md reports them:
  *
  * - assets/projects/stress-mirror.json (a large flat mirror close to a wall, a lamp and a shelf
- *   off the walls): "depth" (distance impostors, reflect.glsl) beats "box" by at least 5 dB,
- *   box beats "none" by at least 3 dB (measured at 160 x 90: none 8.5, box 12.4, depth 19.1).
+ *   off the walls): "box" beats "none" by at least 6 dB (issue 4's bar) and "depth" (distance
+ *   impostors, reflect.glsl) beats box by at least 5 dB (measured at 160 x 90: none 11.8, box
+ *   22.5, depth 27.5; before the lamp was intersected exactly, emitters.c: none 8.5, box 12.4,
+ *   depth 19.1, the box placing the lamp on the ceiling).
  * - assets/projects/stress-taps.json (glossy chrome before a window of radiance 20): box beats
  *   none and depth beats box. Before the blur levels were matched to their resolution
  *   (prefilter.h) the window bled through the coarse levels of the small tap probes and box
@@ -101,7 +103,7 @@ int main(void)
     }
     double m[3];
     measure(ctx, TESSERA_SOURCE_DIR "/assets/projects/stress-mirror.json", m);
-    CHECK_MSG(m[1] >= m[0] + 3.0, "mirror: box %.2f dB is not 3 dB above none %.2f", m[1], m[0]);
+    CHECK_MSG(m[1] >= m[0] + 6.0, "mirror: box %.2f dB is not 6 dB above none %.2f", m[1], m[0]);
     CHECK_MSG(m[2] >= m[1] + 5.0, "mirror: depth %.2f dB is not 5 dB above box %.2f", m[2], m[1]);
     measure(ctx, TESSERA_SOURCE_DIR "/assets/projects/stress-taps.json", m);
     CHECK_MSG(m[1] > m[0], "taps: box %.2f dB is not above none %.2f", m[1], m[0]);

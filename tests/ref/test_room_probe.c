@@ -19,6 +19,7 @@
 #include "app/quality.h"
 #include "app/ref_scene_build.h"
 #include "app/scene_build.h"
+#include "gpu_render.h"
 #include "ref/ref.h"
 #include "render/render.h"
 
@@ -33,28 +34,15 @@ enum { W = 320, H = 180 };
  * window docs/accuracy.md's worst blocks name at 640 x 360 (x 120-160, y 200-240), halved. */
 enum { MIXER_X0 = 60, MIXER_X1 = 80, MIXER_Y0 = 100, MIXER_Y1 = 120 };
 
+static void set_room_off(rd_reflection_defaults *d, int off)
+{
+    d->room_probe_off = off;
+}
+
 static int render(rd_context *ctx, app_project *p, const rd_view *view, const char *preset,
                   int room_off, float *img, rd_frame_stats *stats)
 {
-    char err[2048];
-    app_scene s;
-    if (app_scene_build(ctx, p, &s, err, sizeof err) != APP_OK) {
-        CHECK_MSG(0, "%s", err);
-        return 0;
-    }
-    app_quality_apply(app_quality_find(preset), s.scene);
-    rd_shadow_settings sh = rd_scene_shadows(s.scene);
-    sh.mode = RD_SHADOWS_OFF;
-    rd_scene_set_shadows(s.scene, &sh);
-    rd_reflection_defaults d = rd_scene_reflection_defaults(s.scene);
-    d.room_probe_off = room_off;
-    rd_scene_set_reflection_defaults(s.scene, &d);
-    int ok = rd_render(ctx, s.scene, view) == RD_OK &&
-             rd_read_linear(ctx, img, (size_t)W * H * 4) == RD_OK;
-    CHECK_MSG(ok, "render: %s", rd_last_error());
-    *stats = rd_last_frame_stats(ctx);
-    app_scene_release(ctx, &s);
-    return ok;
+    return gpu_render(ctx, p, view, preset, set_room_off, room_off, img, stats);
 }
 
 static double psnr(const float *img, const float *truth, const float *mask)

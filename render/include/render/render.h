@@ -192,8 +192,20 @@ typedef struct rd_probe_desc {
     rd_cubemap static_map; /* RD_PROBE_STATIC */
 } rd_probe_desc;
 
+/* What an object's mesh is, when it is one of primitives.h's unit shapes (the transform maps
+ * it into the world). A lamp of a known shape is reflected exactly in mirrors and glass
+ * (docs/rendering.md, "Lamps in sharp reflections"); MESH: any other mesh. */
+typedef enum rd_shape {
+    RD_SHAPE_MESH = 0,
+    RD_SHAPE_SPHERE,   /* radius 0.5 at the origin */
+    RD_SHAPE_BOX,      /* [-0.5, 0.5]^3 */
+    RD_SHAPE_PLANE,    /* the unit square at z = 0 */
+    RD_SHAPE_CYLINDER, /* axis Z, radius 0.5, z in [-0.5, 0.5], capped */
+} rd_shape;
+
 typedef struct rd_object_desc {
     rd_mesh mesh;
+    rd_shape shape; /* what `mesh` is (MESH when unknown) */
     rd_material material;
     float transform[16]; /* column-major model matrix; all zero = identity */
     int background;      /* 1 for large enclosing surfaces (room walls): drawn after the rest */
@@ -248,6 +260,9 @@ typedef struct rd_reflection_defaults {
                                 through the probe's cube map; docs/rendering.md) */
     int room_probe_off;      /* 1: the "depth" lookup searches the object's own probe only, not
                                 also the room probe (docs/rendering.md, "The room probe") */
+    int emitters_in_probes;  /* 1: lamps stay in the probes of mirrors and glass, reflected as
+                                the probe saw them, instead of intersected exactly (docs/
+                                rendering.md, "Lamps in sharp reflections") */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
@@ -300,6 +315,8 @@ typedef struct rd_frame_stats {
     long long refined_pixels; /* adaptive supersampling: pixels given s x s samples */
     int planar_mirrors;       /* flat mirrors captured as planar reflections (probe_planar.c) */
     int room_probe;           /* 1: the room probe was captured ("depth" lookups; probe.c) */
+    int emitters;             /* lamps reflected exactly in sharp reflections (emitters.c) */
+    int emitter_probes;       /* probes captured without them (their readers are all sharp) */
 } rd_frame_stats;
 rd_frame_stats rd_last_frame_stats(const rd_context *ctx);
 
