@@ -66,12 +66,15 @@ int cli_session_open(const cli_options *o, cli_session *s)
         sh.mode = (rd_shadow_mode)(o->shadows - 1);
         rd_scene_set_shadows(s->scene.scene, &sh);
     }
-    if (o->probes || o->blur || o->ambient || o->planar_mirrors || o->room_probe) {
+    if (o->probes || o->blur || o->ambient || o->planar_mirrors || o->room_probe ||
+        o->exact_lamps) {
         rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
         if (o->planar_mirrors)
             d.planar_mirrors = o->planar_mirrors == 1;
         if (o->room_probe)
             d.room_probe_off = o->room_probe == 2;
+        if (o->exact_lamps)
+            d.emitters_in_probes = o->exact_lamps == 2;
         if (o->ambient)
             d.ambient = o->ambient == 2 ? RD_AMBIENT_SH9 : RD_AMBIENT_CONSTANT;
         if (o->probes)

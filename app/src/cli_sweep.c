@@ -26,14 +26,15 @@ typedef struct sweep_setting {
     int every_n; /* 1 every frame, N every N-th, 0 once (static), -1 time-sliced */
     int per_vertex;
     rd_ambient_model ambient;
-    int max_resolution; /* cap of auto; 0 = the renderer's */
-    int no_specular;    /* probes capture without highlights */
-    int supersample;    /* 1 = none (the reference is traced at the same) */
-    int planar;         /* flat mirrors as planar reflections (probe_planar.c) */
-    int room_off;       /* "depth" searches the own probe only (no room probe) */
+    int max_resolution;  /* cap of auto; 0 = the renderer's */
+    int no_specular;     /* probes capture without highlights */
+    int supersample;     /* 1 = none (the reference is traced at the same) */
+    int planar;          /* flat mirrors as planar reflections (probe_planar.c) */
+    int room_off;        /* "depth" searches the own probe only (no room probe) */
+    int lamps_in_probes; /* sharp lookups read lamps from their probes (not emitters.c) */
 } sweep_setting;
 
-enum { FACTOR_SETTINGS = 22, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
+enum { FACTOR_SETTINGS = 23, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
 
 /* The baseline is what the renderer does by default; every other setting changes one factor. */
 static void make_settings(sweep_setting out[SETTINGS])
@@ -94,6 +95,12 @@ static void make_settings(sweep_setting out[SETTINGS])
     out[21] = out[19];
     out[21].label = "depth, own probe only";
     out[21].room_off = 1;
+    /* Lamps left in the probes of mirrors and glass: what their exact intersection buys
+     * (emitters.c). */
+    out[22] = base;
+    out[22].factor = "lamps";
+    out[22].label = "in the probes";
+    out[22].lamps_in_probes = 1;
     /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
      * against a reference traced with the same. */
     static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
@@ -138,6 +145,7 @@ static void apply(rd_scene *scene, const rd_reflection_defaults *base, const swe
     d.probe_no_specular = s->no_specular;
     d.planar_mirrors = s->planar;
     d.room_probe_off = s->room_off;
+    d.emitters_in_probes = s->lamps_in_probes;
     rd_scene_set_reflection_defaults(scene, &d);
 }
 
