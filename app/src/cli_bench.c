@@ -89,14 +89,14 @@ int app_cli_bench(int argc, char **argv)
     cli_options o = {.frames = 30, .warmup = 5};
     int rc = cli_parse(argc, argv, 2, "bench",
                        "camera size frames warmup backend csv probes blur ambient quality animate "
-                       "exact-lamps",
+                       "exact-lamps self-reflections",
                        &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project) {
         fprintf(stderr, "usage: tessera bench PROJECT [--size WxH] [--frames N] [--warmup N] "
                         "[--camera NAME] [--backend egl|osmesa] [--csv FILE] [--animate OBJECT] "
-                        "[--exact-lamps on|off]\n");
+                        "[--exact-lamps on|off] [--self-reflections on|off]\n");
         return CLI_USAGE;
     }
     cli_session s;

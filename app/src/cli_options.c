@@ -118,12 +118,14 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
         else if (!strcmp(name, "supersample"))
             ok = parse_int(v, 1, 4, &o->supersample);
         else if (!strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors") ||
-                 !strcmp(name, "room-probe") || !strcmp(name, "exact-lamps")) {
+                 !strcmp(name, "room-probe") || !strcmp(name, "exact-lamps") ||
+                 !strcmp(name, "self-reflections")) {
             ok = !strcmp(v, "on") || !strcmp(v, "off");
             *(!strcmp(name, "adaptive")         ? &o->adaptive
               : !strcmp(name, "planar-mirrors") ? &o->planar_mirrors
               : !strcmp(name, "room-probe")     ? &o->room_probe
-                                                : &o->exact_lamps) = !strcmp(v, "on") ? 1 : 2;
+              : !strcmp(name, "exact-lamps")    ? &o->exact_lamps
+                                                : &o->self_reflections) = !strcmp(v, "on") ? 1 : 2;
         } else if (!strcmp(name, "frames"))
             ok = parse_int(v, 1, 100000, &o->frames);
         else if (!strcmp(name, "warmup"))
@@ -158,7 +160,8 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
                     : !strcmp(name, "backend")     ? " (expected egl or osmesa)"
                     : !strcmp(name, "supersample") ? " (expected 1 to 4)"
                     : !strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors") ||
-                            !strcmp(name, "room-probe") || !strcmp(name, "exact-lamps")
+                            !strcmp(name, "room-probe") || !strcmp(name, "exact-lamps") ||
+                            !strcmp(name, "self-reflections")
                         ? " (expected on or off)"
                     : !strcmp(name, "probes")
                         ? " (expected every-frame, once, on-change or time-sliced)"

@@ -20,10 +20,11 @@ typedef struct cli_options {
     const struct app_quality *quality; /* --quality: a preset (app/quality.h) */
     int width, height;
     int supersample;
-    int adaptive;       /* --adaptive: 0 the preset's, 1 on, 2 off */
-    int planar_mirrors; /* --planar-mirrors: 0 the preset's, 1 on, 2 off */
-    int room_probe;     /* --room-probe: 0 the default (on), 1 on, 2 off */
-    int exact_lamps;    /* --exact-lamps: 0 the default (on), 1 on, 2 off */
+    int adaptive;         /* --adaptive: 0 the preset's, 1 on, 2 off */
+    int planar_mirrors;   /* --planar-mirrors: 0 the preset's, 1 on, 2 off */
+    int room_probe;       /* --room-probe: 0 the preset's (on, off in print), 1 on, 2 off */
+    int exact_lamps;      /* --exact-lamps: 0 the default (on), 1 on, 2 off */
+    int self_reflections; /* --self-reflections: 0 the preset's, 1 on, 2 off */
     int frames, warmup;
     rd_backend backend;
     rd_probe_update probes; /* --probes: the scene's default update policy; 0 = the project's */

@@ -15,7 +15,7 @@
     "usage: tessera render PROJECT -o OUT.(png|jpg|tif|exr) [--camera NAME] [--size WxH]\n"        \
     "                      [--supersample 1-4] [--quality draft|interactive|final|print]\n"        \
     "                      [--adaptive on|off] [--planar-mirrors on|off] [--room-probe on|off]\n"  \
-    "                      [--exact-lamps on|off]\n"                                               \
+    "                      [--exact-lamps on|off] [--self-reflections on|off]\n"                   \
     "                      [--shadows off|hard|soft] [--dpi N] [--tile N] [--backend "             \
     "egl|osmesa]\n"                                                                                \
     "       tessera render PROJECT --all-views -o DIR [same options]\n"
@@ -62,11 +62,12 @@ int app_cli_render(int argc, char **argv)
             rest[n++] = argv[i];
     }
     cli_options o = {0};
-    int rc = cli_parse(
-        n, rest, 2, "render",
-        "output camera size supersample adaptive planar-mirrors room-probe exact-lamps backend "
-        "probes blur ambient quality shadows dpi tile",
-        &o);
+    int rc =
+        cli_parse(n, rest, 2, "render",
+                  "output camera size supersample adaptive planar-mirrors room-probe exact-lamps "
+                  "self-reflections backend "
+                  "probes blur ambient quality shadows dpi tile",
+                  &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project || !o.output || (all_views && o.camera)) {

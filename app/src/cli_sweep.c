@@ -32,9 +32,10 @@ typedef struct sweep_setting {
     int planar;          /* flat mirrors as planar reflections (probe_planar.c) */
     int room_off;        /* "depth" searches the own probe only (no room probe) */
     int lamps_in_probes; /* sharp lookups read lamps from their probes (not emitters.c) */
+    int self_rays;       /* lobe rays a sample of the self-reflection trace; 0 off */
 } sweep_setting;
 
-enum { FACTOR_SETTINGS = 23, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
+enum { FACTOR_SETTINGS = 24, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
 
 /* The baseline is what the renderer does by default; every other setting changes one factor. */
 static void make_settings(sweep_setting out[SETTINGS])
@@ -101,6 +102,11 @@ static void make_settings(sweep_setting out[SETTINGS])
     out[22].factor = "lamps";
     out[22].label = "in the probes";
     out[22].lamps_in_probes = 1;
+    /* Fixtures' reflections of themselves and their neighbours traced (self_trace.c). */
+    out[23] = base;
+    out[23].factor = "self-reflections";
+    out[23].label = "traced";
+    out[23].self_rays = APP_SELF_REFLECTION_RAYS;
     /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
      * against a reference traced with the same. */
     static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
@@ -119,6 +125,8 @@ static void make_settings(sweep_setting out[SETTINGS])
         st->supersample = q->supersample;
         st->correction = q->correction != RD_CORRECTION_DEFAULT ? q->correction : base.correction;
         st->planar = q->planar_mirrors;
+        st->self_rays = q->self_reflections;
+        st->room_off = q->room_probe_off;
     }
 }
 
@@ -146,6 +154,7 @@ static void apply(rd_scene *scene, const rd_reflection_defaults *base, const swe
     d.planar_mirrors = s->planar;
     d.room_probe_off = s->room_off;
     d.emitters_in_probes = s->lamps_in_probes;
+    d.self_reflections = s->self_rays;
     rd_scene_set_reflection_defaults(scene, &d);
 }
 

@@ -13,27 +13,31 @@
  * capture every frame that follows the eye: stills only, as a live view's frame budget holds
  * its probes still. Print's depth lookups also search the room probe, a capture of the whole
  * room from its centre, and cover the glazes too (demo print 32.40 -> 35.26 dB; docs/accuracy.md,
- * "Seventh round"). */
+ * "Seventh round"). Print traces each fixture's reflections of itself and of the fixtures beside
+ * it, three lobe directions a sample (designed demo 21.73 -> 35.37 dB, demo 35.26 -> 37.14 dB,
+ * taps 20.80 -> 34.92 dB), which finds what the room probe was searched for: print leaves the
+ * room probe out (designed 35.37 dB with it off, 35.28 dB on; docs/accuracy.md, "Ninth round"). */
 #include "app/quality.h"
 
 #include <string.h>
 
 static const app_quality presets[] = {
     {"draft", "probes captured once, box-mip blur: the fastest frames", RD_PROBE_ONCE,
-     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0, 0, 0},
+     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0, 0, 0, 0, 0},
     {"interactive", "probes refreshed on change, one face a frame, prefiltered blur: live",
      RD_PROBE_ON_CHANGE, RD_BLUR_PREFILTERED, 0, 256, 1, RD_SHADOWS_OFF, 1024, 1,
-     RD_CORRECTION_DEFAULT, 1, 0, 0},
+     RD_CORRECTION_DEFAULT, 1, 0, 0, 0, 0},
     {"final",
      "every probe complete at 128 texels, flat mirrors as planar reflections, 2x2 supersampling: "
      "stills",
      RD_PROBE_EVERY_FRAME, RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12,
-     RD_CORRECTION_DEFAULT, 0, 0, 1},
+     RD_CORRECTION_DEFAULT, 0, 0, 1, 0, 0},
     {"print",
-     "probes at 512 texels, depth lookups with a room probe, flat mirrors as planar reflections, "
-     "4x4 supersampling (adaptive in large prints), soft shadows: print",
+     "probes at 512 texels, depth lookups, fixtures' reflections of themselves and their "
+     "neighbours traced, flat mirrors as planar reflections, 4x4 supersampling (adaptive in "
+     "large prints), soft shadows: print",
      RD_PROBE_EVERY_FRAME, RD_BLUR_PREFILTERED, 512, 0, 4, RD_SHADOWS_SOFT, 2048, 16,
-     RD_CORRECTION_DEPTH, 0, 1, 1},
+     RD_CORRECTION_DEPTH, 0, 1, 1, APP_SELF_REFLECTION_RAYS, 1},
 };
 
 const app_quality *app_quality_find(const char *name)
@@ -73,6 +77,8 @@ void app_quality_apply(const app_quality *q, rd_scene *scene)
         d.correction = q->correction;
     d.max_faces_per_frame = q->probe_faces_per_frame;
     d.planar_mirrors = q->planar_mirrors;
+    d.self_reflections = q->self_reflections;
+    d.room_probe_off = q->room_probe_off;
     rd_scene_set_reflection_defaults(scene, &d);
     /* Shadows by preset (issue 7): none in drafts and live walk-throughs (hard shadows cost
      * about 180 ns of CPU per sample on llvmpipe with the demo's three lights, some 80 ms a

@@ -184,6 +184,30 @@ vec3 reflected_highlight(samplerCube surface, samplerCube distance, vec3 centre,
 }
 #endif
 
+#ifdef HAS_REFLECTION
+// A surface at x with unit normal n, seen along the ray direction r (from the reflecting
+// point), shaded by eqs. 1-7 with every light and no shadow: how a probe capture draws what it
+// sees and the tracer's secondary ray shades it (ref_trace.c, secondary_radiance).
+vec3 plain_shade(vec3 x, vec3 n, vec3 r, vec3 c_a, vec3 c_d, vec3 c_s, vec3 c_e, float shininess)
+{
+#ifdef SH9_AMBIENT
+    vec3 lit = c_a * max(sh9_irradiance(n), vec3(0.0)) / 3.14159265;
+#else
+    vec3 lit = c_a * u_ambient_light;
+#endif
+    for (int j = 0; j < u_light_count; j++) {
+        vec3 L;
+        float k = light_towards(j, x, n, L);
+        float n_dot_l = dot(n, L);
+        if (n_dot_l <= 0.0)
+            continue;
+        lit += k * c_d * u_light_diffuse[j] * n_dot_l;
+        lit += k * c_s * u_light_specular[j] * blinn_phong_power(dot(n, normalize(L - r)), shininess);
+    }
+    return max(c_e, lit); // eq. 7
+}
+#endif
+
 #if defined(HAS_REFLECTION) && !defined(PLANAR_REFLECTION)
 // What a sharp lookup sees where its ray from p meets a lamp (emitters.glsl) before t_max:
 // the lamp shaded by eqs. 1-7 as the tracer's secondary ray shades it, seen from p, without
@@ -197,24 +221,106 @@ bool emitter_reflection(vec3 p, vec3 r, float t_max, out vec3 colour)
     colour = vec3(0.0);
     if (i < 0)
         return false;
-    vec3 x = p + t * r;
-#ifdef SH9_AMBIENT
-    vec3 lit = u_emitter_ambient[i] * max(sh9_irradiance(n), vec3(0.0)) / 3.14159265;
-#else
-    vec3 lit = u_emitter_ambient[i] * u_ambient_light;
-#endif
-    for (int j = 0; j < u_light_count; j++) {
-        vec3 L;
-        float k = light_towards(j, x, n, L);
-        float n_dot_l = dot(n, L);
-        if (n_dot_l <= 0.0)
-            continue;
-        lit += k * u_emitter_diffuse[i] * u_light_diffuse[j] * n_dot_l;
-        lit += k * u_emitter_specular[i] * u_light_specular[j] *
-               blinn_phong_power(dot(n, normalize(L - r)), u_emitter_shininess[i]);
-    }
-    colour = max(u_emitter_emissive[i], lit); // eq. 7
+    colour = plain_shade(p + t * r, n, r, u_emitter_ambient[i], u_emitter_diffuse[i],
+                         u_emitter_specular[i], u_emitter_emissive[i], u_emitter_shininess[i]);
     return true;
+}
+#endif
+
+#ifdef SELF_TRACE
+uniform vec3 u_self_ambient[MAX_SELF_PARTS];
+uniform vec3 u_self_diffuse[MAX_SELF_PARTS];
+uniform vec3 u_self_specular[MAX_SELF_PARTS];
+uniform vec3 u_self_emissive[MAX_SELF_PARTS];
+uniform float u_self_shininess[MAX_SELF_PARTS];
+uniform int u_self_slot[MAX_SELF_PARTS]; // its diffuse texture's u_self_textures slot, -1 none
+uniform vec2 u_self_uv_scale[MAX_SELF_PARTS];
+uniform int u_self_rays; // lobe directions a sample traces (blurred lookups)
+uniform sampler2D u_self_textures[MAX_SELF_TEXTURES];
+
+// A sampler array is indexed by constants only where the index is not dynamically uniform.
+vec3 self_texture(int slot, vec2 uv)
+{
+    vec3 c = vec3(1.0);
+    if (slot == 0)
+        c = textureLod(u_self_textures[0], uv, 0.0).rgb;
+    else if (slot == 1)
+        c = textureLod(u_self_textures[1], uv, 0.0).rgb;
+    else if (slot == 2)
+        c = textureLod(u_self_textures[2], uv, 0.0).rgb;
+    else if (slot == 3)
+        c = textureLod(u_self_textures[3], uv, 0.0).rgb;
+    return c;
+}
+
+// What the ray from p in direction r meets of the product's own parts before t_max
+// (self_trace.glsl), shaded as the tracer's secondary ray shades it (ref_trace.c: the shading
+// normal interpolated and turned towards the ray, the texture, eqs. 1-7 seen from p, no
+// shadow); false where it meets none. t_max gets the hit's distance.
+bool self_reflection(vec3 p, vec3 r, inout float t_max, out vec3 colour)
+{
+    float t;
+    vec2 b;
+    colour = vec3(0.0);
+    int i = self_trace(p, r, t_max, t, b);
+    if (i < 0)
+        return false;
+    t_max = t;
+    vec4 a = texelFetch(u_self_tris, 7 * i), e1 = texelFetch(u_self_tris, 7 * i + 1),
+         e2 = texelFetch(u_self_tris, 7 * i + 2), n0 = texelFetch(u_self_tris, 7 * i + 3),
+         n1 = texelFetch(u_self_tris, 7 * i + 4), n2 = texelFetch(u_self_tris, 7 * i + 5),
+         uv = texelFetch(u_self_tris, 7 * i + 6);
+    float b0 = 1.0 - b.x - b.y;
+    vec3 n = b0 * n0.xyz + b.x * n1.xyz + b.y * n2.xyz;
+    float n_len = length(n);
+    n = n_len > 1e-20 ? n / n_len : -r;
+    if (!(dot(cross(e1.xyz, e2.xyz), r) < 0.0))
+        n = -n; // a back face is lit on the side the ray sees
+    int part = int(a.w);
+    vec3 albedo = vec3(1.0);
+    if (u_self_slot[part] >= 0) {
+        vec2 st = b0 * vec2(n0.w, n1.w) + b.x * vec2(n2.w, uv.x) + b.y * uv.yz;
+        albedo = self_texture(u_self_slot[part], st * u_self_uv_scale[part]);
+    }
+    colour = plain_shade(p + t * r, n, r, u_self_ambient[part] * albedo, u_self_diffuse[part] * albedo,
+                         u_self_specular[part], u_self_emissive[part], u_self_shininess[part]);
+    return true;
+}
+
+// Direction k of `count` a sample from the normalised Phong lobe of exponent n around the
+// unit axis, sampled as the tracer samples it (ref_trace.c, lobe_radiance): cos = u^(1 /
+// (n + 1)), phi = 2 pi v, u stratified ((stratum + jitter) / strata) and v a shifted golden-
+// ratio sequence. The s x s samples of a pixel (u_self_grid = s) share the jitter and shift,
+// hashed from the pixel, and take strata of their own, so a pixel's samples stratify its lobe
+// together as the tracer's samples of a pixel do. n = 0: the axis (a mirror).
+uniform int u_self_grid;
+
+uint hash_u32(uint h)
+{
+    h = (h ^ (h >> 16)) * 0x7feb352du;
+    h = (h ^ (h >> 15)) * 0x846ca68bu;
+    return h ^ (h >> 16);
+}
+
+vec3 lobe_direction(vec3 axis, float n, int k, int count)
+{
+    if (n <= 0.0)
+        return axis;
+    uint grid = uint(max(u_self_grid, 1));
+    uvec2 q = uvec2(gl_FragCoord.xy), pixel = q / grid, sub = q % grid;
+    int per_pixel = int(grid * grid);
+    int stratum = k * per_pixel + int(sub.y * grid + sub.x), strata = count * per_pixel;
+    uint h = hash_u32(pixel.x * 1973u + pixel.y * 9277u + 26699u);
+    uint j = hash_u32(h + uint(stratum) * 7919u);
+    float u = (float(stratum) + float(j & 0xffffu) / 65536.0) / float(strata);
+    float v = fract(float(h >> 16) / 65536.0 + float(stratum) * 0.6180339887);
+    float cos_t = pow(max(1.0 - u, 1e-30), 1.0 / (n + 1.0));
+    float sin_t = sqrt(max(0.0, 1.0 - cos_t * cos_t));
+    vec3 t = normalize(abs(axis.x) < 0.9 ? cross(axis, vec3(1.0, 0.0, 0.0))
+                                         : cross(axis, vec3(0.0, 1.0, 0.0)));
+    vec3 bt = cross(axis, t);
+    float phi = 6.28318530718 * v;
+    return cos_t * axis + sin_t * (cos(phi) * t + sin(phi) * bt);
 }
 #endif
 
@@ -247,7 +353,11 @@ vec3 pick_depth_hit(vec3 p, vec3 r, out int room)
     // the product the own probe leaves out (inside its box); elsewhere a nearer room hit is
     // more likely a silhouette the room's centre looks past.
     vec3 h_room = p + t_room * r;
+#ifdef SELF_TRACE
+    bool on_group = false; // the product's own parts are traced (self_reflection)
+#else
     bool on_group = all(greaterThan(h_room, u_group_min)) && all(lessThan(h_room, u_group_max));
+#endif
     bool take = t_room > 0.0 && (t_own <= 0.0 || (on_group && t_room < 0.9 * t_own - 0.01));
     if (!take && t_room > 0.0) {
         vec3 h = o_room + t_own * r;
@@ -345,18 +455,38 @@ void main()
                                           v_world);
 #endif
 #ifndef PLANAR_REFLECTION
-    // A lamp the probe left out (emitters.c), where the reflected ray meets it. Behind the
-    // surface a "depth" lookup found (what the ray meets first, by its search) it is hidden.
-    if (u_emitter_count > 0) {
-        vec3 r_lamp = reflect(-V, N);
-        float t_max = 1e30;
+    // What the probe left out, where the reflected ray meets it before the surface a "depth"
+    // lookup found (what the ray meets first, by its search): the product's own parts
+    // (self_trace.c), then a lamp (emitters.c), each hiding what lies behind it.
+    vec3 r_seen = reflect(-V, N);
+    float t_max = 1e30;
 #if !defined(BOX_OPAQUE_REFLECTION) && !defined(PER_VERTEX_REFLECTION)
-        vec3 centre = room == 1 ? u_room_centre : u_probe_centre;
-        if (u_correction == 4) // a small margin: the search places its hits to about 2 %
-            t_max = 1.02 * dot(centre + d - v_world, r) + 0.01;
+    vec3 centre = room == 1 ? u_room_centre : u_probe_centre;
+    if (u_correction == 4) // a small margin: the search places its hits to about 2 %
+        t_max = 1.02 * dot(centre + d - v_world, r) + 0.01;
 #endif
+#ifdef SELF_TRACE
+    // A blurred lookup traces one direction of its lobe a sample: the supersamples of a pixel
+    // average them, and where a sample's ray misses the parts, the probe's blurred value.
+    {
+        int rays = u_lobe_exponent > 0.0 ? u_self_rays : 1;
+        vec3 sum = vec3(0.0);
+        float t_first = t_max;
+        for (int k = 0; k < rays; k++) {
+            vec3 own;
+            float t_k = t_max;
+            bool hit = self_reflection(v_world, lobe_direction(r_seen, u_lobe_exponent, k, rays), t_k, own);
+            sum += hit ? own : refl;
+            if (k == 0 && hit)
+                t_first = t_k;
+        }
+        refl = sum / float(rays);
+        t_max = t_first;
+    }
+#endif
+    if (u_emitter_count > 0) {
         vec3 lamp;
-        if (emitter_reflection(v_world, r_lamp, t_max, lamp))
+        if (emitter_reflection(v_world, r_seen, t_max, lamp))
             refl = lamp;
     }
 #endif
@@ -376,7 +506,13 @@ void main()
                                           : t;
             vec3 seen = textureLod(u_probe, world_to_cmcs(dt), u_lod).rgb, lamp;
             vec3 ray = dot(t, t) == 0.0 ? reflect(-V, N) : t;
-            if (u_emitter_count > 0 && emitter_reflection(v_world, ray, 1e30, lamp))
+            float t_seen = 1e30;
+#ifdef SELF_TRACE
+            vec3 own; // the parts the pane's probe leaves out, seen through it
+            if (self_reflection(v_world, ray, t_seen, own))
+                seen = own;
+#endif
+            if (u_emitter_count > 0 && emitter_reflection(v_world, ray, t_seen, lamp))
                 seen = lamp; // a lamp seen through the pane, as in the reflection above
             refr[ch] = seen[ch];
             if (u_dispersion <= 0.0) {

@@ -1,6 +1,7 @@
 /* The lit draw of a scene's objects, shared by the main view and the probe faces. */
 #include "draw.h"
 #include "emitters.h"
+#include "self_trace.h"
 #include "gl_funcs.h"
 #include "probe.h"
 #include "shadow.h"
@@ -276,6 +277,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
         const rd_object_desc *o = &scene->objects[index];
         if (pass->exclude_key && rd_object_key(scene, index) == pass->exclude_key)
             continue;
+        if (pass->exclude_traced && rd_self_bvh_holds(pass->exclude_traced, index))
+            continue;
         if (scene->object_spheres && outside_frustum(planes, scene->object_spheres[index]))
             continue;
         /* A probe skips what would cover less than about a texel of its faces. */
@@ -316,7 +319,11 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                            ? RD_LIT_SPHERE_MAP
                            : 0) |
                       (shadows ? RD_LIT_SHADOWS : 0);
-        if (probe && fast_paths && box_opaque(scene, probe, o))
+        int self_traced = probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) &&
+                          !probe->planar && rd_self_traced(scene, probe);
+        if (self_traced)
+            variant |= RD_LIT_SELF_TRACE; /* the full path's lookup, with its own parts */
+        else if (probe && fast_paths && box_opaque(scene, probe, o))
             variant |= RD_LIT_BOX_OPAQUE;
         if (probe && probe->planar)
             variant |= RD_LIT_PLANAR; /* its own lookup (probe_planar.c) */
@@ -364,6 +371,9 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
             }
             if (probe)
                 set_reflection_uniforms(p, scene, probe, o);
+            if (variant & RD_LIT_SELF_TRACE)
+                rd_set_self_trace_uniforms(ctx, p, scene, probe, index,
+                                           pass->sample_grid > 1 ? pass->sample_grid : 1);
             if (variant & RD_LIT_SPHERE_MAP) {
                 glActiveTexture(GL_TEXTURE2);
                 glBindTexture(GL_TEXTURE_2D, probe->sphere_map);
@@ -446,7 +456,7 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
 }
 
 rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
-                       const float *view_rot, const float *eye)
+                       const float *view_rot, const float *eye, int sample_grid)
 {
     return rd_draw_objects(ctx, scene,
                            &(rd_pass){.view_proj = view_proj,
@@ -454,5 +464,6 @@ rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
                                       .eye = eye,
                                       .reflections = 1,
                                       .shadows = 1,
-                                      .depth_prepass = 1});
+                                      .depth_prepass = 1,
+                                      .sample_grid = sample_grid});
 }

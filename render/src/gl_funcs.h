@@ -26,6 +26,9 @@
     X(PFNGLDELETEBUFFERSPROC, glDeleteBuffers)                                                     \
     X(PFNGLBINDBUFFERPROC, glBindBuffer)                                                           \
     X(PFNGLBUFFERDATAPROC, glBufferData)                                                           \
+    X(PFNGLGETBUFFERSUBDATAPROC, glGetBufferSubData)                                               \
+    X(PFNGLGETBUFFERPARAMETERIVPROC, glGetBufferParameteriv)                                       \
+    X(PFNGLTEXBUFFERPROC, glTexBuffer)                                                             \
     X(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays)                                                 \
     X(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays)                                           \
     X(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray)                                                 \
@@ -148,6 +151,9 @@ int rd_gl_has_tex_storage(void);
 #define glDeleteBuffers rd_glDeleteBuffers
 #define glBindBuffer rd_glBindBuffer
 #define glBufferData rd_glBufferData
+#define glGetBufferSubData rd_glGetBufferSubData
+#define glGetBufferParameteriv rd_glGetBufferParameteriv
+#define glTexBuffer rd_glTexBuffer
 #define glGenVertexArrays rd_glGenVertexArrays
 #define glDeleteVertexArrays rd_glDeleteVertexArrays
 #define glBindVertexArray rd_glBindVertexArray

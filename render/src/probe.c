@@ -4,6 +4,7 @@
 #include "probe_planar.h"
 #include "draw.h"
 #include "emitters.h"
+#include "self_trace.h"
 #include "gl_funcs.h"
 #include "phase_timer.h"
 #include "prefilter.h"
@@ -45,8 +46,10 @@ static void free_probe_textures(rd_probe *p)
 
 void rd_probes_destroy(rd_scene *s)
 {
-    for (int i = 0; i < s->probe_count; i++)
+    for (int i = 0; i < s->probe_count; i++) {
         free_probe_textures(&s->probes[i]);
+        rd_self_trace_free(&s->probes[i].self);
+    }
     free_probe_textures(&s->room_probe);
     s->room_probe = (rd_probe){.captured_frame = -1, .filtered_level = -1};
     free(s->probes);
@@ -410,6 +413,7 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
                                    .eye = p->centre,
                                    .exclude_key = p->key,
                                    .exclude_emitters = p->leaves_emitters,
+                                   .exclude_traced = rd_self_traced(s, p) ? &p->self : NULL,
                                    .reflections = 0,
                                    .min_solid_radius = 0.25f / (float)p->size,
                                    .specular_off = s->reflection.probe_no_specular || p->surface,
@@ -641,11 +645,18 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         r = rd_scene_update_spheres(ctx, s);
     if (r == RD_OK)
         r = rd_emitters_update(s);
+    if (r == RD_OK)
+        r = rd_self_trace_update(ctx, s);
     if (r != RD_OK)
         return r;
     s->frame++;
     stats->probes = s->probe_count;
     stats->emitters = s->emitter_count;
+    for (int i = 0; i < s->probe_count; i++)
+        if (rd_self_traced(s, &s->probes[i])) {
+            stats->self_traced_probes++;
+            stats->self_triangles += s->probes[i].self.tri_count;
+        }
     if (!s->probe_count)
         return RD_OK;
     float bmin[3], bmax[3];
@@ -790,6 +801,9 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     if (rd_phase_enabled() && stats->emitter_probes)
         fprintf(stderr, "lamps reflected exactly: %d, in %d probes captured without them\n",
                 s->emitter_count, stats->emitter_probes);
+    if (rd_phase_enabled() && stats->self_traced_probes)
+        fprintf(stderr, "self-reflections traced: %d probes, %d triangles\n",
+                stats->self_traced_probes, stats->self_triangles);
     if (depth_fresh && !s->reflection.room_probe_off &&
         (r = room_probe_update(ctx, s, bmin, bmax, stats)) != RD_OK)
         return r;

@@ -152,6 +152,20 @@ static void locate_lit(rd_program *p)
     p->u_emitter_emissive = glGetUniformLocation(id, "u_emitter_emissive");
     p->u_emitter_shininess = glGetUniformLocation(id, "u_emitter_shininess");
     p->u_emitter_sphere = glGetUniformLocation(id, "u_emitter_sphere");
+    p->u_self_nodes = glGetUniformLocation(id, "u_self_nodes");
+    p->u_self_tris = glGetUniformLocation(id, "u_self_tris");
+    p->u_self_textures = glGetUniformLocation(id, "u_self_textures");
+    p->u_self_base = glGetUniformLocation(id, "u_self_base");
+    p->u_self_ambient = glGetUniformLocation(id, "u_self_ambient");
+    p->u_self_diffuse = glGetUniformLocation(id, "u_self_diffuse");
+    p->u_self_specular = glGetUniformLocation(id, "u_self_specular");
+    p->u_self_emissive = glGetUniformLocation(id, "u_self_emissive");
+    p->u_self_shininess = glGetUniformLocation(id, "u_self_shininess");
+    p->u_self_slot = glGetUniformLocation(id, "u_self_slot");
+    p->u_self_uv_scale = glGetUniformLocation(id, "u_self_uv_scale");
+    p->u_self_epsilon = glGetUniformLocation(id, "u_self_epsilon");
+    p->u_self_rays = glGetUniformLocation(id, "u_self_rays");
+    p->u_self_grid = glGetUniformLocation(id, "u_self_grid");
 }
 
 const rd_program *rd_lit_program(rd_context *ctx, int variant)
@@ -166,10 +180,15 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     /* A planar mirror needs none of the full path's refraction, search or highlights. */
     int box_opaque =
         reflecting && !per_vertex && !sphere && (planar || (variant & RD_LIT_BOX_OPAQUE));
-    char defines[400];
+    /* Self-traced lookups are the full path's (not the lean box or planar variants). */
+    int self_trace =
+        reflecting && !per_vertex && !sphere && !box_opaque && (variant & RD_LIT_SELF_TRACE);
+    char defines[600];
     snprintf(defines, sizeof defines,
-             "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n%s%s%s%s%s%s%s%s%s", RD_MAX_LIGHTS,
-             RD_MAX_EMITTERS, textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
+             "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"
+             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s",
+             RD_MAX_LIGHTS, RD_MAX_EMITTERS, RD_MAX_SELF_PARTS, RD_MAX_SELF_TEXTURES,
+             textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
              per_vertex ? "#define PER_VERTEX_REFLECTION 1\n" : "",
              sphere ? "#define SPHERE_MAP 1\n" : "",
@@ -177,12 +196,13 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
              (variant & RD_LIT_SHADOWS) ? "#define HAS_SHADOWS 1\n" : "",
              box_opaque ? "#define BOX_OPAQUE_REFLECTION 1\n" : "",
              (variant & RD_LIT_NO_SPECULAR) ? "#define NO_SPECULAR 1\n" : "",
-             planar ? "#define PLANAR_REFLECTION 1\n" : "");
+             planar ? "#define PLANAR_REFLECTION 1\n" : "",
+             self_trace ? "#define SELF_TRACE 1\n" : "");
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
         p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
-                     reflecting ? "reflect.glsl emitters.glsl shadow.glsl lit.frag"
+                     reflecting ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl lit.frag"
                                 : "shadow.glsl lit.frag",
                      defines);
     if (!p->id)

@@ -65,6 +65,9 @@ typedef struct rd_program {
     int u_emitter_count, u_emitter_shape, u_emitter_to_local, u_emitter_ambient, u_emitter_diffuse,
         u_emitter_specular, u_emitter_emissive, u_emitter_shininess,
         u_emitter_sphere; /* emitters.c */
+    int u_self_nodes, u_self_tris, u_self_textures, u_self_base, u_self_ambient, u_self_diffuse,
+        u_self_specular, u_self_emissive, u_self_shininess, u_self_slot, u_self_uv_scale,
+        u_self_epsilon, u_self_rays, u_self_grid; /* self_trace.c */
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */
@@ -80,7 +83,8 @@ enum {
     RD_LIT_DEPTH_ONLY = 128,  /* alone: lit.vert with depth_only.frag (the depth prepass) */
     RD_LIT_NO_SPECULAR = 256, /* probe captures that leave highlights out: no specular code */
     RD_LIT_PLANAR = 512,      /* a flat mirror's lookup in its planar capture (probe_planar.c) */
-    RD_LIT_VARIANTS = 1024
+    RD_LIT_SELF_TRACE = 1024, /* the lookup traces the product's own parts (self_trace.c) */
+    RD_LIT_VARIANTS = 2048
 };
 
 struct rd_context {

@@ -154,7 +154,7 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
         return r;
     ctx->stats = stats;
     begin_hdr_pass(ctx);
-    r = rd_draw_view(ctx, scene, vp, view_rot, v->eye);
+    r = rd_draw_view(ctx, scene, vp, view_rot, v->eye, shaded);
     if (r == RD_OK && adaptive(v, samples)) {
         rd_phase_mark("main pass, once per pixel");
         r = rd_adaptive_refine(ctx, scene, v, samples, vp, view_rot);

@@ -3,6 +3,19 @@
 
 #include "render/render.h"
 
+/* The parts of a probe's product as a bounding-volume hierarchy its lookups trace
+ * (self_trace.c): triangles in world space, in two buffer textures. */
+#define RD_MAX_SELF_PARTS 16
+#define RD_MAX_SELF_TEXTURES 4
+typedef struct rd_self_bvh {
+    unsigned node_buffer, node_texture, tri_buffer, tri_texture;
+    int node_count, tri_count; /* tri_count 0: none (not wanted, or nothing to trace) */
+    long long stamp;           /* the newest change counter of its objects at the build */
+    int part_count;
+    int part_object[RD_MAX_SELF_PARTS]; /* the scene's object index of each part */
+    int part_base[RD_MAX_SELF_PARTS];   /* its first triangle in the probe's numbering */
+} rd_self_bvh;
+
 /* One reflection probe: a cube map captured at the centre of a reflective object (or of the
  * parts of one product), RENDERING.md section 3. GL names live in the scene's context. */
 typedef struct rd_probe {
@@ -42,6 +55,8 @@ typedef struct rd_probe {
     /* 1: captured without the scene's analytic emitters, which its lookups intersect exactly
      * instead (emitters.c); its readers are all sharp. */
     int leaves_emitters;
+    /* Its lookups' own parts, traced (self_trace.c); empty when not. */
+    rd_self_bvh self;
 } rd_probe;
 
 /* A lamp of a known shape, reflected exactly by sharp lookups (emitters.c). */

@@ -8,9 +8,11 @@
  * - assets/projects/demo-bathroom.json with the print preset's reflections (shadows off in
  *   both renderers, as the reference has none): the room probe on beats it off by at least
  *   1 dB over the reflective pixels, and over the mixer's pixels alone by at least 3 dB.
+ *   Both without the self-reflection trace (render/src/self_trace.c), which finds what the
+ *   room probe is searched for and so takes its place in the print preset.
  * - only what the scene needs: the room probe is captured (six more faces) only when something
- *   searches it: with the print preset, not when it is turned off, not under the "final"
- *   preset (box correction).
+ *   searches it: with it on, not when it is turned off, not under the print preset (the
+ *   self-reflections find what it would), not under the "final" preset (box correction).
  *
  * GL through TESSERA_GL (EGL unless it says osmesa); some seconds on two cores. */
 #include "../common/check.h"
@@ -34,9 +36,13 @@ enum { W = 320, H = 180 };
  * window docs/accuracy.md's worst blocks name at 640 x 360 (x 120-160, y 200-240), halved. */
 enum { MIXER_X0 = 60, MIXER_X1 = 80, MIXER_Y0 = 100, MIXER_Y1 = 120 };
 
+/* off: 0 the room probe on, 1 off, both without self-reflections; -1 the preset as it is. */
 static void set_room_off(rd_reflection_defaults *d, int off)
 {
+    if (off < 0)
+        return;
     d->room_probe_off = off;
+    d->self_reflections = 0;
 }
 
 static int render(rd_context *ctx, app_project *p, const rd_view *view, const char *preset,
@@ -107,6 +113,10 @@ int main(void)
         }
         if (render(ctx, &project, &view, "final", 0, on, &st_final))
             CHECK_MSG(st_final.room_probe == 0, "the final preset (box) captured the room probe");
+        if (render(ctx, &project, &view, "print", -1, on, &st_final))
+            CHECK_MSG(st_final.room_probe == 0 && st_final.self_traced_probes > 0,
+                      "the print preset: room probe %d, %d probes self-traced", st_final.room_probe,
+                      st_final.self_traced_probes);
     }
     free(mask);
     free(mixer);

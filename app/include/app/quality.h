@@ -26,7 +26,16 @@ typedef struct app_quality {
     /* 1: flat mirrors reflect from the eye's mirror image (rd_reflection_defaults); their
      * captures follow the eye, so only stills take them. */
     int planar_mirrors;
+    /* Lobe directions a sample the self-reflection trace takes; 0 off
+     * (rd_reflection_defaults.self_reflections). */
+    int self_reflections;
+    /* 1: "depth" lookups leave the room probe out (rd_reflection_defaults.room_probe_off): the
+     * self-reflection trace finds what it was searched for, at less cost. */
+    int room_probe_off;
 } app_quality;
+
+/* The print preset's self-reflection rays, which --self-reflections on gives the others. */
+#define APP_SELF_REFLECTION_RAYS 3
 
 /* NULL for an unknown name. */
 const app_quality *app_quality_find(const char *name);

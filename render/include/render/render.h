@@ -263,6 +263,11 @@ typedef struct rd_reflection_defaults {
     int emitters_in_probes;  /* 1: lamps stay in the probes of mirrors and glass, reflected as
                                 the probe saw them, instead of intersected exactly (docs/
                                 rendering.md, "Lamps in sharp reflections") */
+    int self_reflections;    /* > 0: a fixture's lookups trace its own parts and the fixtures
+                                beside it (a tap's lever in its body, the basin by it), which its
+                                probe then leaves out; blurred lookups trace this many directions
+                                of their lobe a sample. 0: off (docs/rendering.md,
+                                "Self-reflections") */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
@@ -317,6 +322,8 @@ typedef struct rd_frame_stats {
     int room_probe;           /* 1: the room probe was captured ("depth" lookups; probe.c) */
     int emitters;             /* lamps reflected exactly in sharp reflections (emitters.c) */
     int emitter_probes;       /* probes captured without them (their readers are all sharp) */
+    int self_traced_probes;   /* probes whose lookups trace their own parts (self_trace.c) */
+    int self_triangles;       /* the triangles those traces hold */
 } rd_frame_stats;
 rd_frame_stats rd_last_frame_stats(const rd_context *ctx);
 
