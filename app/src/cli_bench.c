@@ -89,14 +89,15 @@ int app_cli_bench(int argc, char **argv)
     cli_options o = {.frames = 30, .warmup = 5};
     int rc = cli_parse(argc, argv, 2, "bench",
                        "camera size frames warmup backend csv probes blur ambient quality animate "
-                       "exact-lamps self-reflections",
+                       "exact-lamps self-reflections probe-resolution",
                        &o);
     if (rc != CLI_OK)
         return rc;
     if (!o.project) {
         fprintf(stderr, "usage: tessera bench PROJECT [--size WxH] [--frames N] [--warmup N] "
                         "[--camera NAME] [--backend egl|osmesa] [--csv FILE] [--animate OBJECT] "
-                        "[--exact-lamps on|off] [--self-reflections on|off]\n");
+                        "[--exact-lamps on|off] [--self-reflections on|off|1-16] "
+                        "[--probe-resolution 16-2048]\n");
         return CLI_USAGE;
     }
     cli_session s;

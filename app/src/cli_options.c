@@ -117,6 +117,12 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             ok = cli_parse_size(v, &o->width, &o->height);
         else if (!strcmp(name, "supersample"))
             ok = parse_int(v, 1, 4, &o->supersample);
+        else if (!strcmp(name, "self-reflections") && strcmp(v, "on") && strcmp(v, "off")) {
+            /* a number: the lobe directions a sample (rd_reflection_defaults) */
+            ok = parse_int(v, 1, 16, &o->self_rays);
+            o->self_reflections = 1;
+        } else if (!strcmp(name, "probe-resolution"))
+            ok = parse_int(v, 16, 2048, &o->probe_resolution);
         else if (!strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors") ||
                  !strcmp(name, "room-probe") || !strcmp(name, "exact-lamps") ||
                  !strcmp(name, "self-reflections")) {
@@ -156,12 +162,13 @@ int cli_parse(int argc, char **argv, int first, const char *command, const char 
             ok = rd_backend_parse(v, &o->backend) == RD_OK && o->backend != RD_BACKEND_ADOPT;
         if (!ok) {
             fprintf(stderr, "tessera %s: bad value \"%s\" for --%s%s\n", command, v, name,
-                    !strcmp(name, "size")          ? " (expected WIDTHxHEIGHT, e.g. 1280x720)"
-                    : !strcmp(name, "backend")     ? " (expected egl or osmesa)"
-                    : !strcmp(name, "supersample") ? " (expected 1 to 4)"
+                    !strcmp(name, "size")               ? " (expected WIDTHxHEIGHT, e.g. 1280x720)"
+                    : !strcmp(name, "backend")          ? " (expected egl or osmesa)"
+                    : !strcmp(name, "supersample")      ? " (expected 1 to 4)"
+                    : !strcmp(name, "self-reflections") ? " (expected on, off or 1 to 16)"
+                    : !strcmp(name, "probe-resolution") ? " (expected 16 to 2048 texels)"
                     : !strcmp(name, "adaptive") || !strcmp(name, "planar-mirrors") ||
-                            !strcmp(name, "room-probe") || !strcmp(name, "exact-lamps") ||
-                            !strcmp(name, "self-reflections")
+                            !strcmp(name, "room-probe") || !strcmp(name, "exact-lamps")
                         ? " (expected on or off)"
                     : !strcmp(name, "probes")
                         ? " (expected every-frame, once, on-change or time-sliced)"

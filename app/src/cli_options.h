@@ -25,6 +25,8 @@ typedef struct cli_options {
     int room_probe;       /* --room-probe: 0 the preset's (on, off in print), 1 on, 2 off */
     int exact_lamps;      /* --exact-lamps: 0 the default (on), 1 on, 2 off */
     int self_reflections; /* --self-reflections: 0 the preset's, 1 on, 2 off */
+    int self_rays;        /* --self-reflections N: its lobe directions a sample; 0 = default */
+    int probe_resolution; /* --probe-resolution: texels a face side; 0 = the preset's */
     int frames, warmup;
     rd_backend backend;
     rd_probe_update probes; /* --probes: the scene's default update policy; 0 = the project's */

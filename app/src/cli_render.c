@@ -15,7 +15,8 @@
     "usage: tessera render PROJECT -o OUT.(png|jpg|tif|exr) [--camera NAME] [--size WxH]\n"        \
     "                      [--supersample 1-4] [--quality draft|interactive|final|print]\n"        \
     "                      [--adaptive on|off] [--planar-mirrors on|off] [--room-probe on|off]\n"  \
-    "                      [--exact-lamps on|off] [--self-reflections on|off]\n"                   \
+    "                      [--exact-lamps on|off] [--self-reflections on|off|1-16]\n"              \
+    "                      [--probe-resolution 16-2048]\n"                                         \
     "                      [--shadows off|hard|soft] [--dpi N] [--tile N] [--backend "             \
     "egl|osmesa]\n"                                                                                \
     "       tessera render PROJECT --all-views -o DIR [same options]\n"
@@ -65,7 +66,7 @@ int app_cli_render(int argc, char **argv)
     int rc =
         cli_parse(n, rest, 2, "render",
                   "output camera size supersample adaptive planar-mirrors room-probe exact-lamps "
-                  "self-reflections backend "
+                  "self-reflections probe-resolution backend "
                   "probes blur ambient quality shadows dpi tile",
                   &o);
     if (rc != CLI_OK)

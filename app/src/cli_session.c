@@ -67,7 +67,7 @@ int cli_session_open(const cli_options *o, cli_session *s)
         rd_scene_set_shadows(s->scene.scene, &sh);
     }
     if (o->probes || o->blur || o->ambient || o->planar_mirrors || o->room_probe ||
-        o->exact_lamps || o->self_reflections) {
+        o->exact_lamps || o->self_reflections || o->probe_resolution) {
         rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
         if (o->planar_mirrors)
             d.planar_mirrors = o->planar_mirrors == 1;
@@ -77,8 +77,10 @@ int cli_session_open(const cli_options *o, cli_session *s)
             d.emitters_in_probes = o->exact_lamps == 2;
         if (o->self_reflections == 2)
             d.self_reflections = 0;
-        else if (o->self_reflections == 1 && d.self_reflections <= 0)
-            d.self_reflections = APP_SELF_REFLECTION_RAYS;
+        else if (o->self_reflections == 1 && (o->self_rays > 0 || d.self_reflections <= 0))
+            d.self_reflections = o->self_rays > 0 ? o->self_rays : APP_SELF_REFLECTION_RAYS;
+        if (o->probe_resolution)
+            d.resolution = o->probe_resolution;
         if (o->ambient)
             d.ambient = o->ambient == 2 ? RD_AMBIENT_SH9 : RD_AMBIENT_CONSTANT;
         if (o->probes)
