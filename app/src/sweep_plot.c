@@ -20,13 +20,14 @@ void app_sweep_mark_front(app_sweep_point *p, int n)
 }
 
 /* A colour a factor; anything else (the baseline) the last. */
-static const char *const factors[] = {"resolution", "correction", "blur",    "update", "per-vertex",
-                                      "ambient",    "highlights", "mirrors", "preset", "baseline"};
+static const char *const factors[] = {"resolution", "correction",       "blur",       "update",
+                                      "per-vertex", "ambient",          "highlights", "mirrors",
+                                      "lamps",      "self-reflections", "preset",     "baseline"};
 enum { FACTORS = sizeof factors / sizeof factors[0] };
 static const double colours[FACTORS][3] = {
     {0.12, 0.47, 0.71}, {0.84, 0.15, 0.16}, {0.17, 0.63, 0.17}, {1.0, 0.5, 0.05},
     {0.58, 0.4, 0.74},  {0.55, 0.34, 0.29}, {0.5, 0.5, 0.5},    {0.09, 0.75, 0.81},
-    {0.89, 0.47, 0.76}, {0.1, 0.1, 0.1}};
+    {0.74, 0.74, 0.13}, {0.55, 0.35, 0.0},  {0.89, 0.47, 0.76}, {0.1, 0.1, 0.1}};
 
 static int factor_index(const char *f)
 {
