@@ -1,10 +1,12 @@
 /* tessera extremes: RENDERING.md section 11 as a sweep of its own (issue 4, part 5). Each case
  * changes one thing of a small mirror-and-chrome room to an extreme, renders it on the GPU and
  * with the reference tracer, checks that every pixel of both is finite, and measures the
- * error where the reference is defined. Prints a Markdown table; exit 1 if a pixel is not
- * finite. */
+ * error where the reference is defined; then once more on the GPU with the print preset's
+ * self-reflections (render/src/self_trace.c), whose trace and lobe sampling meet the same
+ * extremes. Prints a Markdown table; exit 1 if a pixel is not finite. */
 #include "app/cli.h"
 #include "app/image_compare.h"
+#include "app/quality.h"
 #include "app/ref_scene_build.h"
 #include "cli_options.h"
 
@@ -148,24 +150,26 @@ int app_cli_extremes(int argc, char **argv)
     }
     FILE *md = o.markdown ? fopen(o.markdown, "w") : NULL;
     const char *head = "| case | GPU non-finite | reference non-finite | PSNR all (dB) | "
-                       "PSNR reflective (dB) |\n|---|---|---|---|---|\n";
+                       "PSNR reflective (dB) | self-traced non-finite | self-traced PSNR "
+                       "reflective (dB) |\n|---|---|---|---|---|---|---|\n";
     printf("%s", head);
     if (md)
         fputs(head, md);
     size_t n = (size_t)w * (size_t)h * 4;
     float *gpu = malloc(n * sizeof *gpu), *mask = malloc((size_t)w * (size_t)h * sizeof *mask);
+    float *traced = malloc(n * sizeof *traced);
     static char json[8192];
     int bad_cases = 0;
-    for (int k = 0; k < CASES && gpu && mask; k++) {
+    for (int k = 0; k < CASES && gpu && mask && traced; k++) {
         const extreme_case *c = &cases[k];
         app_project p = {0};
         app_scene scene = {0};
         ref_scene *ref = NULL;
         ref_image truth = {0};
         char err[2048] = "";
-        long long gpu_bad = -1, ref_bad = -1;
-        app_image_metrics all = {0}, refl = {0};
-        all.psnr = refl.psnr = NAN;
+        long long gpu_bad = -1, ref_bad = -1, self_bad = -1;
+        app_image_metrics all = {0}, refl = {0}, self_refl = {0};
+        all.psnr = refl.psnr = self_refl.psnr = NAN;
         if (!case_json(c, texture, json, sizeof json) ||
             app_project_parse(json, strlen(json), fake, &p, err, sizeof err) != APP_OK) {
             fprintf(stderr, "tessera extremes: %s: %s\n", c->name, err);
@@ -178,6 +182,11 @@ int app_cli_extremes(int argc, char **argv)
             v.supersample = 1;
             if (rd_render(ctx, scene.scene, &v) == RD_OK && rd_read_linear(ctx, gpu, n) == RD_OK)
                 gpu_bad = non_finite(gpu, n);
+            rd_reflection_defaults d = rd_scene_reflection_defaults(scene.scene);
+            d.self_reflections = APP_SELF_REFLECTION_RAYS;
+            rd_scene_set_reflection_defaults(scene.scene, &d);
+            if (rd_render(ctx, scene.scene, &v) == RD_OK && rd_read_linear(ctx, traced, n) == RD_OK)
+                self_bad = non_finite(traced, n);
             if (app_ref_scene_build(&p, &ref, err, sizeof err) == APP_OK) {
                 ref_render_desc d = {.view = v, .samples = o.samples ? o.samples : 16, .seed = 1};
                 if (ref_render(ref, &d, &truth) == REF_OK) {
@@ -188,14 +197,16 @@ int app_cli_extremes(int argc, char **argv)
                         app_image_metrics_compute(gpu, truth.linear, w, h, NULL, &all);
                         app_image_metrics_compute(gpu, truth.linear, w, h, mask, &refl);
                     }
+                    if (self_bad == 0 && ref_bad == 0)
+                        app_image_metrics_compute(traced, truth.linear, w, h, mask, &self_refl);
                 }
             }
         }
-        if (gpu_bad != 0 || ref_bad != 0)
+        if (gpu_bad != 0 || ref_bad != 0 || self_bad != 0)
             bad_cases++;
         char line[512];
-        snprintf(line, sizeof line, "| %s | %lld | %lld | %.2f | %.2f |\n", c->name, gpu_bad,
-                 ref_bad, all.psnr, refl.psnr);
+        snprintf(line, sizeof line, "| %s | %lld | %lld | %.2f | %.2f | %lld | %.2f |\n", c->name,
+                 gpu_bad, ref_bad, all.psnr, refl.psnr, self_bad, self_refl.psnr);
         printf("%s", line);
         if (md)
             fputs(line, md);
@@ -206,10 +217,11 @@ int app_cli_extremes(int argc, char **argv)
         app_project_free(&p);
     }
     if (md) {
-        fprintf(md, "\n-1: the render itself failed. Every case must show 0 and 0.\n");
+        fprintf(md, "\n-1: the render itself failed. Every case must show 0, 0 and 0.\n");
         fclose(md);
     }
     free(gpu);
+    free(traced);
     free(mask);
     rd_context_destroy(ctx);
     unlink(texture);

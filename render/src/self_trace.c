@@ -9,16 +9,16 @@
  * print (docs/accuracy.md, "Ninth round").
  *
  * So each probe's readers trace their surroundings: the probe's own parts and the fixtures
- * nearest them (within RD_SELF_NEAR_M, at most RD_MAX_SELF_PARTS objects; never the room,
- * whose box the corrections fit, nor glass, which the tracer's secondary rays do not see) are
- * gathered as world-space triangles into a bounding-volume hierarchy (median splits, at most
- * four triangles a leaf) in two buffer textures, and left out of the probe's capture. The
- * lookup (lit.frag, SELF_TRACE) traces the reflected ray, and through glass the refracted
+ * nearest them (within a fifth of the room's diagonal, at most RD_MAX_SELF_PARTS objects; never
+ * the room, whose box the corrections fit, nor glass, which the tracer's secondary rays do not
+ * see) are gathered as world-space triangles into a bounding-volume hierarchy (median splits,
+ * at most four triangles a leaf) in two buffer textures, and left out of the probe's capture.
+ * The lookup (lit.frag, SELF_TRACE) traces the reflected ray, and through glass the refracted
  * one, against them; a hit is shaded as the tracer's secondary ray shades it (eqs. 1-7 seen
- * from the reflecting point, unshadowed, RENDERING.md section 6's one bounce), a miss reads
- * the probe, which now holds only what lies beyond. A blurred lookup traces
- * rd_reflection_defaults.self_reflections directions of its lobe a sample, stratified over
- * the pixel's samples. The tracer's rules hold: the ray leaves its own triangle out
+ * from the reflecting point, unshadowed, RENDERING.md section 6's one bounce), a miss reads the
+ * probe, which now holds only what lies beyond. A blurred lookup traces
+ * rd_reflection_defaults.self_reflections directions of its lobe a sample, stratified over the
+ * pixel's samples. The tracer's rules hold: the ray leaves its own triangle out
  * (gl_PrimitiveID), starts a scene epsilon away and sees no back face of a closed mesh. */
 #include "self_trace.h"
 #include "gl_funcs.h"
@@ -33,9 +33,12 @@
 #define NODE_TEXELS 2 /* bounds min + first/right, bounds max + count */
 #define LEAF_SIZE 4
 #define MAX_SELF_TRIANGLES (1 << 20)
-/* Designed demo, print, 640 x 360 (docs/accuracy.md, "Ninth round"): the own parts alone
- * 29.92 dB, neighbours within 0.3 m 31.94, within 1 m 32.18 dB (one lobe ray a sample). */
-#define RD_SELF_NEAR_M 1.0f
+/* How far around its own parts a probe's trace takes neighbours, as a fraction of the room's
+ * (the box proxy's) diagonal, so that a scene drawn at another scale traces the same: 0.97 m
+ * in the designed demo. There, print, 640 x 360, one lobe direction a sample (docs/accuracy.md,
+ * "Ninth round"): the own parts alone 29.92 dB, with the neighbours within 0.3 m 31.94 dB,
+ * within 1 m (nearest first) 32.18 dB. */
+#define RD_SELF_NEAR_FRACTION 0.2f
 
 typedef struct tri_src {
     float p[3][3], n[3][3], uv[3][2];
@@ -94,14 +97,17 @@ static float box_gap(rd_context *ctx, const rd_object_desc *o, const float lo[3]
 }
 
 /* The objects probe p's lookups trace, into list: its own parts, then the fixtures nearest
- * them within near_margin while the lookups' part uniforms hold them; never glass (the
- * tracer's secondary rays do not see it) nor the room. The count, -1 when there is nothing
- * a trace would add (a lone convex shape) or too much (its own parts alone overflow). */
+ * them within RD_SELF_NEAR_FRACTION of the room's diagonal while the lookups' part uniforms
+ * hold them; never glass (the tracer's secondary rays do not see it) nor the room. The count,
+ * -1 when there is nothing a trace would add (a lone convex shape) or too much (its own parts
+ * alone overflow). */
 static int members(rd_context *ctx, const rd_scene *s, const rd_probe *p,
                    int list[RD_MAX_SELF_PARTS])
 {
-    float lo[3], hi[3], margin = RD_SELF_NEAR_M;
+    float lo[3], hi[3], room_lo[3], room_hi[3];
     key_bounds(ctx, s, p, lo, hi);
+    rd_effective_proxy(s, room_lo, room_hi);
+    float margin = RD_SELF_NEAR_FRACTION * glm_vec3_distance(room_lo, room_hi);
     int n = 0, textures = 0, any_mesh = 0;
     for (int i = 0; i < s->object_count; i++) {
         const rd_object_desc *o = &s->objects[i];
