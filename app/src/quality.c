@@ -11,14 +11,15 @@
  * front of every sweep (at the baseline, demo 19.99 -> 25.53 dB in 130 instead of 170 ms, mirror
  * room 12.72 -> 30.39 dB; print demo 29.51 -> 32.14 dB; docs/accuracy.md, "Fifth round"), a
  * capture every frame that follows the eye: stills only, as a live view's frame budget holds
- * its probes still. Print's depth lookups also search the room probe, a capture of the whole
- * room from its centre, and cover the glazes too (demo print 32.40 -> 35.26 dB; docs/accuracy.md,
- * "Seventh round"). Print traces each fixture's reflections of itself and of the fixtures beside
- * it, three lobe directions a sample, which finds what the room probe was searched for: print
- * leaves the room probe out (designed demo 35.32 dB without it, 35.29 dB with it). Its probes
- * then hold only what lies beyond the fixtures, and 256 texels serve as well as 512 (designed
- * 35.32 against 35.40 dB, demo 37.05 against 37.14; 128: 34.46 and 36.81 dB) at two thirds of
- * the 640 x 360 time and 16 s instead of 20 s for the 3840 x 2160 print. Against the print
+ * its probes still. Print's depth lookups then also searched the room probe, a capture of the
+ * whole room from its centre, and covered the glazes too (demo print 32.40 -> 35.26 dB;
+ * docs/accuracy.md, "Seventh round"). Print traces each fixture's reflections of itself and of the
+ * fixtures beside it, three lobe directions a sample, which finds what the room probe was searched
+ * for: print leaves the room probe out (designed demo 35.32 dB without it, 35.29 dB with it). Its
+ * probes then hold only what lies beyond the fixtures, and 256 texels serve as well as 512
+ * (designed 35.32 against 35.40 dB, demo 37.05 against 37.14; 128: 34.46 and 36.81 dB) at two
+ * thirds of the 640 x 360 time and about the old preset's time for the 3840 x 2160 print (16.4 to
+ * 17.1 s against 17.1 to 17.8 s; with 512 texels 20.2 s). Against the print
  * preset before: designed demo 21.73 -> 35.32 dB, demo 35.26 -> 37.05 dB, taps 20.80 -> 34.89
  * dB (docs/accuracy.md, "Ninth round"). */
 #include "app/quality.h"

@@ -253,8 +253,8 @@ vec3 self_texture(int slot, vec2 uv)
     return c;
 }
 
-// What the ray from p in direction r meets of the product's own parts before t_max
-// (self_trace.glsl), shaded as the tracer's secondary ray shades it (ref_trace.c: the shading
+// What the ray from p in direction r meets of the traced fixtures (the product's own parts and
+// its nearest neighbours, which the probe leaves out) before t_max (self_trace.glsl), shaded as the tracer's secondary ray shades it (ref_trace.c: the shading
 // normal interpolated and turned towards the ray, the texture, eqs. 1-7 seen from p, no
 // shadow); false where it meets none. t_max gets the hit's distance.
 bool self_reflection(vec3 p, vec3 r, inout float t_max, out vec3 colour)

@@ -1,5 +1,6 @@
 // Self-reflections (render/src/self_trace.c): the reflected ray against the triangles of the
-// product the probe leaves out, through their bounding-volume hierarchy. Layouts: build_node
+// fixtures the probe leaves out (its own product and its nearest neighbours), through their
+// bounding-volume hierarchy. Layouts: build_node
 // and pack_triangle in self_trace.c.
 #ifdef SELF_TRACE
 uniform samplerBuffer u_self_nodes; // 2 texels a node

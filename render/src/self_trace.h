@@ -1,4 +1,5 @@
-/* A fixture's reflections of its own parts, traced against its triangles (self_trace.c). */
+/* A fixture's reflections of its own parts and its nearest neighbours, traced against their
+ * triangles (self_trace.c). */
 #ifndef RENDER_SELF_TRACE_H
 #define RENDER_SELF_TRACE_H
 
