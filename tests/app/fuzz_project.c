@@ -1,7 +1,7 @@
 /* libFuzzer target for the project reader (built with clang only; see CMakeLists.txt).
  * Random bytes go to app_project_parse; what parses is freed. The write of what parses is
  * covered by the replay test (test_project_fuzz_replay.c), which needs no libFuzzer. */
-#include "app/project.h"
+#include "app/project/project.h"
 
 #include <stddef.h>
 #include <stdint.h>

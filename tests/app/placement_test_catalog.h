@@ -4,7 +4,7 @@
 #ifndef PLACEMENT_TEST_CATALOG_H
 #define PLACEMENT_TEST_CATALOG_H
 
-#include "app/placement.h"
+#include "app/design/placement.h"
 #include "catalog/catalog.h"
 
 #include <stdio.h>

@@ -4,7 +4,7 @@
  * redo cleared by a new command, the step limit, groups, labels. */
 #include "test_util.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 
 #include <math.h>
 

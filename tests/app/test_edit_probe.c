@@ -4,7 +4,7 @@
  * `reflect`), and the policy saved and read back. */
 #include "test_util.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 
 #include <unistd.h>
 

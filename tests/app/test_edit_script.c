@@ -3,7 +3,7 @@
  * line number and nothing after it runs. */
 #include "test_util.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 #include "placement_test_catalog.h"
 
 #include <math.h>

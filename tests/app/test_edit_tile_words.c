@@ -3,7 +3,7 @@
  * a refused line changes nothing, and the rows survive a save and a read. */
 #include "test_util.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 #include "placement_test_catalog.h"
 
 #include <unistd.h>

@@ -1,4 +1,4 @@
-/* Per-part materials of a product model (app/src/model_materials.c), as the GPU scene, the
+/* Per-part materials of a product model (app/src/scene/model_materials.c), as the GPU scene, the
  * reference tracer's scene and the thumbnails use them: a generated basin written as GLB and
  * loaded back keeps its chrome waste's own material while its ceramic body (the part the
  * finish variant applies to) takes the object's; the same model written without Tessera's

@@ -2,8 +2,8 @@
  * with the shipped catalog's product sizes. */
 #include "test_util.h"
 
-#include "app/commands.h"
-#include "app/placement.h"
+#include "app/project/commands.h"
+#include "app/design/placement.h"
 #include "placement_test_catalog.h"
 
 #include <math.h>

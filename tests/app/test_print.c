@@ -1,16 +1,16 @@
-/* The print set (app/print.h) on a project made in memory: a 3000 x 2400 room with a door, a
+/* The print set (app/output/print.h) on a project made in memory: a 3000 x 2400 room with a door, a
  * window, a WC pre-wall, a niche, catalog fixtures and tiled walls. Checks the real PDF
  * (pdfinfo: the pages; pdftotext: the article numbers and the quotation's total as the bill of
  * materials computes it), the true scale (a 3000 mm wall is 150 mm at 1:20, measured in the
  * SVG's own coordinates), the elevations' tile counts against the quantities, the scale rules
  * and bad input. Needs poppler-utils (pdfinfo, pdftotext). */
 #define _POSIX_C_SOURCE 200809L
-#include "app/print.h"
-#include "app/quantities.h"
-#include "app/room_surfaces.h"
+#include "app/output/print.h"
+#include "app/design/quantities.h"
+#include "app/design/room_surfaces.h"
 #include "test_util.h"
 
-#include "../../app/src/print_internal.h" /* pr_convex_hull, pr_format_money */
+#include "../../app/src/output/print_internal.h" /* pr_convex_hull, pr_format_money */
 
 #include <math.h>
 

@@ -3,7 +3,7 @@
  * cJSON's own allocations are failed the same way through cJSON_InitHooks. */
 #include "test_util.h"
 
-#include "app/project.h"
+#include "app/project/project.h"
 
 #include <cjson/cJSON.h>
 

@@ -6,7 +6,7 @@
  * Usage: test_project_errors [case-name]   (no argument: every case) */
 #include "test_util.h"
 
-#include "app/project.h"
+#include "app/project/project.h"
 
 #include <fcntl.h>
 

@@ -5,7 +5,7 @@
  * and whatever parses can be written and read back. */
 #include "test_util.h"
 
-#include "app/project.h"
+#include "app/project/project.h"
 
 #define DATA TESSERA_PROJECT_TEST_DATA
 #define MUTATIONS_PER_FILE 70

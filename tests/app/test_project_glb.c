@@ -1,12 +1,12 @@
-/* tessera export-glb (app/project_glb.h): a test room with a pre-wall and a tiled floor, a
+/* tessera export-glb (app/output/project_glb.h): a test room with a pre-wall and a tiled floor, a
  * primitive and two catalog products (a WC turned -90 degrees, a mixer) exported as GLB with a
  * real catalog built from the shipped CSVs into a temporary file and the build's generated
  * models, then loaded back with the catalog's importer (cat_model_load): the node names are
  * there, every material, the bounds are the room's, the products' parts sit where their
  * placement puts them and keep their own materials; an unwritable output is a clear error. */
-#include "app/project.h"
-#include "app/project_glb.h"
-#include "app/room_mesh.h"
+#include "app/project/project.h"
+#include "app/output/project_glb.h"
+#include "app/design/room_mesh.h"
 #include "catalog/model_gen.h"
 #include "catalog/model_write.h"
 #include "test_util.h"

@@ -7,7 +7,7 @@
 #ifndef _XOPEN_SOURCE
 #define _XOPEN_SOURCE 700
 #endif
-#include "app/project.h"
+#include "app/project/project.h"
 #include "test_util.h"
 
 #include <signal.h>

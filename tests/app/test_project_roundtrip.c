@@ -3,7 +3,7 @@
  * and no temporary file is left behind. */
 #include "test_util.h"
 
-#include "app/project.h"
+#include "app/project/project.h"
 
 #include <math.h>
 

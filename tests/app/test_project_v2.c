@@ -2,7 +2,7 @@
  * tilings and product references read, written and read back exactly; version 1 files
  * migrate to a 4-corner plan; malformed plans give an error with the JSON path; saving keeps
  * the previous file as PATH.bak. */
-#include "app/project.h"
+#include "app/project/project.h"
 #include "test_util.h"
 
 #include <math.h>

@@ -2,7 +2,7 @@
  * (docs/project-format.md). Fixtures: tests/data/projects/valid.json and minimal.json. */
 #include "test_util.h"
 
-#include "app/project.h"
+#include "app/project/project.h"
 
 #include <math.h>
 

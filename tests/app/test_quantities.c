@@ -1,10 +1,10 @@
-/* Quantities (app/quantities.h): boxes with the surplus rounded up, offcut reuse (a decor tile
- * refused, a remainder turned), tile specs and the bill of materials from the real shipped
+/* Quantities (app/design/quantities.h): boxes with the surplus rounded up, offcut reuse (a decor
+ * tile refused, a remainder turned), tile specs and the bill of materials from the real shipped
  * catalog (built into a temporary SQLite file), a project's layouts. Expected numbers are
  * derived by hand in the comments. */
 #include "test_util.h" /* first: it sets _XOPEN_SOURCE for mkdtemp */
 
-#include "app/quantities.h"
+#include "app/design/quantities.h"
 
 #include <math.h>
 

@@ -1,9 +1,9 @@
-/* The room's meshes from its plan (app/room_mesh.h): areas against hand-computed values (an
+/* The room's meshes from its plan (app/design/room_mesh.h): areas against hand-computed values (an
  * L-shaped floor, a wall with a window = wall - window, reveals = perimeter x thickness, a
  * sloped ceiling, a pre-wall box, a niche), every triangle wound to face its normal, a
  * version 1 room as its six rectangles, ear clipping of awkward polygons. */
-#include "app/project.h"
-#include "app/room_mesh.h"
+#include "app/project/project.h"
+#include "app/design/room_mesh.h"
 #include "test_util.h"
 
 #include <math.h>

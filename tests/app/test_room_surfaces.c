@@ -1,9 +1,9 @@
-/* The room's tileable surfaces (app/room_surfaces.h) on the L-shaped test room
+/* The room's tileable surfaces (app/design/room_surfaces.h) on the L-shaped test room
  * (tests/data/projects/v2_l_room.json): the list and frames, and each region's area against a
  * hand computation: the sloped ceiling line, a window, a niche, a pre-wall's footprint on its
  * wall and on the floor, a bath covering the wall below its rim and the floor under it. */
-#include "app/project.h"
-#include "app/room_surfaces.h"
+#include "app/project/project.h"
+#include "app/design/room_surfaces.h"
 #include "test_util.h"
 
 #include <math.h>

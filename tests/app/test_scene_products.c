@@ -1,11 +1,11 @@
 /* Catalog products and tilings at scene build, without GL (scene_products.c, room_tiles.c):
  * with a real catalog built from the shipped CSVs into a temporary file, a placed product
- * without a model becomes a box of its catalog size standing on its origin (app/placement.h's
- * frame) in its variant's material; a bath becomes a box that covers the surfaces behind and
- * under it; an unknown product is left undrawn; the tilings become tile and grout meshes whose
- * areas add up to the tiled region. */
-#include "app/project.h"
-#include "app/room_mesh.h"
+ * without a model becomes a box of its catalog size standing on its origin
+ * (app/design/placement.h's frame) in its variant's material; a bath becomes a box that covers the
+ * surfaces behind and under it; an unknown product is left undrawn; the tilings become tile and
+ * grout meshes whose areas add up to the tiled region. */
+#include "app/project/project.h"
+#include "app/design/room_mesh.h"
 #include "scene_build_internal.h"
 #include "test_util.h"
 

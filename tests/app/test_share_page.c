@@ -1,8 +1,8 @@
-/* The share export's page (app/share.h): texts are escaped, file names cannot leave the
+/* The share export's page (app/output/share.h): texts are escaped, file names cannot leave the
  * folder, the panorama's data: URI is exact base64, the viewer is copied. */
 #include "test_util.h"
 
-#include "app/share.h"
+#include "app/output/share.h"
 
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,9 +1,9 @@
-/* Tile layout (app/tile_layout.h): hand-computed whole/cut counts and areas for the cases of
+/* Tile layout (app/design/tile_layout.h): hand-computed whole/cut counts and areas for the cases of
  * issue 6, and the area balance "tiles + grout = surface - openings - covered areas" for every
  * pattern. The expected numbers are derived in the comments, not taken from the code. */
 #include "test_util.h"
 
-#include "app/tile_layout.h"
+#include "app/design/tile_layout.h"
 
 #include <math.h>
 

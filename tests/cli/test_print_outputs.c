@@ -5,8 +5,8 @@
  * variation) and its JPEG holds the GPano XMP; the six faces are written; a video writes its
  * frames; the camera path passes through every viewpoint. */
 #include "../common/check.h"
-#include "app/camera_path.h"
-#include "app/cli.h"
+#include "app/output/camera_path.h"
+#include "app/cli/cli.h"
 #include "render/image_io.h"
 
 #include <math.h>

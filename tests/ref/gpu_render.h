@@ -6,9 +6,9 @@
 #define TESTS_REF_GPU_RENDER_H
 
 #include "../common/check.h"
-#include "app/project.h"
-#include "app/quality.h"
-#include "app/scene_build.h"
+#include "app/project/project.h"
+#include "app/scene/quality.h"
+#include "app/scene/scene_build.h"
 #include "render/render.h"
 
 /* Changes the reflection defaults after the preset (room probe off, lamps in the probes...). */

@@ -1,6 +1,6 @@
 /* A stand-in for `tessera reference` and `tessera compare` for the tests: the same entry points
  * app_cli_main dispatches to (argv[1] is the sub-command). */
-#include "app/cli_ref.h"
+#include "app/measure/cli_ref.h"
 
 #include <stdio.h>
 #include <string.h>

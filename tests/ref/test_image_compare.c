@@ -1,7 +1,7 @@
-/* The error metrics of `tessera compare` (app/image_compare.h): RMSE and PSNR against values
- * worked out by hand, masks, the sRGB curve, the heat-map ramp, and bad input. */
+/* The error metrics of `tessera compare` (app/measure/image_compare.h): RMSE and PSNR against
+ * values worked out by hand, masks, the sRGB curve, the heat-map ramp, and bad input. */
 #include "../common/check.h"
-#include "app/image_compare.h"
+#include "app/measure/image_compare.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -11,9 +11,9 @@
  * message. */
 #include "../common/check.h"
 #include "../common/golden.h"
-#include "app/ref_scene_build.h"
-#include "app/scene_build.h"
-#include "app/project.h"
+#include "app/scene/ref_scene_build.h"
+#include "app/scene/scene_build.h"
+#include "app/project/project.h"
 #include "render/image_io.h"
 
 #include <stdio.h>

@@ -14,11 +14,11 @@
  *
  * GL through TESSERA_GL (EGL unless it says osmesa); some seconds on two cores. */
 #include "../common/check.h"
-#include "app/image_compare.h"
-#include "app/project.h"
-#include "app/quality.h"
-#include "app/ref_scene_build.h"
-#include "app/scene_build.h"
+#include "app/measure/image_compare.h"
+#include "app/project/project.h"
+#include "app/scene/quality.h"
+#include "app/scene/ref_scene_build.h"
+#include "app/scene/scene_build.h"
 #include "gpu_render.h"
 #include "ref/ref.h"
 #include "render/render.h"

@@ -13,10 +13,10 @@
  * the fixes and 6.84 dB with the old order: the bar sits between, at 10 dB. GL through
  * TESSERA_GL. */
 #include "../common/check.h"
-#include "app/image_compare.h"
-#include "app/project.h"
-#include "app/ref_scene_build.h"
-#include "app/scene_build.h"
+#include "app/measure/image_compare.h"
+#include "app/project/project.h"
+#include "app/scene/ref_scene_build.h"
+#include "app/scene/scene_build.h"
 #include "ref/ref.h"
 #include "render/render.h"
 

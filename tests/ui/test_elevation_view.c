@@ -6,7 +6,7 @@
 #include "check.h"
 #include "elevation_view.h"
 
-#include "app/room_surfaces.h"
+#include "app/design/room_surfaces.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -7,7 +7,7 @@
  * Probe lines: each combo choice's line runs through app's script as one undo step and sets
  * exactly that field of the demo's basin material (which the basin shares with nobody else
  * here, and every object sharing it would follow); undo restores the document. */
-#include "app/commands.h"
+#include "app/project/commands.h"
 #include "check.h"
 #include "panel_layout.h"
 #include "probe_props.h"

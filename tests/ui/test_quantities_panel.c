@@ -2,7 +2,7 @@
  * catalog and the designed demo: they are app's quantities and bill of materials, the total
  * adds up its lines, and placing a product raises the total by exactly that product's gross
  * price (as the panel recomputes after every edit). Money formatting. */
-#include "app/commands.h"
+#include "app/project/commands.h"
 #include "check.h"
 #include "quantities_panel.h"
 

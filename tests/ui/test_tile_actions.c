@@ -7,7 +7,7 @@
 #include "check.h"
 #include "tiles.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 
 #include <math.h>
 #include <stdlib.h>

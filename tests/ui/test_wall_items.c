@@ -6,7 +6,7 @@
 #include "check.h"
 #include "planner.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 
 #include <stdio.h>
 #include <string.h>

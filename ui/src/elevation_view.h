@@ -1,15 +1,15 @@
 /* The elevation view's geometry (issue 8 item 2: "wall elevation for tiling"): a room surface
  * unfolded flat and seen from the room, as the print set's elevations show it
- * (app/src/print_elevation.c): a wall seen from inside has its s coordinate growing to the
+ * (app/src/output/print_elevation.c): a wall seen from inside has its s coordinate growing to the
  * left. Pure math over app's surface frames, layouts and fixtures, tested without a window
  * (tests/ui/test_elevation_view.c); drawing is in elevation_draw.c. Screen y grows downwards,
  * the surface's t (height on a wall) upwards. */
 #ifndef UI_ELEVATION_VIEW_H
 #define UI_ELEVATION_VIEW_H
 
-#include "app/placement.h"
-#include "app/room_surfaces.h"
-#include "app/tile_layout.h"
+#include "app/design/placement.h"
+#include "app/design/room_surfaces.h"
+#include "app/design/tile_layout.h"
 
 typedef struct ui_elev_transform {
     double centre[2]; /* the surface point (s, t) at the drawing area's centre */

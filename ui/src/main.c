@@ -1,6 +1,6 @@
 /* The `tessera` program: the planner window with no arguments or `open`, the command line
- * (app/src/cli_main.c) otherwise. */
-#include "app/cli.h"
+ * (app/src/cli/cli_main.c) otherwise. */
+#include "app/cli/cli.h"
 #include "ui/ui.h"
 
 #include <string.h>

@@ -3,8 +3,8 @@
 #ifndef UI_PLAN_DRAW_H
 #define UI_PLAN_DRAW_H
 
-#include "app/placement.h"
-#include "app/project.h"
+#include "app/design/placement.h"
+#include "app/project/project.h"
 #include "ui/plan_view.h"
 
 typedef struct ui_plan_overlay {

@@ -2,7 +2,7 @@
  * context, Dear ImGui draws the panels on top of the 3D view (issue 8). */
 #include "planner.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 #include "gui.h"
 
 #include <GLFW/glfw3.h>

@@ -4,10 +4,10 @@
 #ifndef UI_PLANNER_H
 #define UI_PLANNER_H
 
-#include "app/placement.h"
-#include "app/project.h"
-#include "app/quality.h"
-#include "app/scene_build.h"
+#include "app/design/placement.h"
+#include "app/project/project.h"
+#include "app/scene/quality.h"
+#include "app/scene/scene_build.h"
 #include "catalog_browser.h"
 #include "drag_drop.h"
 #include "fixture_drag.h"

@@ -5,7 +5,7 @@
  * changes, and opening a project whose autosave is newer offers to recover it. */
 #include "planner.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 
 #include <errno.h>
 #include <stdarg.h>

@@ -3,7 +3,7 @@
  * selection's properties. Where they go comes from the window's size (panel_layout.h). */
 #include "planner.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 #include "gui.h"
 #include "probe_props.h"
 #include "render/ui_texture.h"

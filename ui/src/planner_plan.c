@@ -3,7 +3,7 @@
  * right button, zoom with the wheel. Every change is an edit line through app's commands. */
 #include "planner.h"
 
-#include "app/commands.h"
+#include "app/project/commands.h"
 #include "gui.h"
 
 #include <GLFW/glfw3.h>

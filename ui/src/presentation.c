@@ -185,7 +185,7 @@ void planner_toggle_fullscreen(planner *p)
 int planner_share(planner *p, const char *dir)
 {
     /* The share export works from a file: the document as it is now, in a temporary folder,
-     * composed by `tessera share` (app/src/cli_share.c) in a process of its own: it makes
+     * composed by `tessera share` (app/src/cli/cli_share.c) in a process of its own: it makes
      * OpenGL contexts of its own, which must not touch the window's. The window waits for it
      * (a script's next action needs the folder). */
     char folder[] = "/tmp/tessera-share-XXXXXX", tmp[64], bak[72], err[1024];

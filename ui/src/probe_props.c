@@ -1,7 +1,7 @@
 /* The probe policy fields' choices and edit lines (probe_props.h). */
 #include "probe_props.h"
 
-#include "app/project.h"
+#include "app/project/project.h"
 
 #include <stdio.h>
 #include <string.h>

@@ -3,7 +3,7 @@
  * surplus, and the priced part list with VAT. */
 #include "quantities_panel.h"
 
-#include "app/room_surfaces.h"
+#include "app/design/room_surfaces.h"
 #include "gui.h"
 
 #include <stdio.h>

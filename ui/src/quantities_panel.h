@@ -1,11 +1,11 @@
 /* The live quantities and price panel (issue 8 item 5): per tile product the laid area, whole
  * and cut tiles, boxes to order with the surplus and price; every placed product with its price;
- * net, VAT and the total. The numbers are app's (app/quantities.h, the same as `tessera
+ * net, VAT and the total. The numbers are app's (app/design/quantities.h, the same as `tessera
  * quantities`); this file keeps them up to date with the document and draws them. */
 #ifndef UI_QUANTITIES_PANEL_H
 #define UI_QUANTITIES_PANEL_H
 
-#include "app/quantities.h"
+#include "app/design/quantities.h"
 
 typedef struct ui_quantities_view {
     int stale; /* the document changed since the last computation */

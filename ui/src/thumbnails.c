@@ -2,8 +2,8 @@
 #include "thumbnails.h"
 
 /* The studio of `tessera catalog thumbs`; app keeps its header beside its sources. */
-#include "app/thumb_scene.h"
-#include "app/placement.h"
+#include "app/scene/thumb_scene.h"
+#include "app/design/placement.h"
 #include "render/ui_texture.h"
 
 #include <stdio.h>

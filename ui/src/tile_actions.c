@@ -3,8 +3,8 @@
  * `tile SURFACE ...`, one undo step each) and the tile script actions. */
 #include "tiles.h"
 
-#include "app/commands.h"
-#include "app/room_surfaces.h"
+#include "app/project/commands.h"
+#include "app/design/room_surfaces.h"
 
 #include <math.h>
 #include <stdlib.h>

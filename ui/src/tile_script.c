@@ -1,7 +1,7 @@
 /* The words of the tile script actions (script.h: tile-pattern, tile-grout, tile-start,
  * tile-rotate, tile-band, tile-border, expect-pattern, expect-tiles), checked when the script
  * is read so a typo is reported before the window opens. No app dependency: the pattern names
- * are the project file's (app/tile_layout.h app_tile_pattern_name). */
+ * are the project file's (app/design/tile_layout.h app_tile_pattern_name). */
 #include "script.h"
 
 #include <errno.h>

@@ -6,8 +6,8 @@
 #ifndef UI_TILES_H
 #define UI_TILES_H
 
-#include "app/room_surfaces.h"
-#include "app/tile_layout.h"
+#include "app/design/room_surfaces.h"
+#include "app/design/tile_layout.h"
 #include "catalog/catalog.h"
 #include "elevation_view.h"
 #include "planner.h"

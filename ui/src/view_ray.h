@@ -5,7 +5,7 @@
 #ifndef UI_VIEW_RAY_H
 #define UI_VIEW_RAY_H
 
-#include "app/placement.h"
+#include "app/design/placement.h"
 
 /* The direction (not unit) of the ray from eye through window pixel (sx, sy) for a perspective
  * camera looking at target with a vertical field of view fov_y_deg over width x height, the

@@ -4,7 +4,7 @@
 #ifndef UI_NAVIGATION_H
 #define UI_NAVIGATION_H
 
-#include "app/room.h"
+#include "app/design/room.h"
 
 #ifdef __cplusplus
 extern "C" {

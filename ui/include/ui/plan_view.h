@@ -5,8 +5,8 @@
 #ifndef UI_PLAN_VIEW_H
 #define UI_PLAN_VIEW_H
 
-#include "app/placement.h"
-#include "app/room.h"
+#include "app/design/placement.h"
+#include "app/design/room.h"
 
 #ifdef __cplusplus
 extern "C" {

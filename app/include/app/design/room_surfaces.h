@@ -1,0 +1,90 @@
+/* The room's tileable surfaces (issue 6 items 1-2): every surface a tiling can name
+ * (app/design/room.h: "floor", "ceiling", "wall:I", "prewall:NAME:front|top|left|right") with its
+ * 3D frame and its 2D region (app/design/tile_layout.h): the outline minus the holes, which are the
+ * openings, the mouths of niches, the footprints of pre-walls and the fixtures that cover the
+ * surface (a bath or shower tray standing against a wall covers the wall below its rim; it covers
+ * the floor under it).
+ *
+ * Frames (mm): world point = origin + s * s_axis + t * t_axis; normal faces into the room.
+ *  - "wall:I": origin the wall's start corner on the floor, s along the wall (app/design/room.h), t
+ * up; normal the wall's inward normal. The outline follows a sloped ceiling.
+ *  - "floor": s = plan x, t = plan y, z = 0, normal +Z. "ceiling": the same plan coordinates at
+ *    the flat ceiling height, normal -Z (a sloped section is included, projected onto the plan).
+ *  - "prewall:NAME:front": the wall's s and t (so its joints can line up with the wall's),
+ *    in the plane depth mm in front of the wall; "top": s along the wall, t from the wall into
+ *    the room, at the pre-wall's height; "left" / "right" (seen from the room, facing the
+ *    wall; left is at the larger s): s from the wall into the room, t up.
+ * Every call that can fail returns an app_result and writes "room_surfaces: ..." into err. */
+#ifndef APP_ROOM_SURFACES_H
+#define APP_ROOM_SURFACES_H
+
+#include "app/design/placement.h"
+#include "app/project/project.h"
+#include "app/design/tile_layout.h"
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct app_surface_frame {
+    char surface[96];
+    app_surface_kind kind;
+    double origin_mm[3], s_axis[3], t_axis[3], normal[3];
+} app_surface_frame;
+
+/* A fixture as an axis-aligned box in the room (mm) that covers what it stands in front of
+ * or on. Make them with app_room_fixture_boxes (room_fixtures.c) or by hand. */
+typedef struct app_fixture_box {
+    char name[64];
+    double min_mm[3], max_mm[3];
+} app_fixture_box;
+
+/* A placed product's covering box: 1 and *b filled when the product covers what it stands in
+ * front of or on (a bath, a shower tray), else 0. */
+int app_room_fixture_box(const app_object *o, const app_product_info *info, app_fixture_box *b);
+/* The covering boxes of every placed product of p (malloc'ed; free it), products looked up
+ * with lookup(user, ...). A product the catalog does not have is an error naming the object. */
+app_result app_room_fixture_boxes(const app_project *p, app_product_lookup lookup, void *user,
+                                  app_fixture_box **out, int *count, char *err, size_t err_size);
+
+/* The tile layouts of every tiling of p, with the placed products' covering boxes as holes:
+ * the layouts the renderer draws, so quantities and printed elevations count the same tiles.
+ * db supplies the tiles and the products (app/design/quantities.h app_project_tile_layouts). */
+struct cat_db;
+app_result app_room_tile_layouts(const app_project *p, struct cat_db *db, app_tile_layout **out,
+                                 int *count, char *err, size_t err_size);
+
+/* A fixture covers a wall when its box is at most this far in front of the wall's face. */
+#define APP_FIXTURE_WALL_GAP_MM 50.0
+
+/* The names and frames of all tileable surfaces, in the order floor, ceiling, wall:0.., then
+ * each pre-wall's front, top, left, right. *out is malloc'ed (free it). A project without a
+ * plan uses its room box. */
+app_result app_room_surface_list(const app_project *p, app_surface_frame **out, int *count,
+                                 char *err, size_t err_size);
+
+/* One surface's frame and region. fixtures may be NULL (count 0). *region is overwritten;
+ * free it with app_surface_region_free. An unknown surface name is an error. */
+app_result app_room_surface_region(const app_project *p, const char *surface,
+                                   const app_fixture_box *fixtures, int fixture_count,
+                                   app_surface_region *region, app_surface_frame *frame, char *err,
+                                   size_t err_size);
+
+/* A region provider for app_project_tile_layouts (app/design/quantities.h app_region_provider):
+ * user points to an app_room_regions (the fixtures that cover surfaces; NULL = none). */
+typedef struct app_room_regions {
+    const app_fixture_box *fixtures;
+    int fixture_count;
+} app_room_regions;
+app_result app_room_region_provider(void *user, const app_project *p, const char *surface,
+                                    app_surface_region *out, char *err, size_t err_size);
+
+/* The world point (mm) of surface coordinates (s, t). */
+void app_surface_frame_point(const app_surface_frame *f, double s, double t, double out_mm[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,331 @@
+/* tessera print PROJECT -o plan.pdf [--paper A4|A3] [--landscape] [--scale 1:20|fit]
+ *               [--svg DIR] [--renders DIR|none] [--render-size WxH] [--customer NAME]
+ *               [--date TEXT] [--no-clearances] [--backend egl|osmesa]
+ * The print set (app/output/print.h, docs/printing.md): plan, elevations, renders, part list. */
+#include "app/cli/cli.h"
+#include "app/output/print.h"
+#include "app/scene/quality.h"
+#include "cli_options.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+static const char *assets_dir(void)
+{
+    const char *env = getenv("TESSERA_ASSETS");
+    return env && *env ? env : TESSERA_SOURCE_DIR "/assets";
+}
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: tessera print PROJECT -o OUT.pdf [--paper A4|A3] [--landscape]\n"
+               "                     [--scale 1:20|1:25|1:50|fit] [--svg DIR]\n"
+               "                     [--renders DIR|none] [--render-size WxH] [--customer NAME]\n"
+               "                     [--date TEXT] [--no-clearances] [--backend egl|osmesa]\n"
+               "                     [--quality draft|interactive|final|print]\n"
+               "  writes the print set: floor plan, wall elevations with the tile layout, renders\n"
+               "  of the project's cameras (960x540, --render-size, quality final, or the PNG\n"
+               "  files in --renders DIR), part list and quotation. --svg DIR also writes each\n"
+               "  page as DIR/page-NN.svg.\n");
+}
+
+typedef struct image_list {
+    char **paths;
+    char **titles;
+    int count;
+} image_list;
+
+static void images_free(image_list *l)
+{
+    for (int i = 0; i < l->count; i++) {
+        free(l->paths[i]);
+        free(l->titles[i]);
+    }
+    free(l->paths);
+    free(l->titles);
+    memset(l, 0, sizeof *l);
+}
+
+static int images_add(image_list *l, const char *path, const char *title)
+{
+    char **p = realloc(l->paths, (size_t)(l->count + 1) * sizeof *p);
+    if (!p)
+        return 0;
+    l->paths = p;
+    char **t = realloc(l->titles, (size_t)(l->count + 1) * sizeof *t);
+    if (!t)
+        return 0;
+    l->titles = t;
+    l->paths[l->count] = strdup(path);
+    l->titles[l->count] = strdup(title);
+    if (!l->paths[l->count] || !l->titles[l->count]) {
+        free(l->paths[l->count]);
+        free(l->titles[l->count]);
+        return 0;
+    }
+    l->count++;
+    return 1;
+}
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* Every *.png in dir, by name. */
+static int images_from_dir(const char *dir, image_list *l)
+{
+    DIR *dp = opendir(dir);
+    if (!dp) {
+        fprintf(stderr, "tessera print: --renders %s: %s\n", dir, strerror(errno));
+        return CLI_USAGE;
+    }
+    char *names[256];
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(dp)) != NULL && n < 256) {
+        size_t len = strlen(e->d_name);
+        if (len > 4 && !strcmp(e->d_name + len - 4, ".png"))
+            names[n++] = strdup(e->d_name);
+    }
+    closedir(dp);
+    qsort(names, (size_t)n, sizeof *names, cmp_str);
+    int rc = CLI_OK;
+    for (int i = 0; i < n; i++) {
+        char path[4096], title[256];
+        if (!names[i]) {
+            rc = CLI_FAILED;
+            continue;
+        }
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+        snprintf(title, sizeof title, "%.*s", (int)strlen(names[i]) - 4, names[i]);
+        if (rc == CLI_OK && !images_add(l, path, title))
+            rc = CLI_FAILED;
+        free(names[i]);
+    }
+    return rc;
+}
+
+/* Renders every camera of the project at a modest size into tmp_dir (the renderer of
+ * `tessera render`); a progress line per view. */
+static int render_cameras(const char *project, rd_backend backend, const app_quality *quality,
+                          int w, int h, const char *tmp_dir, image_list *l)
+{
+    cli_options o = {0};
+    o.project = project;
+    o.backend = backend;
+    o.quality = quality;
+    cli_session s;
+    int rc = cli_session_open(&o, &s);
+    if (rc != CLI_OK)
+        return rc;
+    for (int i = 0; rc == CLI_OK && i < s.project.camera_count; i++) {
+        const char *cam = s.project.cameras[i].name;
+        fprintf(stderr, "tessera print: [%d/%d] rendering view \"%s\"\n", i + 1,
+                s.project.camera_count, cam);
+        rd_view view;
+        rc = cli_session_view(&s, &o, cam, w, h, &view);
+        char path[4096];
+        snprintf(path, sizeof path, "%s/view-%02d.png", tmp_dir, i + 1);
+        if (rc == CLI_OK)
+            rc = cli_render_to_file(&s, &view, path);
+        if (rc == CLI_OK && !images_add(l, path, cam))
+            rc = CLI_FAILED;
+    }
+    cli_session_close(&s);
+    return rc;
+}
+
+int app_cli_print(int argc, char **argv)
+{
+    const char *project = NULL, *output = NULL, *svg = NULL, *renders = NULL;
+    const char *customer = NULL, *date = NULL, *backend_name = NULL;
+    const app_quality *quality = app_quality_find("final");
+    int render_w = 960, render_h = 540;
+    app_print_options po = {0};
+    for (int i = 2; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout);
+            return CLI_OK;
+        } else if (!strcmp(a, "--landscape")) {
+            po.landscape = 1;
+        } else if (!strcmp(a, "--no-clearances")) {
+            po.no_clearances = 1;
+        } else if (a[0] == '-' && a[1]) {
+            if (!v) {
+                fprintf(stderr, "tessera print: %s needs a value\n", a);
+                return CLI_USAGE;
+            }
+            i++;
+            if (!strcmp(a, "-o") || !strcmp(a, "--output"))
+                output = v;
+            else if (!strcmp(a, "--svg"))
+                svg = v;
+            else if (!strcmp(a, "--renders"))
+                renders = v;
+            else if (!strcmp(a, "--customer"))
+                customer = v;
+            else if (!strcmp(a, "--date"))
+                date = v;
+            else if (!strcmp(a, "--backend"))
+                backend_name = v;
+            else if (!strcmp(a, "--quality")) {
+                quality = app_quality_find(v);
+                if (!quality) {
+                    fprintf(stderr, "tessera print: --quality %s: use one of %s\n", v,
+                            app_quality_names());
+                    return CLI_USAGE;
+                }
+            } else if (!strcmp(a, "--paper")) {
+                if (!app_paper_parse(v, &po.paper)) {
+                    fprintf(stderr, "tessera print: --paper %s: use A4 or A3\n", v);
+                    return CLI_USAGE;
+                }
+            } else if (!strcmp(a, "--scale")) {
+                if (!app_print_scale_parse(v, &po.scale)) {
+                    fprintf(stderr, "tessera print: --scale %s: use 1:20, 1:25, 1:50 or fit\n", v);
+                    return CLI_USAGE;
+                }
+            } else if (!strcmp(a, "--render-size")) {
+                if (!cli_parse_size(v, &render_w, &render_h) || render_w > 8192 ||
+                    render_h > 8192) {
+                    fprintf(stderr, "tessera print: --render-size %s: use WxH up to 8192\n", v);
+                    return CLI_USAGE;
+                }
+            } else {
+                fprintf(stderr, "tessera print: unknown option %s\n", a);
+                usage(stderr);
+                return CLI_USAGE;
+            }
+        } else if (!project) {
+            project = a;
+        } else {
+            fprintf(stderr, "tessera print: one project only (got %s and %s)\n", project, a);
+            return CLI_USAGE;
+        }
+    }
+    if (!project || !output) {
+        usage(stderr);
+        return CLI_USAGE;
+    }
+    rd_backend backend = RD_BACKEND_DEFAULT;
+    if (backend_name) {
+        if (!strcmp(backend_name, "egl"))
+            backend = RD_BACKEND_EGL;
+        else if (!strcmp(backend_name, "osmesa"))
+            backend = RD_BACKEND_OSMESA;
+        else {
+            fprintf(stderr, "tessera print: --backend %s: use egl or osmesa\n", backend_name);
+            return CLI_USAGE;
+        }
+    }
+    if (svg) {
+        struct stat st;
+        if (stat(svg, &st) != 0 && mkdir(svg, 0777) != 0) {
+            fprintf(stderr, "tessera print: --svg %s: %s\n", svg, strerror(errno));
+            return CLI_USAGE;
+        }
+    }
+    app_project p;
+    char err[2048];
+    app_result r = app_project_read(project, &p, err, sizeof err);
+    if (r != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return r == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
+    }
+    image_list images = {0};
+    char tmp_dir[] = "/tmp/tessera-print-XXXXXX";
+    int made_tmp = 0, rc = CLI_OK;
+    if (renders && strcmp(renders, "none") != 0) {
+        rc = images_from_dir(renders, &images);
+    } else if (!renders && p.camera_count > 0) {
+        if (mkdtemp(tmp_dir)) {
+            made_tmp = 1;
+            rc = render_cameras(project, backend, quality, render_w, render_h, tmp_dir, &images);
+        } else {
+            fprintf(stderr, "tessera print: cannot make a temporary folder: %s\n", strerror(errno));
+            rc = CLI_FAILED;
+        }
+    }
+    char catalog_src[4200], assets[4096];
+    snprintf(assets, sizeof assets, "%s", assets_dir());
+    snprintf(catalog_src, sizeof catalog_src, "%s/catalog", assets);
+    po.customer = customer;
+    po.date = date;
+    po.catalog_source = catalog_src;
+    po.assets_dir = assets;
+    po.images = (const char *const *)images.paths;
+    po.image_titles = (const char *const *)images.titles;
+    po.image_count = images.count;
+    po.verbose = 1;
+    app_print_report rep = {0};
+    double t0 = cli_now_ms();
+    if (rc == CLI_OK) {
+        r = app_print_pdf(&p, &po, output, &rep, err, sizeof err);
+        if (r == APP_OK && svg)
+            r = app_print_svg(&p, &po, svg, &rep, err, sizeof err);
+        if (r != APP_OK) {
+            fprintf(stderr, "tessera: %s\n", err);
+            rc = r == APP_ERR_SCHEMA ? CLI_USAGE : CLI_FAILED;
+        }
+    }
+    if (rc == CLI_OK)
+        fprintf(stderr,
+                "tessera print: %s: %d pages (plan 1:%d, %d elevations 1:%d with %d whole and "
+                "%d cut tiles, %d renders, %d part-list pages) in %.0f ms\n",
+                output, rep.pages, rep.plan_scale, rep.elevation_pages, rep.elevation_scale,
+                rep.tiles_whole, rep.tiles_cut, rep.render_pages, rep.partlist_pages,
+                cli_now_ms() - t0);
+    if (made_tmp) {
+        for (int i = 0; i < images.count; i++)
+            unlink(images.paths[i]);
+        rmdir(tmp_dir);
+    }
+    images_free(&images);
+    app_project_free(&p);
+    return rc;
+}
+
+int app_cli_print_demo(const struct app_project *p, const char *out_dir)
+{
+    image_list images = {0};
+    int rc = CLI_OK;
+    for (int i = 0; rc == CLI_OK && i < p->camera_count; i++) {
+        char path[4200];
+        snprintf(path, sizeof path, "%s/demo-%s.png", out_dir, p->cameras[i].name);
+        if (access(path, R_OK) == 0 && !images_add(&images, path, p->cameras[i].name))
+            rc = CLI_FAILED;
+    }
+    char pdf[4200], catalog_src[4200], assets[4096], err[2048];
+    snprintf(pdf, sizeof pdf, "%s/plan.pdf", out_dir);
+    snprintf(assets, sizeof assets, "%s", assets_dir());
+    snprintf(catalog_src, sizeof catalog_src, "%s/catalog", assets);
+    app_print_options po = {.paper = APP_PAPER_A4,
+                            .landscape = 1,
+                            .catalog_source = catalog_src,
+                            .assets_dir = assets,
+                            .images = (const char *const *)images.paths,
+                            .image_titles = (const char *const *)images.titles,
+                            .image_count = images.count};
+    app_print_report rep = {0};
+    double t0 = cli_now_ms();
+    if (rc == CLI_OK) {
+        app_result r = app_print_pdf(p, &po, pdf, &rep, err, sizeof err);
+        if (r != APP_OK) {
+            fprintf(stderr, "tessera demo: %s\n", err);
+            rc = CLI_FAILED;
+        } else {
+            fprintf(stderr, "tessera demo: %s: %d pages in %.0f ms\n", pdf, rep.pages,
+                    cli_now_ms() - t0);
+        }
+    }
+    images_free(&images);
+    return rc;
+}

@@ -1,0 +1,99 @@
+/* Print-resolution renders: tiles (rd_render_tiled), DPI in the file, a progress bar. */
+#include "cli_print_render.h"
+
+#include "render/image_io.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+void cli_progress_init(cli_progress *p, const char *label)
+{
+    p->label = label;
+    p->tty = isatty(2);
+    p->last_tenth = -1;
+    p->start_ms = cli_now_ms();
+}
+
+void cli_progress_update(cli_progress *p, int done, int total)
+{
+    if (total <= 0)
+        return;
+    int tenth = (int)(10LL * done / total);
+    if (!p->tty && tenth == p->last_tenth && done != total)
+        return;
+    p->last_tenth = tenth;
+    char bar[31];
+    int filled = (int)(30LL * done / total);
+    for (int i = 0; i < 30; i++)
+        bar[i] = i < filled ? '#' : ' ';
+    bar[30] = 0;
+    fprintf(stderr, "%s%s [%s] %d/%d %.1f s%s", p->tty ? "\r" : "", p->label, bar, done, total,
+            (cli_now_ms() - p->start_ms) / 1000.0, p->tty && done != total ? "" : "\n");
+    fflush(stderr);
+}
+
+static void tile_done(void *user, int done, int total)
+{
+    cli_progress_update(user, done, total);
+}
+
+int cli_render_pixels(cli_session *s, const rd_view *view, int tile_max, uint8_t *rgba,
+                      float *linear, cli_progress *progress)
+{
+    rd_result rr = rd_render_tiled(s->ctx, s->scene.scene, view, tile_max, rgba, linear,
+                                   progress ? tile_done : NULL, progress);
+    if (rr != RD_OK) {
+        fprintf(stderr, "tessera: %s: %s\n", s->project.path, rd_last_error());
+        return rr == RD_ERR_TOO_LARGE || rr == RD_ERR_INVALID_ARGUMENT ? CLI_USAGE : CLI_FAILED;
+    }
+    return CLI_OK;
+}
+
+int cli_render_large(cli_session *s, const rd_view *view, const char *path, int dpi, int tile_max)
+{
+    double t0 = cli_now_ms();
+    /* The project file's own limit (app/project/project.h): beyond it an image is an input mistake,
+     * not a job to try (100000 x 100000 would be 40 GB). */
+    if (view->width > APP_PROJECT_MAX_IMAGE_SIDE || view->height > APP_PROJECT_MAX_IMAGE_SIDE) {
+        fprintf(stderr, "tessera: a %dx%d image is too large: at most %d pixels a side\n",
+                view->width, view->height, APP_PROJECT_MAX_IMAGE_SIDE);
+        return CLI_USAGE;
+    }
+    size_t count = (size_t)view->width * (size_t)view->height * 4;
+    int is_float = rd_image_format_is_float(path) == 1;
+    uint8_t *rgba = malloc(count);
+    float *linear = is_float ? malloc(count * sizeof(float)) : NULL;
+    if (!rgba || (is_float && !linear)) {
+        free(rgba);
+        free(linear);
+        fprintf(stderr, "tessera: out of memory for a %dx%d image\n", view->width, view->height);
+        return CLI_FAILED;
+    }
+    cli_progress bar;
+    cli_progress_init(&bar, "rendering");
+    int rc = cli_render_pixels(s, view, tile_max, rgba, linear, &bar);
+    if (rc == CLI_OK) {
+        double write_start = cli_now_ms();
+        char err[1024];
+        rd_image_result ir = is_float ? rd_image_write_float(path, view->width, view->height, 4,
+                                                             linear, err, sizeof err)
+                                      : rd_image_write_rgba8_dpi(path, view->width, view->height,
+                                                                 rgba, (float)dpi, err, sizeof err);
+        if (ir != RD_IMAGE_OK) {
+            fprintf(stderr, "tessera: %s\n", err);
+            rc = CLI_FAILED;
+        }
+        const char *phases = getenv("TESSERA_PHASES"); /* the renderer's phase timer's switch */
+        if (phases && phases[0] && strcmp(phases, "0") != 0)
+            fprintf(stderr, "phases (image file): write %.0f ms\n", cli_now_ms() - write_start);
+    }
+    free(rgba);
+    free(linear);
+    if (rc == CLI_OK)
+        fprintf(stderr, "tessera: wrote %s (%dx%d%s%s, %.0f ms)\n", path, view->width, view->height,
+                view->supersample > 1 ? ", supersampled" : "", dpi > 0 ? ", with DPI" : "",
+                cli_now_ms() - t0);
+    return rc;
+}

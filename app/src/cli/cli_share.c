@@ -1,0 +1,286 @@
+/* tessera share PROJECT -o DIR [--size WxH] [--panorama-size WxH] [--camera NAME]
+ * The "share" export (issue 8 item 7; app/output/share.h): a folder a customer opens in any browser
+ * from the file system, with no network: index.html with the renders of every stored viewpoint,
+ * the plan and elevations (SVG pages of the print set), an interactive 360-degree panorama, the
+ * part list with prices, and the print set as PDF. It composes the commands that make each
+ * part (render --all-views, panorama, print), so the folder shows exactly what they make. */
+#include "app/cli/cli.h"
+#include "app/design/placement.h"
+#include "app/project/project.h"
+#include "app/design/quantities.h"
+#include "app/design/room_surfaces.h"
+#include "app/output/share.h"
+#include "catalog/catalog.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#define USAGE                                                                                      \
+    "usage: tessera share PROJECT -o DIR [--size WxH] [--panorama-size WxH] [--camera NAME]\n"     \
+    "  a folder to open in any browser: renders, plan, 360-degree panorama, part list, PDF\n"
+
+#define MAX_FILES 64
+
+static int make_dir(const char *path)
+{
+    if (mkdir(path, 0777) == 0 || errno == EEXIST)
+        return 0;
+    fprintf(stderr, "tessera share: cannot make folder %s: %s\n", path, strerror(errno));
+    return 1;
+}
+
+static int has_suffix(const char *name, const char *suffix)
+{
+    size_t n = strlen(name), k = strlen(suffix);
+    return n > k && !strcmp(name + n - k, suffix);
+}
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+/* The files of dir ending in suffix, as "sub/NAME", sorted; *titles get NAME without suffix. */
+static int list_files(const char *dir, const char *sub, const char *suffix, char **files,
+                      char **titles)
+{
+    DIR *d = opendir(dir);
+    int n = 0;
+    if (!d)
+        return 0;
+    struct dirent *e;
+    while ((e = readdir(d)) && n < MAX_FILES) {
+        if (e->d_name[0] == '.' || !has_suffix(e->d_name, suffix))
+            continue;
+        size_t len = strlen(sub) + strlen(e->d_name) + 2;
+        files[n] = malloc(len);
+        if (!files[n])
+            break;
+        snprintf(files[n], len, "%s/%s", sub, e->d_name);
+        n++;
+    }
+    closedir(d);
+    qsort(files, (size_t)n, sizeof *files, by_name);
+    for (int i = 0; i < n; i++) {
+        const char *base = strrchr(files[i], '/') + 1;
+        titles[i] = strdup(base);
+        if (titles[i])
+            titles[i][strlen(titles[i]) - strlen(suffix)] = 0;
+    }
+    return n;
+}
+
+static int run(int (*command)(int, char **), char **argv)
+{
+    int argc = 0;
+    while (argv[argc])
+        argc++;
+    return command(argc, argv);
+}
+
+static char *money(long long cents, const char *currency)
+{
+    char buf[64];
+    snprintf(buf, sizeof buf, "%lld.%02lld %s", cents / 100, (cents < 0 ? -cents : cents) % 100,
+             currency);
+    return strdup(buf);
+}
+
+/* The part list as table cells: tiles first, then the fixtures, priced from the catalog. */
+static int part_list(const app_project *p, char ***cells, int *rows, char *totals[6])
+{
+    cat_db *db = NULL;
+    char err[1024];
+    if (app_placement_open_catalog(NULL, &db, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera share: %s (the part list is left out)\n", err);
+        return 0;
+    }
+    app_tile_layout *layouts = NULL;
+    int n = 0;
+    app_quantities q;
+    memset(&q, 0, sizeof q);
+    app_bom bom;
+    memset(&bom, 0, sizeof bom);
+    app_result r = app_room_tile_layouts(p, db, &layouts, &n, err, sizeof err);
+    if (r == APP_OK)
+        r = app_quantities_compute(layouts, n, NULL, &q, err, sizeof err);
+    if (r == APP_OK)
+        r = app_bom_build(db, p, &q, &bom, err, sizeof err);
+    if (r != APP_OK) {
+        fprintf(stderr, "tessera share: %s (the part list is left out)\n", err);
+    } else {
+        static const char *const header[6] = {"Manufacturer", "Article",    "Name",
+                                              "Quantity",     "Unit price", "Total"};
+        *cells = calloc((size_t)(bom.line_count + 1) * 6, sizeof **cells);
+        for (int c = 0; *cells && c < 6; c++)
+            (*cells)[c] = strdup(header[c]);
+        for (int i = 0; *cells && i < bom.line_count; i++) {
+            const app_bom_line *l = &bom.lines[i];
+            char **row = &(*cells)[(size_t)(i + 1) * 6], qty[64];
+            snprintf(qty, sizeof qty, "%.2f %s", l->quantity, cat_unit_name(l->unit));
+            row[0] = strdup(l->product.manufacturer);
+            row[1] = strdup(l->product.article);
+            row[2] = strdup(l->found ? l->name : "(not in the catalog)");
+            row[3] = strdup(qty);
+            row[4] = money(l->unit_price_cents, l->currency);
+            row[5] = money(l->net_cents, l->currency);
+        }
+        *rows = *cells ? bom.line_count : 0;
+        totals[0] = strdup("Net");
+        totals[1] = money(bom.net_cents, bom.currency);
+        totals[2] = strdup("VAT");
+        totals[3] = money(bom.vat_cents, bom.currency);
+        totals[4] = strdup("Total incl. VAT");
+        totals[5] = money(bom.gross_cents, bom.currency);
+    }
+    app_bom_free(&bom);
+    app_quantities_free(&q);
+    app_tile_layouts_free(layouts, n);
+    cat_db_close(db);
+    return r == APP_OK && *cells;
+}
+
+static int read_file(const char *path, uint8_t **out, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 1;
+    fseek(f, 0, SEEK_END);
+    long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    *out = n > 0 ? malloc((size_t)n) : NULL;
+    int bad = !*out || fread(*out, 1, (size_t)n, f) != (size_t)n;
+    fclose(f);
+    *size = (size_t)n;
+    return bad;
+}
+
+int app_cli_share(int argc, char **argv)
+{
+    const char *project = NULL, *out = NULL, *size = "1280x720", *pano_size = "4096x2048",
+               *camera = NULL;
+    for (int i = 2; i < argc; i++) {
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            printf(USAGE);
+            return 0;
+        }
+        if (a[0] == '-' && !v) {
+            fprintf(stderr, "tessera share: %s needs a value\n" USAGE, a);
+            return 2;
+        }
+        if (!strcmp(a, "-o") || !strcmp(a, "--output"))
+            out = argv[++i];
+        else if (!strcmp(a, "--size"))
+            size = argv[++i];
+        else if (!strcmp(a, "--panorama-size"))
+            pano_size = argv[++i];
+        else if (!strcmp(a, "--camera"))
+            camera = argv[++i];
+        else if (a[0] == '-') {
+            fprintf(stderr, "tessera share: unknown option %s\n" USAGE, a);
+            return 2;
+        } else
+            project = a;
+    }
+    if (!project || !out) {
+        fprintf(stderr, USAGE);
+        return 2;
+    }
+    app_project p;
+    char err[1024];
+    if (app_project_read(project, &p, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return 2;
+    }
+    char renders[4096], plan[4096], pano[4096], pdf[4096];
+    snprintf(renders, sizeof renders, "%s/renders", out);
+    snprintf(plan, sizeof plan, "%s/plan", out);
+    snprintf(pano, sizeof pano, "%s/panorama.jpg", out);
+    snprintf(pdf, sizeof pdf, "%s/print.pdf", out);
+    int rc = make_dir(out) || make_dir(renders) || make_dir(plan) ? 2 : 0;
+
+    /* 1. every stored viewpoint */
+    fprintf(stderr, "tessera share: renders of %d viewpoints\n", p.camera_count);
+    if (!rc && p.camera_count > 0) {
+        char *cmd[] = {"tessera", "render", (char *)project, "--all-views", "-o",
+                       renders,   "--size", (char *)size,    NULL};
+        rc = run(app_cli_render, cmd);
+    }
+    /* 2. the panorama from the first (or the named) viewpoint */
+    int has_pano = 0;
+    if (!rc && p.camera_count > 0) {
+        fprintf(stderr, "tessera share: 360-degree panorama\n");
+        char *cmd[] = {"tessera",      "panorama", (char *)project,   "-o",
+                       pano,           "--size",   (char *)pano_size, camera ? "--camera" : NULL,
+                       (char *)camera, NULL};
+        rc = run(app_cli_panorama, cmd);
+        uint8_t *jpeg = NULL;
+        size_t n = 0;
+        if (!rc && !read_file(pano, &jpeg, &n) &&
+            app_share_write_panorama(out, jpeg, n, "image/jpeg", err, sizeof err) == APP_OK &&
+            app_share_copy_viewer(out, app_placement_assets_dir(), err, sizeof err) == APP_OK)
+            has_pano = 1;
+        else if (!rc)
+            fprintf(stderr, "tessera share: %s\n", err);
+        free(jpeg);
+    }
+    /* 3. the print set, its pages also as SVG for the page */
+    if (!rc) {
+        fprintf(stderr, "tessera share: print set\n");
+        char *cmd[] = {"tessera", "print", (char *)project, "-o",    pdf,
+                       "--svg",   plan,    "--renders",     renders, NULL};
+        rc = run(app_cli_print, cmd);
+    }
+    /* 4. the page */
+    char *files[MAX_FILES] = {0}, *titles[MAX_FILES] = {0};
+    char *pfiles[MAX_FILES] = {0}, *ptitles[MAX_FILES] = {0};
+    char **cells = NULL, *totals[6] = {0};
+    int rows = 0;
+    if (!rc) {
+        int nr = list_files(renders, "renders", ".png", files, titles);
+        int np = list_files(plan, "plan", ".svg", pfiles, ptitles);
+        app_share_image img[MAX_FILES], pimg[MAX_FILES];
+        for (int i = 0; i < nr; i++)
+            img[i] = (app_share_image){files[i], titles[i]};
+        for (int i = 0; i < np; i++)
+            pimg[i] = (app_share_image){pfiles[i], ptitles[i]};
+        int table = part_list(&p, &cells, &rows, totals);
+        app_share_page page = {.title = p.name[0] ? p.name : "Bathroom",
+                               .plans = pimg,
+                               .plan_count = np,
+                               .renders = img,
+                               .render_count = nr,
+                               .pdf_file = "print.pdf",
+                               .has_panorama = has_pano,
+                               .table = table ? (const char *const *)cells : NULL,
+                               .columns = table ? 6 : 0,
+                               .rows = rows,
+                               .totals = table ? (const char *const *)totals : NULL,
+                               .total_count = table ? 3 : 0};
+        if (app_share_write_page(out, &page, err, sizeof err) != APP_OK) {
+            fprintf(stderr, "tessera share: %s\n", err);
+            rc = 1;
+        } else {
+            printf("%s/index.html: %d views, %d drawings, %s, %d part list lines\n", out, nr, np,
+                   has_pano ? "a panorama" : "no panorama", rows);
+        }
+    }
+    for (int i = 0; i < MAX_FILES; i++) {
+        free(files[i]);
+        free(titles[i]);
+        free(pfiles[i]);
+        free(ptitles[i]);
+    }
+    for (int i = 0; cells && i < (rows + 1) * 6; i++)
+        free(cells[i]);
+    free(cells);
+    for (int i = 0; i < 6; i++)
+        free(totals[i]);
+    app_project_free(&p);
+    return rc;
+}

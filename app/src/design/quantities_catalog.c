@@ -1,0 +1,256 @@
+/* The catalog side of the quantities (app/design/quantities.h): tile specs from catalog records,
+ * the layouts of every tiling of a project, and the priced bill of materials (DOMAIN.md "What the
+ * best planners print": unit price, VAT, totals). */
+#include "app/design/quantities.h"
+#include "tile_layout_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+app_result app_tile_spec_from_catalog(cat_db *db, const app_product_ref *ref, app_tile_spec *spec,
+                                      cat_product *product, char *err, size_t err_size)
+{
+    if (spec)
+        memset(spec, 0, sizeof *spec);
+    if (product)
+        memset(product, 0, sizeof *product);
+    if (!db || !ref || !spec) {
+        tl_set_err(err, err_size, "quantities", "no catalog or product reference");
+        return APP_ERR_SCHEMA;
+    }
+    cat_product p;
+    char cerr[512] = "";
+    if (cat_product_find(db, ref->manufacturer, ref->article, &p, cerr, sizeof cerr) != CAT_DB_OK) {
+        tl_set_err(err, err_size, "quantities", "tile %s %s: %s", ref->manufacturer, ref->article,
+                   cerr);
+        return APP_ERR_NOT_FOUND;
+    }
+    if (!p.has_tile) {
+        tl_set_err(err, err_size, "quantities", "%s %s is not a tile", ref->manufacturer,
+                   ref->article);
+        cat_product_free(&p);
+        return APP_ERR_NOT_FOUND;
+    }
+    spec->product = *ref;
+    spec->type = (app_tile_type)p.tile.type; /* the same order, see app_tile_type */
+    spec->work_w_mm = p.tile.work_w_mm;
+    spec->work_h_mm = p.tile.work_h_mm;
+    spec->grout_mm = p.tile.grout_mm;
+    spec->m2_per_box = p.tile.m2_per_box;
+    spec->pieces_per_box = p.tile.pieces_per_box;
+    /* DOMAIN.md: decor tiles are never reused; the others may be turned. */
+    spec->reusable_offcuts = spec->rotatable = p.tile.type != CAT_TILE_DEK;
+    snprintf(spec->texture, sizeof spec->texture, "%s", p.tile.texture);
+    if (product)
+        *product = p;
+    else
+        cat_product_free(&p);
+    return APP_OK;
+}
+
+void app_tile_layouts_free(app_tile_layout *layouts, int count)
+{
+    for (int i = 0; layouts && i < count; i++)
+        app_tile_layout_free(&layouts[i]);
+    free(layouts);
+}
+
+app_result app_project_tile_layouts(const app_project *p, cat_db *db, app_region_provider regions,
+                                    void *regions_user, app_tile_layout **layouts, int *count,
+                                    char *err, size_t err_size)
+{
+    if (layouts)
+        *layouts = NULL;
+    if (count)
+        *count = 0;
+    if (!p || !layouts || !count) {
+        tl_set_err(err, err_size, "quantities", "no project");
+        return APP_ERR_SCHEMA;
+    }
+    if (p->tiling_count == 0)
+        return APP_OK;
+    app_tile_layout *out = calloc((size_t)p->tiling_count, sizeof *out);
+    if (!out) {
+        tl_set_err(err, err_size, "quantities", "out of memory");
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    app_result res = APP_OK;
+    for (int i = 0; i < p->tiling_count && res == APP_OK; i++) {
+        const app_tiling *t = &p->tilings[i];
+        app_tile_spec field, borders[APP_TILING_MAX_BORDERS];
+        res = app_tile_spec_from_catalog(db, &t->product, &field, NULL, err, err_size);
+        for (int b = 0; res == APP_OK && b < t->border_count && b < APP_TILING_MAX_BORDERS; b++)
+            res = app_tile_spec_from_catalog(db, &t->borders[b].product, &borders[b], NULL, err,
+                                             err_size);
+        app_surface_region r;
+        memset(&r, 0, sizeof r);
+        if (res == APP_OK)
+            res = regions ? regions(regions_user, p, t->surface, &r, err, err_size)
+                          : app_surface_region_from_plan(&p->plan, t->surface, &r, err, err_size);
+        if (res == APP_OK) {
+            app_tile_layout_desc d = {&r, t, &field, borders, 0};
+            res = app_tile_layout_compute(&d, &out[i], err, err_size);
+        }
+        app_surface_region_free(&r);
+        if (res != APP_OK && err && err_size > 0) {
+            /* Name the tiling in front of the message. */
+            char msg[512];
+            snprintf(msg, sizeof msg, "%s", err);
+            tl_set_err(err, err_size, "quantities", "tiling \"%s\" on %s: %s", t->name, t->surface,
+                       msg);
+        }
+    }
+    if (res != APP_OK) {
+        app_tile_layouts_free(out, p->tiling_count);
+        return res;
+    }
+    *layouts = out;
+    *count = p->tiling_count;
+    return APP_OK;
+}
+
+/* ---- bill of materials ---------------------------------------------------------------------- */
+
+static app_result add_line(app_bom *b, int *cap, app_bom_line **line, char *err, size_t err_size)
+{
+    if (b->line_count == *cap) {
+        int nc = *cap ? 2 * *cap : 16;
+        app_bom_line *l = realloc(b->lines, sizeof *l * (size_t)nc);
+        if (!l) {
+            tl_set_err(err, err_size, "quantities", "out of memory");
+            return APP_ERR_OUT_OF_MEMORY;
+        }
+        b->lines = l;
+        *cap = nc;
+    }
+    *line = &b->lines[b->line_count++];
+    memset(*line, 0, sizeof **line);
+    return APP_OK;
+}
+
+/* Fills the catalog part of a line; found = 0 when the catalog has no such product. */
+static void price_line(cat_db *db, app_bom_line *l)
+{
+    cat_product p;
+    char cerr[256];
+    if (!db || cat_product_find(db, l->product.manufacturer, l->product.article, &p, cerr,
+                                sizeof cerr) != CAT_DB_OK) {
+        snprintf(l->name, sizeof l->name, "%s %s (not in the catalog)", l->product.manufacturer,
+                 l->product.article);
+        l->unit = CAT_UNIT_PIECE;
+        return;
+    }
+    l->found = 1;
+    snprintf(l->name, sizeof l->name, "%s", p.name);
+    snprintf(l->series, sizeof l->series, "%s", p.series);
+    l->category = p.category;
+    l->is_tile = p.has_tile;
+    if (p.has_tile)
+        l->tile_type = (app_tile_type)p.tile.type;
+    l->unit = p.unit;
+    l->unit_price_cents = p.price_cents;
+    for (int v = 0; v < p.variant_count; v++)
+        if (l->product.variant[0] && !strcmp(p.variants[v].code, l->product.variant))
+            l->unit_price_cents += p.variants[v].surcharge_cents;
+    l->vat_percent = p.vat_percent;
+    snprintf(l->currency, sizeof l->currency, "%s", p.currency);
+    cat_product_free(&p);
+}
+
+static void total_line(app_bom_line *l)
+{
+    l->net_cents = llround(l->quantity * (double)l->unit_price_cents);
+    l->vat_cents = llround((double)l->net_cents * l->vat_percent / 100.0);
+    l->gross_cents = l->net_cents + l->vat_cents;
+}
+
+static int cmp_fixture(const void *a, const void *b)
+{
+    const app_bom_line *x = a, *y = b;
+    int c = strcasecmp(x->name, y->name);
+    return c ? c : strcasecmp(x->product.article, y->product.article);
+}
+
+app_result app_bom_build(cat_db *db, const app_project *p, const app_quantities *q, app_bom *out,
+                         char *err, size_t err_size)
+{
+    if (out)
+        memset(out, 0, sizeof *out);
+    if (!out) {
+        tl_set_err(err, err_size, "quantities", "no bill of materials to fill");
+        return APP_ERR_SCHEMA;
+    }
+    int cap = 0;
+    app_bom_line *l;
+    for (int i = 0; q && i < q->line_count; i++) {
+        const app_tile_quantity *t = &q->lines[i];
+        if (add_line(out, &cap, &l, err, err_size) != APP_OK)
+            goto oom;
+        l->product = t->spec.product;
+        price_line(db, l);
+        l->is_tile = 1;
+        l->tile_type = t->spec.type;
+        /* The amount to order, in the unit the catalog prices the tile by. */
+        if (l->unit == CAT_UNIT_M2)
+            l->quantity = t->order_m2;
+        else if (l->unit == CAT_UNIT_BOX)
+            l->quantity = t->boxes > 0 ? t->boxes : t->pieces_to_order;
+        else
+            l->quantity = t->pieces_to_order;
+    }
+    int first_fixture = out->line_count;
+    for (int i = 0; p && i < p->object_count; i++) {
+        const app_object *o = &p->objects[i];
+        if (!o->has_product)
+            continue;
+        int k;
+        for (k = first_fixture; k < out->line_count; k++)
+            if (app_product_ref_equal(&out->lines[k].product, &o->product))
+                break;
+        if (k < out->line_count) {
+            out->lines[k].quantity += 1;
+            continue;
+        }
+        if (add_line(out, &cap, &l, err, err_size) != APP_OK)
+            goto oom;
+        l->product = o->product;
+        l->quantity = 1;
+    }
+    for (int k = first_fixture; k < out->line_count; k++)
+        price_line(db, &out->lines[k]);
+    if (out->line_count > first_fixture) /* qsort's array must not be NULL, even for 0 lines */
+        qsort(out->lines + first_fixture, (size_t)(out->line_count - first_fixture),
+              sizeof *out->lines, cmp_fixture);
+    int mixed = 0;
+    for (int k = 0; k < out->line_count; k++) {
+        l = &out->lines[k];
+        total_line(l);
+        out->net_cents += l->net_cents;
+        out->vat_cents += l->vat_cents;
+        out->gross_cents += l->gross_cents;
+        out->missing += !l->found;
+        if (!l->found)
+            continue;
+        if (!out->currency[0] && !mixed)
+            snprintf(out->currency, sizeof out->currency, "%s", l->currency);
+        else if (strcmp(out->currency, l->currency))
+            mixed = 1;
+    }
+    if (mixed)
+        out->currency[0] = '\0';
+    return APP_OK;
+oom:
+    app_bom_free(out);
+    return APP_ERR_OUT_OF_MEMORY;
+}
+
+void app_bom_free(app_bom *b)
+{
+    if (!b)
+        return;
+    free(b->lines);
+    memset(b, 0, sizeof *b);
+}

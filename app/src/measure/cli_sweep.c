@@ -1,0 +1,390 @@
+/* tessera sweep PROJECT: the speed/accuracy trade (RENDERING.md section 10). The renderer is
+ * run over settings, one factor at a time around a baseline, and each is timed (ms per frame,
+ * GPU work finished) and compared with the ground-truth tracer (render/ref) over all pixels
+ * and over the reflective ones: a table, a CSV and a plot. */
+#include "app/cli/cli.h"
+#include "app/measure/cli_ref.h"
+#include "app/measure/image_compare.h"
+#include "app/scene/quality.h"
+#include "app/scene/ref_scene_build.h"
+#include "app/measure/stats.h"
+#include "app/measure/sweep_plot.h"
+#include "cli/cli_options.h"
+
+#include "ref/ref.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct sweep_setting {
+    const char *factor, *label;
+    int resolution;           /* 0 = auto */
+    rd_correction correction; /* DEFAULT = box */
+    rd_blur_method blur;
+    int every_n; /* 1 every frame, N every N-th, 0 once (static), -1 time-sliced */
+    int per_vertex;
+    rd_ambient_model ambient;
+    int max_resolution;  /* cap of auto; 0 = the renderer's */
+    int no_specular;     /* probes capture without highlights */
+    int supersample;     /* 1 = none (the reference is traced at the same) */
+    int planar;          /* flat mirrors as planar reflections (probe_planar.c) */
+    int room_off;        /* "depth" searches the own probe only (no room probe) */
+    int lamps_in_probes; /* sharp lookups read lamps from their probes (not emitters.c) */
+    int self_rays;       /* lobe rays a sample of the self-reflection trace; 0 off */
+} sweep_setting;
+
+enum { FACTOR_SETTINGS = 24, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
+
+/* The baseline is what the renderer does by default; every other setting changes one factor. */
+static void make_settings(sweep_setting out[SETTINGS])
+{
+    const sweep_setting base = {.factor = "baseline",
+                                .label = "auto",
+                                .correction = RD_CORRECTION_BOX,
+                                .blur = RD_BLUR_PREFILTERED,
+                                .every_n = 1,
+                                .ambient = RD_AMBIENT_CONSTANT,
+                                .supersample = 1};
+    static const char *const res_labels[7] = {"16", "32", "64", "128", "256", "512", "1024"};
+    int k = 0;
+    out[k++] = base;
+    for (int i = 0; i < 7; i++) {
+        out[k] = base;
+        out[k].factor = "resolution";
+        out[k].label = res_labels[i];
+        out[k++].resolution = 16 << i;
+    }
+    const struct {
+        const char *factor, *label;
+    } named[10] = {{"correction", "none"}, {"correction", "sphere"},  {"blur", "box-mips"},
+                   {"blur", "reference"},  {"update", "every 4"},     {"update", "every 16"},
+                   {"update", "static"},   {"update", "time-sliced"}, {"per-vertex", "per-vertex"},
+                   {"ambient", "sh9"}};
+    for (int i = 0; i < 10; i++) {
+        out[k] = base;
+        out[k].factor = named[i].factor;
+        out[k].label = named[i].label;
+        k++;
+    }
+    out[8].correction = RD_CORRECTION_NONE;
+    out[9].correction = RD_CORRECTION_SPHERE;
+    out[10].blur = RD_BLUR_BOX_MIPS;
+    out[11].blur = RD_BLUR_REFERENCE;
+    out[12].every_n = 4;
+    out[13].every_n = 16;
+    out[14].every_n = 0;
+    out[15].every_n = -1; /* time-sliced */
+    out[16].per_vertex = 1;
+    out[17].ambient = RD_AMBIENT_SH9;
+    out[18] = base;
+    out[18].factor = "highlights";
+    out[18].label = "not in probes";
+    out[18].no_specular = 1;
+    /* Distance impostors: the probe's stored distances instead of the proxy (reflect.glsl). */
+    out[19] = base;
+    out[19].factor = "correction";
+    out[19].label = "depth";
+    out[19].correction = RD_CORRECTION_DEPTH;
+    /* Flat mirrors captured from the eye's mirror image (probe_planar.c). */
+    out[20] = base;
+    out[20].factor = "mirrors";
+    out[20].label = "planar";
+    out[20].planar = 1;
+    /* Depth with the object's own probe alone: what the room probe buys (probe.c). */
+    out[21] = out[19];
+    out[21].label = "depth, own probe only";
+    out[21].room_off = 1;
+    /* Lamps left in the probes of mirrors and glass: what their exact intersection buys
+     * (emitters.c). */
+    out[22] = base;
+    out[22].factor = "lamps";
+    out[22].label = "in the probes";
+    out[22].lamps_in_probes = 1;
+    /* Fixtures' reflections of themselves and their neighbours traced (self_trace.c). */
+    out[23] = base;
+    out[23].factor = "self-reflections";
+    out[23].label = "traced";
+    out[23].self_rays = APP_SELF_REFLECTION_RAYS;
+    /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
+     * against a reference traced with the same. */
+    static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
+    for (int i = 0; i < PRESETS; i++) {
+        const app_quality *q = app_quality_find(presets[i]);
+        sweep_setting *st = &out[FACTOR_SETTINGS + i];
+        *st = base;
+        st->factor = "preset";
+        st->label = q->name;
+        st->resolution = q->resolution;
+        st->blur = q->blur;
+        /* On change, under the sweep's moving object, refreshes as time slicing does. */
+        int sliced = q->update == RD_PROBE_TIME_SLICED || q->update == RD_PROBE_ON_CHANGE;
+        st->every_n = q->update == RD_PROBE_ONCE ? 0 : sliced ? -1 : 1;
+        st->max_resolution = q->max_resolution;
+        st->supersample = q->supersample;
+        st->correction = q->correction != RD_CORRECTION_DEFAULT ? q->correction : base.correction;
+        st->planar = q->planar_mirrors;
+        st->self_rays = q->self_reflections;
+        st->room_off = q->room_probe_off;
+    }
+}
+
+/* Frames run before the measured one. A moving object slides in a straight line and arrives
+ * at its place in the project on the measured frame, so every probe captured earlier is
+ * stale by how long ago it was captured: 0 frames for every frame, 3 for every 4th, 15 for
+ * every 16th, 63 for once. */
+#define ANIMATION_FRAMES 64
+#define SLIDE_PER_FRAME_M 0.005f
+
+static void apply(rd_scene *scene, const rd_reflection_defaults *base, const sweep_setting *s)
+{
+    rd_reflection_defaults d = *base;
+    d.resolution = s->resolution;
+    d.correction = s->correction;
+    d.blur = s->blur;
+    d.update = s->every_n == 0  ? RD_PROBE_ONCE
+               : s->every_n < 0 ? RD_PROBE_TIME_SLICED
+                                : RD_PROBE_EVERY_FRAME;
+    d.every_n = s->every_n > 0 ? s->every_n : 0;
+    d.per_vertex = s->per_vertex;
+    d.ambient = s->ambient;
+    d.max_resolution = s->max_resolution;
+    d.probe_no_specular = s->no_specular;
+    d.planar_mirrors = s->planar;
+    d.room_probe_off = s->room_off;
+    d.emitters_in_probes = s->lamps_in_probes;
+    d.self_reflections = s->self_rays;
+    rd_scene_set_reflection_defaults(scene, &d);
+}
+
+/* The project object to move: --animate NAME, else the largest one without reflections. */
+static int pick_moving(const app_project *p, const char *name)
+{
+    int best = -1;
+    double best_volume = 0.0;
+    for (int i = 0; i < p->object_count; i++) {
+        const app_object *o = &p->objects[i];
+        if (name) {
+            if (!strcmp(o->name, name))
+                return i;
+            continue;
+        }
+        const app_material *m = &p->materials[o->material];
+        double v = o->size_mm[0] * o->size_mm[1] * fmax(o->size_mm[2], 1.0);
+        if (m->reflectivity == 0.0f && m->transparency == 0.0f && v > best_volume) {
+            best = i;
+            best_volume = v;
+        }
+    }
+    return best;
+}
+
+/* Moves the object's parts by `offset` metres along x from their project transforms. */
+static void place(cli_session *s, int object, const float (*rest)[16], float offset)
+{
+    int first = s->scene.object_parts[object][0], parts = s->scene.object_parts[object][1];
+    for (int k = 0; k < parts; k++) {
+        float m[16];
+        memcpy(m, rest[k], sizeof m);
+        m[12] += offset;
+        rd_scene_set_transform(s->scene.scene, first + k, m);
+    }
+}
+
+typedef struct sweep_row {
+    double ms_mean, ms_median, psnr_all, psnr_reflective, rmse_reflective;
+} sweep_row;
+
+/* The table as Markdown, the front in bold (issue 4: a CSV, a Markdown table and a plot). */
+static int write_markdown(const char *path, const app_sweep_point *p, const sweep_row *r, int n)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        perror(path);
+        return -1;
+    }
+    fprintf(f, "| factor | setting | ms mean | ms median | PSNR all (dB) | PSNR reflective (dB) "
+               "| RMSE reflective |\n|---|---|---|---|---|---|---|\n");
+    for (int i = 0; i < n; i++)
+        fprintf(f, "| %s | %s%s%s | %.1f | %.1f | %.2f | %s%.2f%s | %.4f |\n", p[i].factor,
+                p[i].on_front ? "**" : "", p[i].label, p[i].on_front ? "**" : "", r[i].ms_mean,
+                r[i].ms_median, r[i].psnr_all, p[i].on_front ? "**" : "", r[i].psnr_reflective,
+                p[i].on_front ? "**" : "", r[i].rmse_reflective);
+    fprintf(f, "\nBold: the Pareto front (no other setting is both faster and more accurate).\n");
+    return fclose(f) == 0 ? 0 : -1;
+}
+
+int app_cli_sweep(int argc, char **argv)
+{
+    cli_options o = {.frames = 6, .warmup = 2};
+    int rc = cli_parse(argc, argv, 2, "sweep",
+                       "camera size frames warmup backend csv samples plot animate markdown", &o);
+    if (rc != CLI_OK)
+        return rc;
+    if (!o.project) {
+        fprintf(stderr, "usage: tessera sweep PROJECT [--camera NAME] [--size WxH] "
+                        "[--frames N] [--samples N] [--animate OBJECT] [--csv FILE] "
+                        "[--plot FILE.png] [--backend egl|osmesa]\n");
+        return CLI_USAGE;
+    }
+    cli_session s;
+    rc = cli_session_open(&o, &s);
+    if (rc != CLI_OK)
+        return rc;
+    rd_view view;
+    rc = cli_session_view(&s, &o, o.camera, 640, 360, &view);
+    view.supersample = 1;
+    char err[2048];
+    ref_scene *ref = NULL;
+    if (rc == CLI_OK && app_ref_scene_build(&s.project, &ref, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        rc = CLI_FAILED;
+    }
+    /* The ground truth of the project as it stands (the moving object at rest). */
+    /* The ground truth per supersampling (the presets use their own), traced on first use. */
+    ref_image truth[5] = {{0}};
+    size_t n = (size_t)view.width * (size_t)view.height;
+    float *image = malloc(n * 4 * sizeof *image), *mask = malloc(n * sizeof *mask);
+    float(*rest)[16] = NULL;
+    int moving = pick_moving(&s.project, o.animate);
+    if (rc == CLI_OK && (!image || !mask))
+        rc = CLI_FAILED;
+    if (rc == CLI_OK && moving < 0) {
+        fprintf(stderr, "tessera sweep: no object to move%s%s\n", o.animate ? " named " : "",
+                o.animate ? o.animate : "");
+        rc = CLI_USAGE;
+    }
+    if (rc == CLI_OK) {
+        int parts = s.scene.object_parts[moving][1];
+        rest = calloc((size_t)(parts ? parts : 1), sizeof *rest);
+        for (int k = 0; rest && k < parts; k++) {
+            rd_object_desc d;
+            if (rd_scene_object_desc(s.scene.scene, s.scene.object_parts[moving][0] + k, &d) ==
+                RD_OK)
+                memcpy(rest[k], d.transform, sizeof rest[k]);
+        }
+        if (!rest)
+            rc = CLI_FAILED;
+    }
+    FILE *csv = rc == CLI_OK && o.csv ? fopen(o.csv, "w") : NULL;
+    if (rc == CLI_OK && o.csv && !csv) {
+        perror(o.csv);
+        rc = CLI_FAILED;
+    }
+    if (csv)
+        fprintf(csv, "factor,setting,ms_mean,ms_median,rmse_all,psnr_all,rmse_reflective,"
+                     "psnr_reflective,reflective_pixels\n");
+    app_sweep_point points[SETTINGS];
+    sweep_row rows[SETTINGS];
+    int count = 0;
+    rd_reflection_defaults base = rd_scene_reflection_defaults(s.scene.scene);
+    sweep_setting settings[SETTINGS];
+    make_settings(settings);
+    if (rc == CLI_OK)
+        printf("%-11s %-11s %9s %9s %9s %9s %9s\n", "factor", "setting", "ms mean", "ms median",
+               "PSNR all", "PSNR refl", "RMSE refl");
+    for (int k = 0; rc == CLI_OK && k < SETTINGS; k++) {
+        const sweep_setting *st = &settings[k];
+        apply(s.scene.scene, &base, st);
+        rd_view view_k = view;
+        view_k.supersample = st->supersample;
+        ref_image *tr = &truth[st->supersample];
+        if (!tr->linear) {
+            fprintf(stderr,
+                    "\rtessera sweep: reference %dx%d, %dx%d supersampling, %d samples "
+                    "per glossy lookup\n",
+                    view.width, view.height, st->supersample, st->supersample,
+                    o.samples ? o.samples : 64);
+            ref_render_desc rdesc = {
+                .view = view_k, .samples = o.samples, .seed = 1, .progress = 1};
+            if (ref_render(ref, &rdesc, tr) != REF_OK) {
+                fprintf(stderr, "tessera sweep: %s\n", ref_last_error());
+                rc = CLI_FAILED;
+                break;
+            }
+        }
+        for (size_t i = 0; i < n; i++)
+            mask[i] = tr->mask[i] ? 1.0f : 0.0f;
+        /* The update policies are measured with the object moving over ANIMATION_FRAMES; the
+         * other factors, whose cost does not depend on motion, over warm-up + frames with
+         * the probes updated every frame. */
+        int animated = !strcmp(st->factor, "update") || !strcmp(st->factor, "baseline");
+        int frames = animated ? ANIMATION_FRAMES : o.warmup + o.frames;
+        double *t = calloc((size_t)frames, sizeof *t);
+        if (!t) {
+            rc = CLI_FAILED;
+            break;
+        }
+        for (int f = 0; f < frames; f++) {
+            place(&s, moving, (const float(*)[16])rest,
+                  animated ? (float)(f - (frames - 1)) * SLIDE_PER_FRAME_M : 0.0f);
+            double t0 = cli_now_ms();
+            if (rd_render(s.ctx, s.scene.scene, &view_k) != RD_OK) {
+                fprintf(stderr, "tessera sweep: %s\n", rd_last_error());
+                rc = CLI_FAILED;
+                break;
+            }
+            rd_finish(s.ctx);
+            t[f] = cli_now_ms() - t0;
+        }
+        app_image_metrics all = {0}, refl = {0};
+        if (rc == CLI_OK && rd_read_linear(s.ctx, image, n * 4) == RD_OK) {
+            app_image_metrics_compute(image, tr->linear, view.width, view.height, NULL, &all);
+            app_image_metrics_compute(image, tr->linear, view.width, view.height, mask, &refl);
+        }
+        /* Timing: the last frames (the first ones of a setting build its probes and shaders);
+         * the mean, since every-N policies put their work on one frame in N. */
+        int from =
+            animated ? frames / 2 : o.warmup; /* the animated half is every policy's steady state */
+        double sum = 0.0;
+        for (int f = from; f < frames; f++)
+            sum += t[f];
+        double mean = sum / (double)(frames - from);
+        double median = app_stats_of(t + from, frames - from).median;
+        free(t);
+        rows[count] = (sweep_row){mean, median, all.psnr, refl.psnr, refl.rmse};
+        points[count++] = (app_sweep_point){st->factor, st->label, mean, refl.psnr, 0};
+        printf("%-11s %-11s %9.2f %9.2f %9.2f %9.2f %9.5f\n", st->factor, st->label, mean, median,
+               all.psnr, refl.psnr, refl.rmse);
+        if (csv)
+            fprintf(csv, "%s,%s,%.3f,%.3f,%.6f,%.3f,%.6f,%.3f,%lld\n", st->factor, st->label, mean,
+                    median, all.rmse, all.psnr, refl.rmse, refl.psnr, refl.pixels);
+        fflush(stdout);
+        fprintf(stderr, "\rsetting %d of %d", k + 1, SETTINGS);
+    }
+    fprintf(stderr, "\n");
+    if (csv)
+        fclose(csv);
+    if (rc == CLI_OK) {
+        app_sweep_mark_front(points, count);
+        if (o.markdown && write_markdown(o.markdown, points, rows, count) != 0)
+            rc = CLI_FAILED;
+        printf("\nPareto front (faster or more accurate than every other setting):\n");
+        for (int i = 0; i < count; i++)
+            if (points[i].on_front)
+                printf("  %-11s %-11s %8.2f ms  %6.2f dB\n", points[i].factor, points[i].label,
+                       points[i].ms, points[i].psnr);
+        fflush(stdout);
+        if (o.plot) {
+            char title[512];
+            snprintf(title, sizeof title, "%s, %dx%d, %s: reference %d samples", s.project.name,
+                     view.width, view.height, rd_backend_name(rd_context_backend(s.ctx)),
+                     o.samples ? o.samples : 64);
+            if (app_sweep_plot(o.plot, points, count, title, err, (int)sizeof err) != 0) {
+                fprintf(stderr, "tessera: %s\n", err);
+                rc = CLI_FAILED;
+            } else {
+                fprintf(stderr, "tessera sweep: wrote %s\n", o.plot);
+            }
+        }
+    }
+    free(rest);
+    free(image);
+    free(mask);
+    for (int i = 0; i < 5; i++)
+        ref_image_free(&truth[i]);
+    ref_scene_destroy(ref);
+    cli_session_close(&s);
+    return rc;
+}

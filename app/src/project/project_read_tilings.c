@@ -1,0 +1,164 @@
+/* $.tilings (version 2): which tile product covers which surface region, in which pattern,
+ * with which grout (app/design/room.h app_tiling); and the product reference shared with objects.
+ * Surface names are checked against the plan, which is read first. */
+#include "project_internal.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *const pj_pattern_names[6] = {"straight",       "half-offset", "third-offset",
+                                         "vertical-stack", "diagonal",    "herringbone"};
+const char *const pj_align_names[3] = {"centred", "corner", "line"};
+
+static const pj_range HEIGHT = {0.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0};
+static const pj_range GROUT = {0.0, 100.0, 0, 0, 1};
+
+app_result pj_read_product_ref(pj_ctx *c, const cJSON *obj, const char *key, int required,
+                               app_product_ref *out)
+{
+    const cJSON *item;
+    app_result r = pj_member(c, obj, key, cJSON_Object, required, &item);
+    if (r != APP_OK || !item)
+        return r;
+    size_t mark = pj_path_key(c, key);
+    memset(out, 0, sizeof *out);
+    if ((r = pj_get_string(c, item, "manufacturer", 1, 0, out->manufacturer,
+                           sizeof out->manufacturer)) != APP_OK ||
+        (r = pj_get_string(c, item, "article", 1, 0, out->article, sizeof out->article)) !=
+            APP_OK ||
+        (r = pj_get_string(c, item, "variant", 0, 1, out->variant, sizeof out->variant)) != APP_OK)
+        return r;
+    pj_path_restore(c, mark);
+    return APP_OK;
+}
+
+/* "floor", "ceiling", "wall:I" (I a wall of the plan), "prewall:NAME:front|top|left|right". */
+static app_result check_surface(pj_ctx *c, const char *s)
+{
+    const app_room_plan *plan = &c->p->plan;
+    if (!strcmp(s, "floor") || !strcmp(s, "ceiling"))
+        return APP_OK;
+    if (!strncmp(s, "wall:", 5)) {
+        char *end = NULL;
+        long i = strtol(s + 5, &end, 10);
+        if (s[5] >= '0' && s[5] <= '9' && end && *end == '\0') {
+            if (i < plan->corner_count)
+                return APP_OK;
+            pj_path_key(c, "surface");
+            return pj_fail(c, APP_ERR_SCHEMA, "wall %ld does not exist (the plan has %d walls)", i,
+                           plan->corner_count);
+        }
+    } else if (!strncmp(s, "prewall:", 8)) {
+        const char *name = s + 8, *colon = strrchr(name, ':');
+        if (colon && colon > name) {
+            const char *face = colon + 1;
+            int face_ok = !strcmp(face, "front") || !strcmp(face, "top") || !strcmp(face, "left") ||
+                          !strcmp(face, "right");
+            size_t len = (size_t)(colon - name);
+            for (int k = 0; face_ok && k < plan->prewall_count; k++)
+                if (strlen(plan->prewalls[k].name) == len &&
+                    !strncmp(plan->prewalls[k].name, name, len))
+                    return APP_OK;
+            pj_path_key(c, "surface");
+            if (!face_ok)
+                return pj_fail(c, APP_ERR_SCHEMA,
+                               "unknown pre-wall face \"%.16s\" (expected front, top, left or "
+                               "right)",
+                               face);
+            return pj_fail(c, APP_ERR_SCHEMA, "no pre-wall named \"%.*s\" in $.plan.prewalls",
+                           (int)(len > 64 ? 64 : len), name);
+        }
+    }
+    pj_path_key(c, "surface");
+    return pj_fail(c, APP_ERR_SCHEMA,
+                   "unknown surface \"%.96s\" (expected floor, ceiling, wall:I or "
+                   "prewall:NAME:front|top|left|right)",
+                   s);
+}
+
+static app_result read_borders(pj_ctx *c, const cJSON *item, app_tiling *t)
+{
+    const cJSON *list;
+    app_result r = pj_member(c, item, "borders", cJSON_Array, 0, &list);
+    if (r != APP_OK || !list)
+        return r;
+    size_t mark = pj_path_key(c, "borders");
+    int count = cJSON_GetArraySize(list);
+    if (count > APP_TILING_MAX_BORDERS)
+        return pj_fail(c, APP_ERR_SCHEMA, "at most %d border rows, got %d", APP_TILING_MAX_BORDERS,
+                       count);
+    int i = 0;
+    for (const cJSON *e = list->child; e; e = e->next, i++) {
+        size_t e_mark = pj_path_index(c, i);
+        if (!cJSON_IsObject(e))
+            return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(e));
+        app_tile_border *b = &t->borders[i];
+        if ((r = pj_read_product_ref(c, e, "product", 1, &b->product)) != APP_OK ||
+            (r = pj_get_number(c, e, "bottom", 1, HEIGHT, &b->bottom_mm)) != APP_OK)
+            return r;
+        t->border_count = i + 1;
+        pj_path_restore(c, e_mark);
+    }
+    pj_path_restore(c, mark);
+    return APP_OK;
+}
+
+static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, app_tiling *t)
+{
+    if (!cJSON_IsObject(item))
+        return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(item));
+    pj_default_tiling(t);
+    snprintf(t->name, sizeof t->name, "tiling-%d", index);
+    int pattern = (int)t->pattern, align = (int)t->align;
+    app_result r;
+    if ((r = pj_get_string(c, item, "name", 0, 0, t->name, sizeof t->name)) != APP_OK ||
+        (r = pj_get_string(c, item, "surface", 1, 0, t->surface, sizeof t->surface)) != APP_OK ||
+        (r = check_surface(c, t->surface)) != APP_OK ||
+        (r = pj_read_product_ref(c, item, "product", 1, &t->product)) != APP_OK ||
+        (r = pj_get_enum(c, item, "pattern", 0, pj_pattern_names, 6, &pattern)) != APP_OK ||
+        (r = pj_get_number(c, item, "grout", 0, GROUT, &t->grout_mm)) != APP_OK ||
+        (r = pj_get_color(c, item, "grout_color", 0, t->grout_color)) != APP_OK ||
+        (r = pj_get_enum(c, item, "align", 0, pj_align_names, 3, &align)) != APP_OK ||
+        (r = pj_get_vec(c, item, "origin", 0, 2, PJ_ANY, t->origin_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "rotation", 0, PJ_ANY, &t->rotation_deg)) != APP_OK ||
+        (r = pj_get_number(c, item, "from", 0, HEIGHT, &t->from_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "to", 0, HEIGHT, &t->to_mm)) != APP_OK ||
+        (r = read_borders(c, item, t)) != APP_OK)
+        return r;
+    t->pattern = (app_tile_pattern)pattern;
+    t->align = (app_tile_align)align;
+    if (t->to_mm != 0 && t->to_mm <= t->from_mm) {
+        pj_path_key(c, "to");
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "must be above \"from\" (%g mm), or 0 for up to the ceiling, got %g",
+                       t->from_mm, t->to_mm);
+    }
+    return APP_OK;
+}
+
+app_result pj_read_tilings(pj_ctx *c, const cJSON *root)
+{
+    const cJSON *list;
+    app_result r = pj_member(c, root, "tilings", cJSON_Array, 0, &list);
+    if (r != APP_OK || !list)
+        return r;
+    size_t mark = pj_path_key(c, "tilings");
+    int count;
+    if ((r = pj_check_count(c, list, "tilings", &count)) != APP_OK)
+        return r;
+    app_project *p = c->p;
+    p->tilings = pj_calloc((size_t)count, sizeof *p->tilings);
+    if (!p->tilings)
+        return pj_fail(c, APP_ERR_OUT_OF_MEMORY, "out of memory (%d tilings)", count);
+    int i = 0;
+    for (const cJSON *item = list->child; item; item = item->next, i++) {
+        size_t i_mark = pj_path_index(c, i);
+        if ((r = read_tiling(c, item, i, &p->tilings[i])) != APP_OK)
+            return r;
+        p->tiling_count = i + 1;
+        pj_path_restore(c, i_mark);
+    }
+    pj_path_restore(c, mark);
+    return APP_OK;
+}

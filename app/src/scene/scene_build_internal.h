@@ -1,0 +1,51 @@
+#ifndef APP_SCENE_BUILD_INTERNAL_H
+#define APP_SCENE_BUILD_INTERNAL_H
+
+#include "app/design/room_mesh.h"
+#include "app/design/placement.h"
+#include "app/design/room_surfaces.h"
+#include "app/scene/scene_build.h"
+
+#include <stdio.h>
+#include <string.h>
+
+app_result app_scene_track_mesh(app_scene *s, rd_mesh mesh);
+/* The renderer's material for project material index mi, loading its texture once. */
+app_result app_scene_material(rd_context *ctx, const app_project *p, app_scene *s, int mi,
+                              rd_material *out, char *err, size_t err_size);
+/* The same for a material that is not in the project (room_mesh.h inline materials). */
+app_result app_scene_material_of(rd_context *ctx, const app_project *p, app_scene *s,
+                                 const app_material *am, rd_material *out, char *err,
+                                 size_t err_size);
+/* The room's meshes (app_room_geometry_build, shared with the reference tracer). */
+app_result app_scene_add_room(rd_context *ctx, const app_project *p, const app_room_geometry *room,
+                              app_scene *s, char *err, size_t err_size);
+app_result app_scene_add_objects(rd_context *ctx, const app_project *p, app_scene *s, char *err,
+                                 size_t err_size);
+/* A copy q of p whose catalog products are drawable objects (scene_products.c); owns = 1 when
+ * q has its own objects and materials arrays. covers: the boxes of the baths and shower trays
+ * (app/design/room_surfaces.h), for the tile layouts. Free with app_scene_resolved_free. */
+typedef struct app_scene_products {
+    app_project q;
+    int owns;
+    app_fixture_box *covers;
+    int cover_count;
+    app_lazy_catalog catalog; /* opened on the first product, kept for the tiles */
+} app_scene_products;
+app_result app_scene_resolve_products(const app_project *p, app_scene_products *out, char *err,
+                                      size_t err_size);
+void app_scene_resolved_free(app_scene_products *r);
+/* The tiles of p's tilings as meshes added to the room geometry (room_tiles.c): each tile a
+ * textured polygon a few mm in front of its surface, over a backing in the grout colour.
+ * Problems (no catalog, an unknown tile) are warnings: the room is drawn without those tiles. */
+void app_room_add_tiles(const app_project *p, const app_fixture_box *covers, int cover_count,
+                        app_lazy_catalog *catalog, app_room_geometry *g);
+/* A product the catalog could not give a size or model to: nothing to draw. */
+#define APP_OBJECT_UNRESOLVED(o)                                                                   \
+    ((o)->has_product && (o)->shape != APP_SHAPE_MODEL && !((o)->size_mm[0] > 0))
+/* A static probe map (RENDERING.md section 8) from six files, loaded once per pattern. */
+app_result app_scene_cubemap(rd_context *ctx, app_scene *s, const char *pattern, rd_cubemap *out,
+                             char *err, size_t err_size);
+void app_object_transform(const app_object *o, const double size_m[3], float out[16]);
+
+#endif
