@@ -1,5 +1,5 @@
 #!/bin/sh
-# A planner session under Xvfb (issue 8): open the demo, look around, search "basin" in the
+# A planner session under Xvfb: open the demo, look around, search "basin" in the
 # catalog, place one, drag it against another wall, undo, redo, tile a wall and change its
 # pattern, save; then wall 1's elevation, its pattern, grout and start through the tile
 # actions, save again; then check the saved project. The app must exit 0 (a GL error fails the

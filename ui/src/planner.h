@@ -99,7 +99,7 @@ typedef struct planner {
     double mouse_x, mouse_y;
     int dragging;
 
-    /* Drag and drop, thumbnails, quantities, the file panel (uicat: issue 8 items 3-5). */
+    /* Drag and drop, thumbnails, quantities, the file panel. */
     ui_drag_drop drop;
     ui_thumbnails thumbs;
     ui_quantities_view quantities;
@@ -109,7 +109,7 @@ typedef struct planner {
     /* The tile panel and the elevation view (uitile, tiles.h), made on first use. */
     struct ui_tiles *tiles;
 
-    /* uiprops: this frame's panel rectangles from the window's size (panel_layout.h), and
+    /* This frame's panel rectangles from the window's size (panel_layout.h), and
      * where each panel was last placed (a panel is moved back when its rectangle changes). */
     ui_layout layout, placed;
 
