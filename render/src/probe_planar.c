@@ -7,7 +7,7 @@
  * mirror's plane: its capture holds the planar reflection of the classic mirrored-camera
  * technique, and no proxy or search is needed. Nothing is hidden from the centre that the
  * mirror's points see, which a probe at the mirror's own centre cannot promise even with its
- * stored distances (thin rails in front of a wall; docs/accuracy.md).
+ * stored distances (thin rails in front of a wall; docs/history.md).
  *
  * The capture depends on the eye, so it is made every frame the probe is used. It is a 2D
  * texture, not a cube: from the eye's image the mirror is one window, and the capture is the
