@@ -106,7 +106,7 @@ typedef struct planner {
     char file_path[1024]; /* the file panel's path field */
     int file_pending;     /* UI_FILE_*: waits for the unsaved-changes answer */
 
-    /* The tile panel and the elevation view (uitile, tiles.h), made on first use. */
+    /* The tile panel and the elevation view (tiles.h), made on first use. */
     struct ui_tiles *tiles;
 
     /* This frame's panel rectangles from the window's size (panel_layout.h), and
@@ -204,7 +204,7 @@ void planner_fixture_drag_pointer(planner *p, double sx, double sy);
 /* Drops the drag without touching the scene (it is being rebuilt or released). */
 void planner_fixture_drag_forget(planner *p);
 
-/* tile_panel.c, elevation_draw.c, tile_actions.c (uitile, tiles.h): the tile panel, the
+/* tile_panel.c, elevation_draw.c, tile_actions.c (tiles.h): the tile panel, the
  * elevation view's frame, the tile script actions, and freeing their state. */
 void planner_tile_panel(planner *p, int width, int height);
 void planner_elevation_frame(planner *p, int width, int height);

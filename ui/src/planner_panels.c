@@ -416,7 +416,7 @@ void planner_draw_panels(planner *p, int width, int height)
     selection_panel(p);
     prompts(p, width, height);
     project_panel(p);
-    planner_tile_panel(p, width, height); /* uitile: tile_panel.c */
+    planner_tile_panel(p, width, height); /* tile_panel.c */
     if (!p->browser.thumbs && p->ctx) {   /* the browser was opened after the document */
         ui_thumbnails_init(&p->thumbs, p->ctx);
         p->browser.thumbs = &p->thumbs;

@@ -253,7 +253,7 @@ static int apply(planner *p, const ui_action *a)
         char why[512];
         return ui_probe_expect(&p->project, a->text, why, sizeof why) ? fail(a, why) : 0;
     }
-    case UI_ACT_ELEVATION_WALL: /* uitile: tiles.h */
+    case UI_ACT_ELEVATION_WALL: /* tiles.h */
     case UI_ACT_TILE_SURFACE:
     case UI_ACT_TILE_PATTERN:
     case UI_ACT_TILE_GROUT:

@@ -98,7 +98,7 @@ typedef enum ui_action_kind {
     UI_ACT_OPEN,
     UI_ACT_SAVE_AS,
     UI_ACT_EXPECT_PROBE,   /* probe_props.h */
-    UI_ACT_ELEVATION_WALL, /* uitile: the tile panel and the elevation view (tiles.h) */
+    UI_ACT_ELEVATION_WALL, /* the tile panel and the elevation view (tiles.h) */
     UI_ACT_TILE_SURFACE,
     UI_ACT_TILE_PATTERN,
     UI_ACT_TILE_GROUT,
