@@ -200,7 +200,7 @@ static void check_repeats(importer *im, catdb_keymap *products, catdb_keymap *va
 }
 
 /* A big import (against the catalog's size) leaves the full-text index alone and rebuilds it
- * once at the end: FTS5 takes a row from a trigger about five times slower than in a rebuild.
+ * once at the end: FTS5 takes a row from a trigger several times slower than in a rebuild.
  * Nothing to do when the caller has deferred it already (the shipped data's sync). */
 static cat_db_result defer_index(sqlite3 *sql, const char *db_path, long records, int *deferred,
                                  char *msg, size_t msg_size)
@@ -217,7 +217,8 @@ static cat_db_result defer_index(sqlite3 *sql, const char *db_path, long records
         sqlite3_step(st) == SQLITE_ROW)
         existing = sqlite3_column_int64(st, 0);
     sqlite3_finalize(st);
-    /* Per row: about 50 us through the trigger, about 10 us per catalog row in a rebuild. */
+    /* A rebuild reads every catalog row, so it pays only when the import is large against
+     * what is there already. */
     if (records <= 500 || (long long)records * 4 <= existing)
         return CAT_DB_OK;
     r = catdb_fts_defer(sql, db_path, msg, msg_size);

@@ -1,10 +1,10 @@
 /* catdb_rank(product_fts, w1, .., w7): the search's ranking, an FTS5 auxiliary function.
  *
- * bm25 costs two to three microseconds per matching row in this index (a docsize lookup per
- * row, and a pass over every phrase's matches for its IDF), which is 5 ms and more for a word
- * in a few thousand products. This ranking reads only the current row's phrase instances,
- * which FTS5 already holds in memory: for each phrase and column, the column's weight times
- * tf / (tf + 0.5), summed and negated (lower is better, as with bm25); ties go to the shorter
+ * bm25 does real work for every matching row in this index (a docsize lookup per
+ * row, and a pass over every phrase's matches for its IDF), too slow for search as you type
+ * over a common word in a few thousand products. This ranking reads only the current row's phrase
+ * instances, which FTS5 already holds in memory: for each phrase and column, the column's weight
+ * times tf / (tf + 0.5), summed and negated (lower is better, as with bm25); ties go to the shorter
  * name, which stands in for bm25's length normalisation.
  * The FTS5 API (Fts5ExtensionApi, fts5_api) is declared in sqlite3.h. */
 #include "db_internal.h"

@@ -344,7 +344,7 @@ vec3 pick_depth_hit(vec3 p, vec3 r, out int room)
     // probe sees p) away from the surface the ray leaves: nearer, the stored surface is p's own.
     // Beyond, the object may meet itself (a model's spout its body), as the tracer's rays do.
     // Its centre is far from p, so the steps, uniform in t / (t + |p - c|), are nearly uniform
-    // in t and coarse near p: twice the own probe's (demo, print: 35.03 -> 35.14 dB).
+    // in t and coarse near p: so twice the own probe's steps.
     float texel = 1.5707963 * length(o_room) / float(textureSize(u_room_distance, 0).x);
     float t_start = min(texel, t_end);
     float t_room = search_depth(u_room_distance, o_room, r, t_start, t_end, 2 * u_depth_steps);
@@ -424,7 +424,7 @@ void main()
 #ifdef PER_VERTEX_REFLECTION
     vec3 d = v_reflect;
 #elif defined(BOX_OPAQUE_REFLECTION)
-    // The common case in a variant of its own (issue 8): llvmpipe runs every side of a
+    // The common case in a variant of its own: llvmpipe runs every side of a
     // uniform branch, so the "depth" search and the refraction below would cost every pixel.
     vec3 d = correct_box(v_world, reflect(-V, N), u_proxy_min, u_proxy_max, u_probe_centre);
 #else

@@ -63,10 +63,9 @@ void main()
         float sample_solid_angle = 1.0 / (float(u_samples) * max(pdf, 1e-8));
         // The level whose texels match the sample's share of the lobe, one finer: box mips
         // spread a bright source in squares wider than their texel, and GPU Gems 3's "+1"
-        // (coarser, against noise) made the lobe of a glossy tap before a window of radiance
-        // 20 several times too wide (stress-taps, print: 12.72 dB on reflective pixels at +1,
-        // 16.06 at 0, 17.70 at -1, 17.83 at -1.5; the demo 32.14, 32.33, 32.40, 32.40 dB;
-        // docs/accuracy.md, "Fifth round").
+        // (coarser, against noise) makes the lobe of a glossy tap before a window of radiance
+        // 20 several times too wide (assets/projects/stress-taps.json); one finer fixes it
+        // and costs the demo nothing (docs/accuracy.md, "Blur").
         float lod = max(0.5 * log2(sample_solid_angle / texel_solid_angle) - 1.0, 0.0);
         sum += min(textureLod(u_source, l, lod).rgb, vec3(u_clamp));
     }

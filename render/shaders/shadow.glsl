@@ -119,15 +119,15 @@ float shadow_visibility(int i, int type, vec3 light_pos, vec3 p, vec3 N, vec3 L)
     // Loops where a branch on the light's kind would be: llvmpipe computes both sides of an if
     // (a cube tap and a one-tile tap, two texture reads, for every tap), but it leaves a loop
     // as soon as no pixel of the block needs another turn, so each light runs only its own
-    // kind of tap, and none where the light does not reach (the caller's if). Issue 7.
+    // kind of tap, and none where the light does not reach (the caller's if).
     int taps = u_shadow_taps <= 1 ? 1 : u_shadow_taps;
     int cube = u_shadow_cube[i];
     // Adaptive taps: the two outermost taps of the disk first (137 degrees apart on it); where
     // both see the light, or both see none, the rest of the disk almost always agrees (no
     // penumbra reaches this sample), so the sample takes their answer; only where they disagree
     // does it take all its taps. Other samples of the pixel turn their disks differently, so a
-    // penumbra the two taps missed is still found by its neighbours. Issue 7: about half the
-    // taps of a print render; docs/benchmarks.md has the before and after images compared.
+    // penumbra the two taps missed is still found by its neighbours. Most of a print's pixels
+    // lie outside any penumbra, so this saves most of their taps (docs/benchmarks.md).
     int first = taps > 2 ? 2 : taps;
     float sum = 0.0;
     for (int k = 0; k < (cube == 1 ? first : 0); k++)

@@ -54,7 +54,7 @@ static unsigned all_lights(const rd_scene *s)
 /* The lights that can reach a bounding sphere (centre, radius): a spot light whose cone
  * misses the sphere adds exactly zero everywhere on it (lit.frag's spot_factor is 0 at and
  * beyond the outer cosine), so leaving it out changes no pixel. Point and directional lights
- * always stay: their attenuation never reaches zero (issue 8; RENDERING.md section 1). */
+ * always stay: their attenuation never reaches zero (RENDERING.md section 1). */
 static unsigned lights_reaching(const rd_scene *s, const float sphere[4])
 {
     unsigned mask = all_lights(s);
@@ -138,7 +138,7 @@ static int compare_items(const void *a, const void *b)
 
 /* Front to back, enclosing surfaces last: llvmpipe's early depth test then shades each
  * pixel about once, which is what keeps a frame near one full-screen pass. The order is by
- * the nearest point of each object's world box, not its centre (issue 8): a wall's tiles
+ * the nearest point of each object's world box, not its centre: a wall's tiles
  * and the grout surface behind them share a centre to the millimetre, and the tiles, a few
  * millimetres nearer the room, then mostly come first. The main view does not depend on it
  * (its depth prepass shades each pixel once); probe faces, drawn without one, do. */
@@ -416,8 +416,8 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
     int fast = !(slow && *slow && strcmp(slow, "0") != 0);
     /* Probe captures sample the diffuse textures without anisotropic filtering: llvmpipe
      * filters anisotropically by looping over the footprint, and a probe a centimetre from a
-     * wall or floor sees it at grazing angles nearly everywhere, where one 512 x 512 face took
-     * up to 3.7 s (designed demo, the mirror's probe). The capture is blurred or read through
+     * wall or floor sees it at grazing angles nearly everywhere, where one large face takes
+     * seconds. The capture is blurred or read through
      * a cube map of 90-degree faces, where the sharpness along a grazing wall is not seen. */
     if (pass->isotropic_textures) {
         if (!ctx->isotropic_sampler) {
@@ -431,7 +431,7 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
         glBindSampler(0, ctx->isotropic_sampler);
     }
     if (pass->depth_prepass && fast) {
-        /* Issue 8: a depth-only walk first, then the shaded walk with GL_LEQUAL and no depth
+        /* A depth-only walk first, then the shaded walk with GL_LEQUAL and no depth
          * writes, so llvmpipe's early depth test shades every pixel exactly once whatever the
          * order (layered tiles, grout and wall; fixtures in front of each other). The
          * prepass costs the vertices twice and a rasterisation without shading. */

@@ -3,11 +3,11 @@
  * A probe shows a lamp where its centre sees it, and a proxy puts it on the proxy: a pendant
  * hanging in the room lands on the ceiling behind it, a strip light beside a mirror on the
  * wall. Bright as they are (radiance several times a wall's), those misplaced lamps carry most
- * of a mirror's error against the tracer (docs/accuracy.md, eighth round). A lamp whose mesh is
- * one of primitives.h's unit shapes is intersected exactly instead: the probes of mirrors and
- * glass (every reader sharp, g = 1) are captured without it, and their lookups (lit.frag's
- * emitter_reflection) intersect the reflected ray with its shape and shade the hit as the
- * capture would have (RENDERING.md section 1, eq. 7). Blurred lookups keep the lamp in their
+ * of a mirror's error against the tracer (docs/accuracy.md, "Exact lamps"). A lamp
+ * whose mesh is one of primitives.h's unit shapes is intersected exactly instead: the probes of
+ * mirrors and glass (every reader sharp, g = 1) are captured without it, and their lookups
+ * (lit.frag's emitter_reflection) intersect the reflected ray with its shape and shade the hit as
+ * the capture would have (RENDERING.md section 1, eq. 7). Blurred lookups keep the lamp in their
  * probes, where the lobe spreads it anyway. */
 #include "emitters.h"
 #include "gl_funcs.h"

@@ -200,8 +200,8 @@ static rd_image_result write_atomically(const char *path, rd_oiio_write_desc des
 }
 
 /* The 8-bit writes' compression. Print-size PNGs (above 4 M pixels) take zlib level 1 instead
- * of libpng's default 6: the designed demo at 3840 x 2160 is written in 0.29 s instead of
- * 0.74 s, as 3.6 MB instead of 2.6 MB (issue 7, the print speed work; docs/benchmarks.md). */
+ * of libpng's default 6: a print's PNG is written in well under half the time for a file about
+ * a third larger, a trade a print pays gladly (docs/benchmarks.md). */
 static const char *rgba8_compression(const rd_image_format_info *fmt, size_t pixels)
 {
     if (fmt->rgba8_compression == NULL && strcmp(fmt->oiio_name, "png") == 0 &&

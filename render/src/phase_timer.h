@@ -1,4 +1,4 @@
-/* Where a render's time goes (issue 7, the print speed work): with TESSERA_PHASES=1 in the
+/* Where a render's time goes (to find what to speed up): with TESSERA_PHASES=1 in the
  * environment, the renderer waits for the GPU (glFinish) at the borders of its phases and adds
  * each phase's wall time to a named total; rd_render_tiled prints the totals to stderr. Without
  * the variable every call is a no-op and nothing waits. */

@@ -80,9 +80,9 @@ static rd_result prefilter_level(rd_context *ctx, unsigned source, int source_si
     glUniform1f(ctx->pf_u_source_size, (float)source_size);
     /* Twice the square of the lobe's width in texels (4 .. 24): a narrow lobe is a few texels
      * of this level, and the filtered lookups of the source already average those.
-     * A level's lobe spans two of its texels (rd_ref_level_exponent), so 8 samples: four times
-     * that (16) bought 0.05 dB of the demo's reflective PSNR at 640 x 360 for 1.3 s of a 4K
-     * print's prefilter (docs/accuracy.md, issue 7). */
+     * A level's lobe spans two of its texels (rd_ref_level_exponent), so 8 samples: more
+     * samples change the demo's reflective PSNR by a hair and cost a 4K print's prefilter
+     * seconds. */
     float half_width = sqrtf(2.0f * 0.6931472f / fmaxf(exponent, 1.0f));
     float texels = half_width / (1.5707963f / (float)size);
     int samples = (int)ceilf(2.0f * texels * texels);

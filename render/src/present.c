@@ -1,7 +1,7 @@
 /* Showing the last render in a window the caller owns (RD_BACKEND_ADOPT): the tone-mapped
  * image scaled into framebuffer 0, and reading that framebuffer back for screenshots. The
  * planner renders its 3D view below the window size when the frame budget asks for it
- * (issue 8, "speed for accuracy, live"); the blit's linear filter is the upscale. */
+ * (speed for accuracy, live); the blit's linear filter is the upscale. */
 #include "render/ui_texture.h"
 
 #include "gl_funcs.h"

@@ -170,8 +170,8 @@ rd_correction rd_effective_correction(const rd_scene *s, const rd_material *m)
                                                                         : RD_CORRECTION_BOX;
     /* Faint, blurred glazes keep a scene-wide "depth" (the print preset) too: their probe
      * leaves their own product out, and the room probe's search brings it back (a WC's seat
-     * reflects its cistern). Until the room probe they took the box, for speed; the seventh
-     * round of docs/accuracy.md measures both. */
+     * reflects its cistern). The box would be faster but misplaces exactly those
+     * reflections. */
     return c;
 }
 
@@ -283,7 +283,7 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
     float diameter_px = p->detail_size / fmaxf(d, 1e-3f) * pixels_per_tan * (float)supersample;
     float wanted = 0.5f * diameter_px;
     int n = next_pow2(wanted);
-    /* Hysteresis (issue 8): a live view moves the eye and adapts its render scale every
+    /* Hysteresis: a live view moves the eye and adapts its render scale every
      * frame, and a new size means a new, complete capture. A probe keeps its size until the
      * wanted texels leave (size / 3, 1.5 size], 1.5 times beyond the rounding's own
      * (size / 2, size]; a first capture (a still) takes the plain rounding. */
@@ -300,8 +300,7 @@ static int probe_resolution(const rd_scene *s, const rd_probe *p, const float ey
          * the unblurred capture and the first blurred level. */
         int gloss_cap = next_pow2(2.0f * RD_LOBE_TEXELS * 1.5707963f / half_width);
         /* A glaze's "depth" search reads the capture's distances unblurred, at the texels'
-         * own size: twice the texels place its hits closer (demo, print: 34.68 -> 35.03 dB;
-         * docs/accuracy.md, seventh round). */
+         * own size: twice the texels place its hits closer. */
         if (glaze)
             gloss_cap *= 2;
         if (n > gloss_cap)
@@ -328,8 +327,8 @@ rd_result rd_alloc_cube(unsigned *name, int size, int levels)
     glGenTextures(1, name);
     glBindTexture(GL_TEXTURE_CUBE_MAP, *name);
     /* One allocation for every face and level where GL 4.2's immutable storage exists: level
-     * by level, Mesa re-creates the texture as each image is specified, and a print probe's
-     * set-up (17 cubes of 512 texels with their mips, designed demo) took 2.2 s. */
+     * by level, Mesa re-creates the texture as each image is specified, which makes a print's
+     * probe set-up (many large cubes with their mips) take seconds. */
     if (rd_gl_has_tex_storage())
         rd_glTexStorage2D(GL_TEXTURE_CUBE_MAP, levels, GL_RGBA16F, size, size);
     else
@@ -439,7 +438,7 @@ static int faces_to_capture(const rd_scene *s, rd_probe *p, rd_probe_update u, i
     case RD_PROBE_ON_CHANGE:
         if (s->reflection.max_faces_per_frame <= 0)
             return s->change_counter > p->captured_stamp ? all : 0;
-        /* Within a frame budget (issue 8): a face is refreshed only when the scene changed
+        /* Within a frame budget: a face is refreshed only when the scene changed
          * after it was captured (the camera moving changes nothing), one face a frame and
          * probe, the faces taking turns, so a dragged fixture costs at most the budget. */
         for (int k = 0; k < 6; k++) {
@@ -665,7 +664,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     vec4 planes[6];
     memcpy(vp, view_proj, sizeof vp);
     glm_frustum_planes(vp, planes);
-    /* The frame budget for refreshing probes (issue 8: probe updates within a frame budget):
+    /* The frame budget for refreshing probes:
      * at most max_faces_per_frame faces re-captured a frame, the probes taking turns from a
      * start that moves every frame. A probe's first, complete capture is never held back. */
     int budget = s->reflection.max_faces_per_frame, spent = 0, depth_fresh = 0;

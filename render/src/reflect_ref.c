@@ -129,9 +129,9 @@ int rd_depth_search_steps(float g)
                                         : (int)steps;
 }
 
-/* Section 5: the blur chain's levels are matched to their resolution (docs/accuracy.md, the
- * taps): level k >= 1 of a chain of `levels` levels (a probe of 2^(levels - 1) texels) holds
- * the Phong lobe whose half-width sqrt(2 ln 2 / n) spans LOBE_TEXELS texels of that level (a
+/* Section 5: the blur chain's levels are matched to their resolution (docs/history.md,
+ * "Reflections"): level k >= 1 of a chain of `levels` levels (a probe of 2^(levels - 1) texels)
+ * holds the Phong lobe whose half-width sqrt(2 ln 2 / n) spans LOBE_TEXELS texels of that level (a
  * face spans pi/2), n clamped to [1, n(1) = 8192]; level 0 is the capture (the mirror). A
  * lobe narrower than its level's texels is widened by the bilinear lookup, which let a bright
  * window bleed far beyond the lobe of a small probe's coarse levels. */

@@ -79,7 +79,7 @@ enum {
     RD_LIT_SH9 = 16,
     RD_LIT_SHADOWS = 32,      /* shadow.glsl: shadow maps of every light */
     RD_LIT_BOX_OPAQUE = 64,   /* reflecting with the box correction only, opaque, no surface
-                                 highlights: llvmpipe runs untaken uniform branches (issue 8) */
+                                 highlights: llvmpipe runs untaken uniform branches */
     RD_LIT_DEPTH_ONLY = 128,  /* alone: lit.vert with depth_only.frag (the depth prepass) */
     RD_LIT_NO_SPECULAR = 256, /* probe captures that leave highlights out: no specular code */
     RD_LIT_PLANAR = 512,      /* a flat mirror's lookup in its planar capture (probe_planar.c) */

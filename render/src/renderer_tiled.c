@@ -11,8 +11,8 @@
 /* Output pixels per side of the largest tile: the context's limit over the supersampling, and
  * at most 8192 samples a side, so that a tile's radiance and depth targets stay under 1 GB
  * (8192^2 x (8 + 4) bytes) whatever the image's size. A tile repeats the whole draw list and
- * its fixed costs: 3840 x 2160 at 2 x 2 in one tile instead of four (two of them strips 112
- * pixels high) took 28.1 s instead of 31.6 s (issue 7, docs/benchmarks.md). */
+ * its fixed costs, so the fewer and larger the tiles the faster the print (a 4K print at 2 x 2
+ * fits in one tile; docs/benchmarks.md). */
 static int tile_side(const rd_context *ctx, int supersample, int tile_max)
 {
     int s = supersample > 1 ? supersample : 1;

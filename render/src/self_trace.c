@@ -5,8 +5,8 @@
  * ray meets the tap's own lever and cap, a soap basket's rim the wall behind its far side, a
  * bath's inner side no bath. What a probe does hold, it holds as seen from its centre: the
  * basin beside a tap lands where the tap's ray would pass it (a silhouette the "depth" search
- * cannot tell from a hit). On the designed demo these carry most of the reflective error at
- * print (docs/accuracy.md, "Ninth round").
+ * cannot tell from a hit). On the designed demo these carried most of the reflective error at
+ * print (docs/accuracy.md, "Self-reflections").
  *
  * So each probe's readers trace their surroundings: the probe's own parts and the fixtures
  * nearest them (within a fifth of the room's diagonal, at most RD_MAX_SELF_PARTS objects; never
@@ -34,10 +34,10 @@
 #define LEAF_SIZE 4
 #define MAX_SELF_TRIANGLES (1 << 20)
 /* How far around its own parts a probe's trace takes neighbours, as a fraction of the room's
- * (the box proxy's) diagonal, so that a scene drawn at another scale traces the same: 0.97 m
- * in the designed demo. There, print, 640 x 360, one lobe direction a sample (docs/accuracy.md,
- * "Ninth round"): the own parts alone 29.92 dB, with the neighbours within 0.3 m 31.94 dB,
- * within 1 m (nearest first) 32.18 dB. */
+ * (the box proxy's) diagonal, so that a scene drawn at another scale traces the same: about a
+ * metre in the designed demo. The own parts alone leave the neighbours' silhouettes wrong;
+ * neighbours within about a metre (nearest first) find nearly all of what matters, and a
+ * wider reach costs triangles for little (docs/accuracy.md, "Self-reflections"). */
 #define RD_SELF_NEAR_FRACTION 0.2f
 
 typedef struct tri_src {

@@ -1,4 +1,4 @@
-/* Commands with undo and redo (issue 6 item 6): random sequences of edits, valid and invalid,
+/* Commands with undo and redo: random sequences of edits, valid and invalid,
  * on a project with every kind of element; undoing all of them must give back the exact
  * original document, redoing all of them the exact edited one. Plus the history's rules:
  * redo cleared by a new command, the step limit, groups, labels. */

@@ -1,4 +1,4 @@
-/* The `probe` edit word and APP_CMD_SET_PROBE (docs/editing.md; issue 8 item 4): a material's
+/* The `probe` edit word and APP_CMD_SET_PROBE (docs/editing.md): a material's
  * probe policy set, undone and redone exactly, bad values refused with the line and the
  * problem named (and nothing changed), two objects sharing the material both following (as
  * `reflect`), and the policy saved and read back. */

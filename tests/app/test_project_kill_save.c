@@ -1,4 +1,4 @@
-/* kill -9 during save (issue 6 part 5): a child process saves a large project over and over,
+/* kill -9 during save: a child process saves a large project over and over,
  * the parent kills it with SIGKILL after a random delay, and then PATH must read back as a
  * complete project (the old one or a new one, all objects present) and PATH.bak, when there,
  * too (every 4th time, to keep the test short). Repeated many times with delays spread over the

@@ -1,4 +1,4 @@
-/* Project file version 2 (issue 6): the floor plan, openings, pre-walls, niches, slope,
+/* Project file version 2: the floor plan, openings, pre-walls, niches, slope,
  * tilings and product references read, written and read back exactly; version 1 files
  * migrate to a 4-corner plan; malformed plans give an error with the JSON path; saving keeps
  * the previous file as PATH.bak. */

@@ -1,5 +1,5 @@
-/* Tile layout (app/design/tile_layout.h): hand-computed whole/cut counts and areas for the cases of
- * issue 6, and the area balance "tiles + grout = surface - openings - covered areas" for every
+/* Tile layout (app/design/tile_layout.h): hand-computed whole/cut counts and areas for worked
+ * cases, and the area balance "tiles + grout = surface - openings - covered areas" for every
  * pattern. The expected numbers are derived in the comments, not taken from the code. */
 #include "test_util.h"
 
@@ -47,7 +47,7 @@ static void check_balance(const app_tile_layout *l, double expected_region, cons
     double cells = l->unassigned_grout_mm2;
     for (int i = 0; i < l->tile_count; i++)
         cells += l->tiles[i].cell_area_mm2;
-    double tol = 1e-3 * expected_region; /* 0.1 % (issue 6) */
+    double tol = 1e-3 * expected_region; /* 0.1 % */
     if (fabs(cells - expected_region) > tol || fabs(l->region_area_mm2 - expected_region) > tol ||
         fabs(pieces_area(l) - l->tiled_area_mm2) > 1e-6 * expected_region) {
         fprintf(stderr, "%s: region %.1f expected %.1f, tiles+grout %.1f, pieces %.1f tiled %.1f\n",
@@ -59,7 +59,7 @@ static void check_balance(const app_tile_layout *l, double expected_region, cons
     CHECK(fabs(l->tiled_area_mm2 + l->grout_area_mm2 - l->region_area_mm2) < 1e-6);
 }
 
-/* Issue 6: a 2000 x 2500 wall, 300 x 600 tiles (nominal: work 597 x 297 + 3 mm grout) laid
+/* A 2000 x 2500 wall, 300 x 600 tiles (nominal: work 597 x 297 + 3 mm grout) laid
  * landscape in half offset from the bottom-left corner, with a window 600 wide x 900 high at
  * s 700..1300, sill 1000.
  *

@@ -1,4 +1,4 @@
-/* Absurd counts (issue 5 item 4): files that are small but claim huge or impossible numbers are
+/* Absurd counts: files that are small but claim huge or impossible numbers are
  * refused by cat_model_load, each with its own message, before anything of that size is
  * allocated. (Hostile URIs, data URIs over the limit, accessors and indices out of range,
  * object counts and nesting are in test_model_files.c.) */

@@ -1,5 +1,5 @@
 #!/bin/sh
-# tessera edit with the `probe` word (docs/editing.md; issue 8 item 4): a material's probe
+# tessera edit with the `probe` word (docs/editing.md): a material's probe
 # policy set, a step undone, the result saved and read back by `tessera check`; a bad value is
 # named with its line and nothing is saved (exit 2).
 # usage: edit_probe.sh TESSERA DATA_DIR OUT_DIR

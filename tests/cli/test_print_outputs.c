@@ -1,4 +1,4 @@
-/* Print outputs through the command line (issue 7), each on a small image: DPI written into PNG,
+/* Print outputs through the command line, each on a small image: DPI written into PNG,
  * JPEG and TIFF and read back; a render in forced small tiles equals the untiled one within
  * the golden tolerance (5/255 on at most 0.1 % of the pixels); --all-views writes every stored
  * camera; a panorama's left and right edges join (no seam over the image's own column-to-column

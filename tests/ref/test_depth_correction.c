@@ -1,17 +1,16 @@
-/* The reflection corrections against the ground truth (RENDERING.md sections 4, 10; issue 4):
+/* The reflection corrections against the ground truth (RENDERING.md sections 4, 10):
  * the GPU renders a scene with every reflective material set to one correction, the tracer
  * (render/ref) traces it once, and the PSNR over the reflective pixels must rank the methods
  * as docs/accuracy.md reports them:
  *
  * - assets/projects/stress-mirror.json (a large flat mirror close to a wall, a lamp and a shelf
- *   off the walls): "box" beats "none" by at least 6 dB (issue 4's bar) and "depth" (distance
- *   impostors, reflect.glsl) beats box by at least 5 dB (measured at 160 x 90: none 11.8, box
- *   22.5, depth 27.5; before the lamp was intersected exactly, emitters.c: none 8.5, box 12.4,
- *   depth 19.1, the box placing the lamp on the ceiling).
+ *   off the walls): "box" beats "none" by at least 6 dB and "depth" (distance impostors,
+ *   reflect.glsl) beats box by at least 5 dB, margins the measured gaps clear with room to
+ *   spare (docs/accuracy.md, "Corrections").
  * - assets/projects/stress-taps.json (glossy chrome before a window of radiance 20): box beats
- *   none and depth beats box. Before the blur levels were matched to their resolution
- *   (prefilter.h) the window bled through the coarse levels of the small tap probes and box
- *   lost to none there (docs/accuracy.md).
+ *   none and depth beats box. This holds only while the blur levels match their resolution
+ *   (prefilter.h): otherwise the window bleeds through the coarse levels of the small tap
+ *   probes and box loses to none.
  *
  * GL through TESSERA_GL (EGL unless it says osmesa); a few seconds on two cores. */
 #include "../common/check.h"

@@ -1,4 +1,4 @@
-/* Planar mirrors (render/src/probe_planar.c; issue 4) against the ground truth: a flat mirror's
+/* Planar mirrors (render/src/probe_planar.c) against the ground truth: a flat mirror's
  * probe captured from the eye's mirror image, clipped at the mirror's plane, shows what the
  * tracer's reflected rays see. The GPU renders with rd_reflection_defaults.planar_mirrors on and
  * off, the tracer (render/ref) traces the same view, and the PSNR over the reflective pixels must
@@ -7,10 +7,9 @@
  * - assets/projects/stress-mirror.json (a 1.4 x 2.2 m mirror 1.3 m from the opposite wall, a
  *   pendant lamp and a shelf off the walls, which no proxy holds): planar beats the best cube
  *   lookup ("depth", distance impostors) as it reads the lamp from its probe by at least 6 dB,
- *   and still beats it by 1 dB when the lookup intersects the lamp exactly (emitters.c; 160 x
- *   90: planar 39.06, depth 36.94 dB, with the lamp in the probe 29.97); it stays within
- *   3 dB of that when the camera turns so that the image's edge cuts the mirror (the capture
- *   then covers only the part in view).
+ *   and still beats it by 1 dB when the lookup intersects the lamp exactly (emitters.c);
+ *   it stays within 3 dB of that when the camera turns so that the image's edge cuts the
+ *   mirror (the capture then covers only the part in view).
  * - the camera turned away from the mirror: nothing is captured for it, the render is the one
  *   planar mirrors off gives.
  * - assets/projects/demo-bathroom.json: planar on beats off.
@@ -48,7 +47,8 @@ static int open_setup(const char *path, float yaw_deg, setup *out)
     }
     CHECK(app_view_from_camera(&out->project, NULL, W, H, &out->view, err, sizeof err) == APP_OK);
     /* 4 x 4 samples a pixel in both renderers: at one sample a pixel the grout lines and the
-     * lamp's rim in the mirror alias differently in the two (24 dB here, 39 dB supersampled). */
+     * lamp's rim in the mirror alias differently in the two, and the aliasing, not the
+     * mirror, would dominate the error. */
     out->view.supersample = 4;
     /* Turn the camera about the vertical through its eye. */
     float *e = out->view.eye, *t = out->view.target, c = cosf(yaw_deg * 0.0174533f),

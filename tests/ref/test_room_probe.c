@@ -1,4 +1,4 @@
-/* The room probe (render/src/probe.c, lit.frag's pick_depth_hit; issue 4) against the ground
+/* The room probe (render/src/probe.c, lit.frag's pick_depth_hit) against the ground
  * truth. Under the "depth" correction an object's reflected ray is searched in its own probe
  * and in the room probe, a capture of everything from the room's centre; the room's hit is
  * taken where the own probe's centre cannot see what the ray meets (the basin mixer's rays
@@ -33,7 +33,8 @@
 enum { W = 320, H = 180 };
 
 /* The basin mixer of demo-bathroom.json in a W x H image of its "door" camera: the
- * window docs/accuracy.md's worst blocks name at 640 x 360 (x 120-160, y 200-240), halved. */
+ * window where the reflective error concentrates at 640 x 360 (x 120-160, y 200-240), halved
+ * (`tessera compare --worst N`). */
 enum { MIXER_X0 = 60, MIXER_X1 = 80, MIXER_Y0 = 100, MIXER_Y1 = 120 };
 
 /* off: 0 the room probe on, 1 off, both without self-reflections; -1 the preset as it is. */

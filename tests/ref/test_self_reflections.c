@@ -1,12 +1,11 @@
-/* Self-reflections (render/src/self_trace.c, self_trace.glsl; issue 4) against the ground
+/* Self-reflections (render/src/self_trace.c, self_trace.glsl) against the ground
  * truth. A probe leaves its own product out and holds its neighbours as its centre sees them;
  * under the print preset each fixture's lookups trace its own parts and the fixtures beside
  * it, which its probe then leaves out.
  *
  * - assets/projects/stress-taps.json (chrome taps on a ceramic counter before a bright window:
  *   a spout reflects its body and the counter), print preset, 160 x 90 at 4 x 4: on beats off
- *   by at least 8 dB over the reflective pixels (640 x 360: 34.92 against 20.80 dB), and
- *   reaches 28 dB.
+ *   by at least 8 dB over the reflective pixels, and reaches 28 dB.
  * - only what the scene needs: each of the five taps' probes is traced with the print preset;
  *   none when it is turned off, none under the interactive preset.
  * - a moved neighbour is traced where it now is: the counter moved 10 cm down after a first

@@ -1,4 +1,4 @@
-/* Adaptive supersampling (issue 7, render/src/renderer_adaptive.c) on a real context: a room
+/* Adaptive supersampling (render/src/renderer_adaptive.c) on a real context: a room
  * with a block that casts a soft shadow and a chrome sphere that reflects them, rendered with
  * 2 x 2 samples everywhere and with the samples taken only where the once-per-pixel image
  * steps:

@@ -1,4 +1,4 @@
-/* The planner's frame work (issue 8) on a real context:
+/* The planner's frame work on a real context:
  *  - probes refreshed on change within a face budget: an orbiting camera captures nothing, a
  *    moved object makes the probes re-capture at most the budget a frame until they are fresh,
  *    the reflection then shows the object where it now is, exactly as a scene built with it

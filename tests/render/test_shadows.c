@@ -1,4 +1,4 @@
-/* Shadows (issue 7, docs/rendering.md "Shadows"): a 0.5 m box on a floor under a point light at
+/* Shadows (docs/rendering.md "Shadows"): a 0.5 m box on a floor under a point light at
  * (1, 0, 1.5) casts its shadow where the geometry says -- the ray from the light over the box's
  * far top edge (-0.25, 0, 0.5) meets the floor at x = -0.875, so the floor at (-0.55, 0) is in
  * shadow and (-0.55, 0.8) and (0.6, 0) are not; shadows change nothing outside it; the
@@ -197,7 +197,7 @@ static void check_geometry(const float *off, const float *on, const char *what, 
 }
 
 /* The soft shadow's penumbra survives the adaptive taps (shadow.glsl: two outer taps first,
- * the rest only where they disagree; issue 7): along the floor row through the umbra, the
+ * the rest only where they disagree): along the floor row through the umbra, the
  * GPU's soft render has about as many part-lit pixels as the reference's, where every sample
  * takes all its taps. */
 static int penumbra_pixels(const float *off, const float *on, const scenario *sc)

@@ -1,5 +1,5 @@
 #!/bin/sh
-# A fixture dragged in the 3D view under Xvfb (issue 8 item 2): the basin is grabbed and moved
+# A fixture dragged in the 3D view under Xvfb: the basin is grabbed and moved
 # along its wall over 20 frames (moved live in the renderer), let go (one move edit, snapped to
 # the wall), saved; undone, saved again; then wall 1 dragged 300 mm outward in the plan and
 # undone. The app must exit 0, the view must change with the

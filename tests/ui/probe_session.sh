@@ -1,5 +1,5 @@
 #!/bin/sh
-# The Selection panel's probe policy and the panel layout under Xvfb (issue 8 item 4; uiprops):
+# The Selection panel's probe policy and the panel layout under Xvfb:
 # the demo at 800 x 450, a basin placed (the Selection panel shows it), its material's
 # probe policy and reflection changed through edit lines (the lines the panel's combos send,
 # tests/ui/test_panel_layout.c), undone and redone (expect-probe after each step), saved;

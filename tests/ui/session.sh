@@ -1,5 +1,5 @@
 #!/bin/sh
-# A planner session under Xvfb (issue 8): open the demo, look around, search "basin" in the
+# A planner session under Xvfb: open the demo, look around, search "basin" in the
 # catalog, place one, drag it against another wall, undo, redo, tile a wall and change its
 # pattern, save; then wall 1's elevation, its pattern, grout and start through the tile
 # actions, save again; then check the saved project. The app must exit 0 (a GL error fails the
@@ -83,7 +83,7 @@ done
 "$check" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/plan.png" "$out/placed.png" \
     "$out/dragged.png" "$out/tiled.png" "$out/draft.png"
 "$check" "$out/present.png" "$out/print-shot.png"
-# The tile actions (uitile): wall 1's elevation drawn, its new pattern, grout and start saved.
+# The tile actions: wall 1's elevation drawn, its new pattern, grout and start saved.
 "$check" "$out/tiled.png" "$out/elevation.png"
 grep -q '"herringbone"' "$out/saved-tiles.json" || { echo "FAIL: herringbone not saved"; exit 1; }
 grep -q '"origin":.\[300, 200\]' "$out/saved-tiles.json" || {

@@ -1,6 +1,6 @@
 #!/bin/sh
-# The catalog's drag and drop, the live quantities panel and the file panel under Xvfb (issue 8
-# items 3-5): search "basin", drag the first hit into the plan and let go, check the object
+# The catalog's drag and drop, the live quantities panel and the file panel under Xvfb:
+# search "basin", drag the first hit into the plan and let go, check the object
 # count and that the quantities panel's total is plausible, save as, start a new project (an
 # empty room), open the saved file again (its objects are back), and exit 0. A second run opens
 # a broken file: it must fail, with a message that names the file and the problem.

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The share export in a browser (issue 8): `tessera share` writes a folder; headless Chromium
+# The share export in a browser: `tessera share` writes a folder; headless Chromium
 # (Debian's chromium) opens its index.html from the file system with every network request
 # refused, the panorama viewer reports it is ready, and the screenshot shows a page with
 # pictures, not a blank one.  usage: share_browser.sh TESSERA PROJECT OUTDIR SCREENSHOT_CHECK

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The tile panel and the elevation view under Xvfb (issue 8 items 2 and 4): open the demo,
+# The tile panel and the elevation view under Xvfb: open the demo,
 # show wall 1's elevation, change its pattern, grout and start point through the tile actions
 # (the same edit lines the panel sends), click the elevation to move the start, undo and redo
 # that click, give wall 2 a band and a border row of a tile picked in the catalog browser,

@@ -1,4 +1,4 @@
-/* The catalog browser panel (issue 8 item 3): search as you type over the catalog's full-text
+/* The catalog browser panel: search as you type over the catalog's full-text
  * index, category and width filters, a product's details with its variants and price. The
  * search itself is the catalog's (cat_search); this file only keeps the panel's state. */
 #ifndef UI_CATALOG_BROWSER_H

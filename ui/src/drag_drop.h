@@ -1,4 +1,4 @@
-/* Dragging a product from the catalog browser into the plan or the 3D view (issue 8 item 3):
+/* Dragging a product from the catalog browser into the plan or the 3D view:
  * press on a hit, drag it out of the panel, let go over a view; it is placed there as one undo
  * step. The geometry (the floor point under the pointer) is pure and tested without a window. */
 #ifndef UI_DRAG_DROP_H

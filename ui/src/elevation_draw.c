@@ -1,4 +1,4 @@
-/* The elevation view (issue 8 item 2, "wall elevation for tiling"): the tile panel's surface
+/* The elevation view (wall elevation for tiling): the tile panel's surface
  * unfolded and seen from the room, drawn with Dear ImGui's background list as plan_draw.c
  * draws the plan: the exact tile layout of app_room_tile_layouts (the one the print set's
  * elevations and the quantities count: print_elevation.c), whole tiles in the tile's colour,

@@ -1,4 +1,4 @@
-/* The elevation view's geometry (issue 8 item 2: "wall elevation for tiling"): a room surface
+/* The elevation view's geometry (wall elevation for tiling): a room surface
  * unfolded flat and seen from the room, as the print set's elevations show it
  * (app/src/output/print_elevation.c): a wall seen from inside has its s coordinate growing to the
  * left. Pure math over app's surface frames, layouts and fixtures, tested without a window

@@ -1,4 +1,4 @@
-/* The placement findings shown live in the 3D view as well as on the plan (issue 8 item 2):
+/* The placement findings shown live in the 3D view as well as on the plan:
  * each finding's plan point, at the height of the fixture it is about (else 1 m), projected
  * with the view's camera and marked with a ring and its kind in the plan's colours (red for
  * an error, orange for a warning); the full message is in the Edit panel's list. */

@@ -1,4 +1,4 @@
-/* Dragging a placed fixture in the 3D view (issue 8 item 2): press on it, move the pointer, let
+/* Dragging a placed fixture in the 3D view: press on it, move the pointer, let
  * go. While the button is held the fixture's renderer objects are moved in place (no scene
  * rebuild: only the probes that see it are captured again, within the frame's face budget),
  * so the drag runs at the view's frame rate; on release one `move` edit (snapped to the

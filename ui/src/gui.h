@@ -25,7 +25,7 @@ int ui_gui_wants_keyboard(void);
 
 /* A panel at a fixed place the first time it is shown. Always pair with ui_gui_end. */
 int ui_gui_begin(const char *title, float x, float y, float width, float height);
-/* uiprops: a panel placed by the layout (panel_layout.h): place = 1 moves and sizes it to the
+/* A panel placed by the layout (panel_layout.h): place = 1 moves and sizes it to the
  * rectangle now (the window's size changed), else only the first time; collapsed 0/1 sets its
  * collapsed state with it, -1 leaves it to the user. */
 int ui_gui_begin_placed(const char *title, float x, float y, float width, float height, int place,
@@ -65,7 +65,7 @@ int ui_gui_input_double_enter(const char *label, double *value);
 void ui_gui_plot_lines(const char *label, const float *values, int count, float lo, float hi,
                        float width, float height);
 
-/* Images, drag sources and the pointer (uicat: thumbnails and drag and drop, issue 8 item 3). */
+/* Images, drag sources and the pointer (thumbnails and drag and drop). */
 /* An image of a GL texture (render/ui_texture.h) at width x height pixels. */
 void ui_gui_image(unsigned texture, float width, float height);
 /* 1 when the last widget was pressed and the pointer has moved past the drag threshold. */

@@ -1,4 +1,4 @@
-/* Orbit and walk-through navigation (issue 8, item 2). See ui/navigation.h. */
+/* Orbit and walk-through navigation. See ui/navigation.h. */
 #include "ui/navigation.h"
 
 #include <math.h>

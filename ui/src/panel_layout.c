@@ -55,7 +55,7 @@ void ui_layout_compute(int width, int height, int has_selection, ui_layout *out)
     out->edit =
         (ui_rect){(centre_l + centre_r) / 2 - edit_w / 2, h - MARGIN - edit_h, edit_w, edit_h};
     out->edit_narrow = edit_w < 380.0f;
-    /* Tiles: beside the View panel (uitile's tile_panel.c places it at x 280, 280 wide). */
+    /* Tiles: beside the View panel (tile_panel.c places it at x 280, 280 wide). */
     out->tiles = (ui_rect){centre_l, MARGIN, clampf(centre_r - centre_l, 60.0f, 280.0f),
                            out->edit.y - GAP - MARGIN};
 }

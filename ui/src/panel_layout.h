@@ -1,4 +1,4 @@
-/* Where the planner's panels go, from the window's size (issue 8; uiprops): a left column
+/* Where the planner's panels go, from the window's size: a left column
  * (View, Selection, Project), a right column (the frame-time overlay, Catalog, Quantities and
  * price), the Edit panel at the bottom between them and the Tiles panel above it. Below
  * UI_LAYOUT_TALL pixels of height the Project and Quantities panels start collapsed to their

@@ -1,4 +1,4 @@
-/* Drawing the plan view (issue 8 item 2): walls with their thickness, openings with door
+/* Drawing the plan view: walls with their thickness, openings with door
  * swings, pre-walls, fixtures with their free areas, findings, wall lengths. */
 #ifndef UI_PLAN_DRAW_H
 #define UI_PLAN_DRAW_H

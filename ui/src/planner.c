@@ -1,5 +1,5 @@
 /* The planner window: GLFW makes the window and its OpenGL context, the renderer adopts that
- * context, Dear ImGui draws the panels on top of the 3D view (issue 8). */
+ * context, Dear ImGui draws the panels on top of the 3D view. */
 #include "planner.h"
 
 #include "app/project/commands.h"

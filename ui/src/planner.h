@@ -99,17 +99,17 @@ typedef struct planner {
     double mouse_x, mouse_y;
     int dragging;
 
-    /* Drag and drop, thumbnails, quantities, the file panel (uicat: issue 8 items 3-5). */
+    /* Drag and drop, thumbnails, quantities, the file panel. */
     ui_drag_drop drop;
     ui_thumbnails thumbs;
     ui_quantities_view quantities;
     char file_path[1024]; /* the file panel's path field */
     int file_pending;     /* UI_FILE_*: waits for the unsaved-changes answer */
 
-    /* The tile panel and the elevation view (uitile, tiles.h), made on first use. */
+    /* The tile panel and the elevation view (tiles.h), made on first use. */
     struct ui_tiles *tiles;
 
-    /* uiprops: this frame's panel rectangles from the window's size (panel_layout.h), and
+    /* This frame's panel rectangles from the window's size (panel_layout.h), and
      * where each panel was last placed (a panel is moved back when its rectangle changes). */
     ui_layout layout, placed;
 
@@ -204,7 +204,7 @@ void planner_fixture_drag_pointer(planner *p, double sx, double sy);
 /* Drops the drag without touching the scene (it is being rebuilt or released). */
 void planner_fixture_drag_forget(planner *p);
 
-/* tile_panel.c, elevation_draw.c, tile_actions.c (uitile, tiles.h): the tile panel, the
+/* tile_panel.c, elevation_draw.c, tile_actions.c (tiles.h): the tile panel, the
  * elevation view's frame, the tile script actions, and freeing their state. */
 void planner_tile_panel(planner *p, int width, int height);
 void planner_elevation_frame(planner *p, int width, int height);

@@ -1,4 +1,4 @@
-/* The planner's panels: the frame-time overlay (issue 8 item 6: speed for accuracy, live), the
+/* The planner's panels: the frame-time overlay (speed for accuracy, live), the
  * view panel (quality, navigation mode, stored viewpoints), the project summary and the
  * selection's properties. Where they go comes from the window's size (panel_layout.h). */
 #include "planner.h"
@@ -84,7 +84,7 @@ static void view_panel(planner *p)
     ui_gui_end();
 }
 
-/* The project and its file: new, open, save, save as (issue 8 item 5). Open and save as take
+/* The project and its file: new, open, save, save as. Open and save as take
  * the path typed into the field; new and open ask first when there are unsaved changes. */
 static void file_request(planner *p, int what)
 {
@@ -244,7 +244,7 @@ static void material_fields(planner *p, int mi)
  * for power users its material's reflection and probe policy. Each field commits one edit
  * line when the user presses Enter, lets go of a slider or picks from a combo. */
 
-/* The selected product's finish variants from the catalog (issue 8 item 4), one `variant`
+/* The selected product's finish variants from the catalog, one `variant`
  * edit (with its render material, one undo step) when another is picked. The product is read
  * once per selection. Returns 1 when the document changed. */
 static int variant_combo(planner *p, const app_object *o)
@@ -416,7 +416,7 @@ void planner_draw_panels(planner *p, int width, int height)
     selection_panel(p);
     prompts(p, width, height);
     project_panel(p);
-    planner_tile_panel(p, width, height); /* uitile: tile_panel.c */
+    planner_tile_panel(p, width, height); /* tile_panel.c */
     if (!p->browser.thumbs && p->ctx) {   /* the browser was opened after the document */
         ui_thumbnails_init(&p->thumbs, p->ctx);
         p->browser.thumbs = &p->thumbs;
@@ -431,8 +431,8 @@ void planner_draw_panels(planner *p, int width, int height)
                        p->layout.quantities_collapsed);
     frame_overlay(p);
     planner_drag_drop_frame(p);
-    /* One thumbnail a frame (30-100 ms on llvmpipe), rendered off screen; then the window is
-     * the target again. */
+    /* One thumbnail a frame (each costs a frame's worth of llvmpipe time), rendered off screen;
+     * then the window is the target again. */
     if (ui_thumbnails_update(&p->thumbs, p->browser.db, 1) > 0)
         rd_bind_window(p->ctx, width, height);
 }

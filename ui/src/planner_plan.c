@@ -1,4 +1,4 @@
-/* The 2D plan view (issue 8 item 2): drag corners to reshape the room, drag fixtures (they
+/* The 2D plan view: drag corners to reshape the room, drag fixtures (they
  * snap to walls when released near one), select a wall and type its exact length, pan with the
  * right button, zoom with the wheel. Every change is an edit line through app's commands. */
 #include "planner.h"

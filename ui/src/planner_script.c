@@ -90,7 +90,7 @@ static int apply(planner *p, const ui_action *a)
         return 0;
     case UI_ACT_ORBIT:
         p->mode = UI_MODE_ORBIT;
-        p->dragging = 1; /* logged as a drag: the measured state of issue 8 */
+        p->dragging = 1; /* logged as a drag, the state the frame-time benches measure */
         ui_orbit_drag(&p->orbit, a->a * share, a->b * share);
         return 0;
     case UI_ACT_ZOOM:
@@ -249,11 +249,11 @@ static int apply(planner *p, const ui_action *a)
         return planner_file_open(p, a->text) ? fail(a, p->status) : 0;
     case UI_ACT_SAVE_AS:
         return planner_save(p, a->text) ? fail(a, p->status) : 0;
-    case UI_ACT_EXPECT_PROBE: { /* uiprops: probe_props.h */
+    case UI_ACT_EXPECT_PROBE: { /* probe_props.h */
         char why[512];
         return ui_probe_expect(&p->project, a->text, why, sizeof why) ? fail(a, why) : 0;
     }
-    case UI_ACT_ELEVATION_WALL: /* uitile: tiles.h */
+    case UI_ACT_ELEVATION_WALL: /* tiles.h */
     case UI_ACT_TILE_SURFACE:
     case UI_ACT_TILE_PATTERN:
     case UI_ACT_TILE_GROUT:

@@ -1,4 +1,4 @@
-/* Presentation mode for a customer at the showroom table (issue 8 item 7): the UI hidden but
+/* Presentation mode for a customer at the showroom table: the UI hidden but
  * for a caption, smooth flights between stored viewpoints, an automatic tour, a turntable, and
  * one key for a print-quality screenshot. */
 #define _POSIX_C_SOURCE 200809L /* mkdtemp */

@@ -1,4 +1,4 @@
-/* The Selection panel's probe policy fields (issue 8 item 4, for power users; uiprops): the
+/* The Selection panel's probe policy fields (for power users): the
  * choices the combos offer and the `probe` edit line each change sends (docs/editing.md), so
  * every change is one command with undo. Pure: tests/ui/test_probe_props.c runs the lines. */
 #ifndef UI_PROBE_PROPS_H

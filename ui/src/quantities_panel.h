@@ -1,4 +1,4 @@
-/* The live quantities and price panel (issue 8 item 5): per tile product the laid area, whole
+/* The live quantities and price panel: per tile product the laid area, whole
  * and cut tiles, boxes to order with the surplus and price; every placed product with its price;
  * net, VAT and the total. The numbers are app's (app/design/quantities.h, the same as `tessera
  * quantities`); this file keeps them up to date with the document and draws them. */

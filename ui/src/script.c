@@ -136,7 +136,7 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
         return 0;
     }
     if (a->kind == UI_ACT_VIEW && !strcmp(a->text, "elevation")) {
-        /* uitile: the elevation view */
+        /* the elevation view */
     } else if ((a->kind == UI_ACT_VIEW || a->kind == UI_ACT_DROP_SELECTED ||
                 a->kind == UI_ACT_DRAG_SELECTED) &&
                strcmp(a->text, "3d") && strcmp(a->text, "plan")) {

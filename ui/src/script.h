@@ -91,14 +91,14 @@ typedef enum ui_action_kind {
     UI_ACT_EXPECT_ADDED,
     UI_ACT_TILE_SELECTED,
     UI_ACT_SHARE,
-    UI_ACT_DROP_SELECTED, /* uicat: drag and drop, quantities, files */
+    UI_ACT_DROP_SELECTED, /* drag and drop, quantities, files */
     UI_ACT_DRAG_SELECTED,
     UI_ACT_EXPECT_TOTAL,
     UI_ACT_NEW,
     UI_ACT_OPEN,
     UI_ACT_SAVE_AS,
-    UI_ACT_EXPECT_PROBE,   /* uiprops: probe_props.h */
-    UI_ACT_ELEVATION_WALL, /* uitile: the tile panel and the elevation view (tiles.h) */
+    UI_ACT_EXPECT_PROBE,   /* probe_props.h */
+    UI_ACT_ELEVATION_WALL, /* the tile panel and the elevation view (tiles.h) */
     UI_ACT_TILE_SURFACE,
     UI_ACT_TILE_PATTERN,
     UI_ACT_TILE_GROUT,

@@ -1,4 +1,4 @@
-/* Product thumbnails for the catalog browser (issue 8 item 3): rendered lazily in the window's
+/* Product thumbnails for the catalog browser: rendered lazily in the window's
  * own context by the same studio as `tessera catalog thumbs` (app/src/scene/thumb_scene.c), a few
  * per frame so typing in the search field stays fluid, and kept as GL textures per product. */
 #ifndef UI_THUMBNAILS_H

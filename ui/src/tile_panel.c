@@ -1,4 +1,4 @@
-/* The tile panel (issue 8 item 4: "tile assignment per surface with pattern, grout width and
+/* The tile panel ("tile assignment per surface with pattern, grout width and
  * colour, start point, border rows"): pick a surface (floor, ceiling, each wall, each face of
  * each pre-wall: app_room_surface_list), then its tile (the catalog browser's selected tile or
  * one from the catalog's tile list), pattern, rotation, grout width and colour, start point

@@ -1,4 +1,4 @@
-/* Tiling in the planner (issue 8 items 2 and 4): the tile panel (tile_panel.c: a surface's
+/* Tiling in the planner: the tile panel (tile_panel.c: a surface's
  * tile, pattern, rotation, grout, start point, band and border rows), the wall elevation view
  * (elevation_draw.c: the surface unfolded with its exact tile layout) and their script actions
  * (tile_actions.c). Every change is an edit line through app's commands (planner_edit), so it

@@ -1,4 +1,4 @@
-/* Print-resolution renders for the CLI (issue 7): any size through tiles, DPI in the file, a
+/* Print-resolution renders for the CLI: any size through tiles, DPI in the file, a
  * progress bar on stderr; shared by render, panorama and video. */
 #ifndef APP_CLI_PRINT_RENDER_H
 #define APP_CLI_PRINT_RENDER_H

@@ -1,5 +1,5 @@
 /* tessera share PROJECT -o DIR [--size WxH] [--panorama-size WxH] [--camera NAME]
- * The "share" export (issue 8 item 7; app/output/share.h): a folder a customer opens in any browser
+ * The "share" export (app/output/share.h): a folder a customer opens in any browser
  * from the file system, with no network: index.html with the renders of every stored viewpoint,
  * the plan and elevations (SVG pages of the print set), an interactive 360-degree panorama, the
  * part list with prices, and the print set as PDF. It composes the commands that make each

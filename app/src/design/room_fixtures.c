@@ -1,7 +1,7 @@
 /* Which placed products cover a surface, so the tile layout leaves it free
  * (app/design/room_surfaces.h): baths and shower trays cover the wall behind them below their rim
  * and the floor under them. One rule for the renderer (scene_products.c), the quantities and the
- * printed elevations, so what is rendered, counted and printed agree (issue 6 item 2). */
+ * printed elevations, so what is rendered, counted and printed agree. */
 #include "app/design/room_surfaces.h"
 
 #include "app/design/quantities.h"

@@ -1,4 +1,4 @@
-/* The tile layouts drawn (issue 6 item 2, "the renderer draws exactly that layout"): for each
+/* The tile layouts drawn (the renderer draws exactly the layout that is counted): for each
  * tiling, app_project_tile_layouts (the layout the quantities and the print set count, on the
  * regions of room_surfaces.c) becomes meshes added to the room geometry, so the GPU scene and
  * the reference tracer draw the same tiles:

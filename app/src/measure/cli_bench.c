@@ -11,7 +11,7 @@
 #include <time.h>
 
 /* CPU time of the whole process (llvmpipe's threads included), in ms: on a shared machine
- * it moves far less with the others' load than the wall clock does (issue 8). */
+ * it moves far less with the others' load than the wall clock does. */
 static double cpu_now_ms(void)
 {
     struct timespec t;

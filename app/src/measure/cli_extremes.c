@@ -1,4 +1,4 @@
-/* tessera extremes: RENDERING.md section 11 as a sweep of its own (issue 4, part 5). Each case
+/* tessera extremes: RENDERING.md section 11 as a sweep of its own. Each case
  * changes one thing of a small mirror-and-chrome room to an extreme, renders it on the GPU and
  * with the reference tracer, checks that every pixel of both is finite, and measures the
  * error where the reference is defined; then once more on the GPU with the print preset's

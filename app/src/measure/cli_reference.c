@@ -185,7 +185,7 @@ int app_cli_reference(int argc, char **argv)
         app_project_free(&p);
         return ar == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
     }
-    /* Shadows as the GPU draws them with the same options (issue 7): a preset's, refined by
+    /* Shadows as the GPU draws them with the same options: a preset's, refined by
      * --shadows; a preset's supersampling too, unless --supersample says otherwise. */
     rd_shadow_settings shadows = {0};
     if (o.quality) {

@@ -196,7 +196,7 @@ typedef struct sweep_row {
     double ms_mean, ms_median, psnr_all, psnr_reflective, rmse_reflective;
 } sweep_row;
 
-/* The table as Markdown, the front in bold (issue 4: a CSV, a Markdown table and a plot). */
+/* The table as Markdown, the front in bold (beside the CSV and the plot). */
 static int write_markdown(const char *path, const app_sweep_point *p, const sweep_row *r, int n)
 {
     FILE *f = fopen(path, "w");

@@ -1,4 +1,4 @@
-/* APP_CMD_SET_PROBE: a material's reflection probe policy (issue 8 item 4, for power users):
+/* APP_CMD_SET_PROBE: a material's reflection probe policy (for power users):
  * how often its probe is captured, at what resolution, and how its lookups are corrected
  * (RENDERING.md section 8; render/render.h rd_probe_desc, rd_correction). Like
  * APP_CMD_SET_REFLECTION it edits the material, so every object that shares the material

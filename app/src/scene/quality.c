@@ -1,27 +1,17 @@
-/* The presets, each a point on (or next to) the Pareto front of the demo's sweep:
- *   build/app/tessera sweep assets/projects/demo-bathroom.json --size 640x360 --samples 64 \
- *       --frames 3 --warmup 1 --animate accent-band
- * (docs/benchmarks.md). Probes that stay still cost nothing after their first frame at the
- * same accuracy ("static"); box mips are as accurate as the prefilter for the demo's narrow
- * chrome lobes at a third of the cost; resolution is the accuracy knob (auto, then 128 for
- * +2 dB, 512 for +4 dB; 1024 loses again). Print also takes the "depth" correction (distance
- * impostors: demo print 25.75 -> 29.63 dB, mirror room 12.85 -> 26.49 dB on reflective
- * pixels) at about twice the frame time, which the faster presets do not buy
- * (docs/accuracy.md). Final and print take flat mirrors as planar reflections: on the Pareto
- * front of every sweep (at the baseline, demo 19.99 -> 25.53 dB in 130 instead of 170 ms, mirror
- * room 12.72 -> 30.39 dB; print demo 29.51 -> 32.14 dB; docs/accuracy.md, "Fifth round"), a
- * capture every frame that follows the eye: stills only, as a live view's frame budget holds
- * its probes still. Print's depth lookups then also searched the room probe, a capture of the
- * whole room from its centre, and covered the glazes too (demo print 32.40 -> 35.26 dB;
- * docs/accuracy.md, "Seventh round"). Print traces each fixture's reflections of itself and of the
- * fixtures beside it, three lobe directions a sample, which finds what the room probe was searched
- * for: print leaves the room probe out (designed demo 35.32 dB without it, 35.29 dB with it). Its
- * probes then hold only what lies beyond the fixtures, and 256 texels serve as well as 512
- * (designed 35.32 against 35.40 dB, demo 37.05 against 37.14; 128: 34.46 and 36.81 dB) at two
- * thirds of the 640 x 360 time and about the old preset's time for the 3840 x 2160 print (16.4 to
- * 17.1 s against 17.1 to 17.8 s; with 512 texels 20.2 s). Against the print
- * preset before: designed demo 21.73 -> 35.32 dB, demo 35.26 -> 37.05 dB, taps 20.80 -> 34.89
- * dB (docs/accuracy.md, "Ninth round"). */
+/* The presets, each a point on (or next to) the speed/accuracy front of the demo's sweep
+ * (`tessera sweep`, docs/accuracy.md "The speed/accuracy front"). Probes that stay still cost
+ * nothing after their first frame at the same accuracy ("static"); box mips are as accurate as
+ * the prefilter for the demo's narrow chrome lobes at a third of the cost; the probe resolution
+ * is the accuracy knob, up to the point where finer texels stop paying. Print also takes the
+ * "depth" correction (distance impostors), which places reflections far better than the box at
+ * about twice the frame time, a price the faster presets do not pay. Final and print take flat
+ * mirrors as planar reflections, on the front of every sweep: a capture every frame that
+ * follows the eye, so stills only, as a live view's frame budget holds its probes still. Print
+ * traces each fixture's reflections of itself and of the fixtures beside it (self_trace.c),
+ * which finds what a search of the room probe would, so print leaves the room probe out; its
+ * probes then hold only what lies beyond the fixtures, and 256 texels serve as well as 512 at
+ * less time. Each preset's cost and accuracy, with the commands that measure them:
+ * docs/accuracy.md and docs/benchmarks.md. */
 #include "app/scene/quality.h"
 
 #include <string.h>
@@ -85,9 +75,9 @@ void app_quality_apply(const app_quality *q, rd_scene *scene)
     d.self_reflections = q->self_reflections;
     d.room_probe_off = q->room_probe_off;
     rd_scene_set_reflection_defaults(scene, &d);
-    /* Shadows by preset (issue 7): none in drafts and live walk-throughs (hard shadows cost
-     * about 180 ns of CPU per sample on llvmpipe with the demo's three lights, some 80 ms a
-     * 1280 x 720 frame on two cores; `--shadows hard` opts in), soft in stills, more taps on
+    /* Shadows by preset: none in drafts and live walk-throughs (hard shadows are filtered per
+     * sample on the CPU under llvmpipe, too dear for a live frame budget; `--shadows hard`
+     * opts in; docs/benchmarks.md), soft in stills, more taps on
      * finer maps for print. The taps per pixel are shared among its samples
      * (rd_shadow_taps_per_sample: at least 2 each), so supersampling turns them into more
      * differently placed taps rather than more work. */

@@ -38,7 +38,7 @@ int rd_ref_correct_sphere(const float p[3], const float r[3], const float c[3], 
 float rd_ref_gloss_exponent(float g);
 /* The linear steps of the "depth" correction's search (reflect.glsl, correct_depth) for a
  * lookup of glossiness g: 32 for a mirror, where a step spans about 1.3 degrees as seen from
- * the probe (docs/accuracy.md, the rail), and as many as keep a step within the lobe's
+ * the probe (a thin rail in front of a wall), and as many as keep a step within the lobe's
  * half-width sqrt(2 ln 2 / n(g)) for a glossy one, 8 at the least: the lobe blurs whatever a
  * finer step would place (a basin's glaze, g = 0.6: 10 steps). */
 int rd_depth_search_steps(float g);

@@ -1,5 +1,5 @@
 /* Small images for a user interface drawn in the same OpenGL context as the renderer (the
- * planner's catalog thumbnails, issue 8 item 3): RGBA8 pixels uploaded into a plain GL texture
+ * planner's catalog thumbnails): RGBA8 pixels uploaded into a plain GL texture
  * whose name the caller hands to its widget toolkit (Dear ImGui's ImTextureID). Only for an
  * adopted context (RD_BACKEND_ADOPT), whose GL context is the window's and current. */
 #ifndef RENDER_UI_TEXTURE_H

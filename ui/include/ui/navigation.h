@@ -1,5 +1,5 @@
 /* Moving the 3D view: orbit around a point, and walk through the room at eye height without
- * passing through walls (issue 8, item 2). Pure math on app's room plan, no GL, no window:
+ * passing through walls. Pure math on app's room plan, no GL, no window:
  * tested in tests/ui. Millimetres, Z up, angles in degrees. */
 #ifndef UI_NAVIGATION_H
 #define UI_NAVIGATION_H
@@ -37,7 +37,7 @@ void ui_orbit_zoom(ui_orbit *o, double steps);
 /* The orbit that looks from eye at target (distance, yaw, pitch from the two points). */
 ui_orbit ui_orbit_from_view(const double eye[3], const double target[3]);
 
-/* Smooth camera flights (presentation mode, issue 8 item 7): eye and target each move on a
+/* Smooth camera flights (presentation mode): eye and target each move on a
  * straight line with smoothstep easing (zero speed at both ends); t in [0, 1]. */
 double ui_ease(double t);
 void ui_view_blend(const double eye0[3], const double target0[3], const double eye1[3],

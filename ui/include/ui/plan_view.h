@@ -1,4 +1,4 @@
-/* The 2D plan view's geometry (issue 8 item 2): the mapping between plan millimetres and
+/* The 2D plan view's geometry: the mapping between plan millimetres and
  * window pixels, and what is under the pointer (a corner, a wall, a fixture). Pure math over
  * app's plan and fixtures, tested without a window; drawing is in ui/src/plan_draw.c. Screen
  * y grows downwards, plan y upwards (north up). */

@@ -1,4 +1,4 @@
-/* ui/: the interactive planner window (GLFW + Dear ImGui over app/ and render/; issue 8).
+/* ui/: the interactive planner window (GLFW + Dear ImGui over app/ and render/).
  * ui draws app's state and sends app's commands; no planning logic lives here. */
 #ifndef UI_UI_H
 #define UI_UI_H

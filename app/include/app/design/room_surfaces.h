@@ -1,4 +1,4 @@
-/* The room's tileable surfaces (issue 6 items 1-2): every surface a tiling can name
+/* The room's tileable surfaces: every surface a tiling can name
  * (app/design/room.h: "floor", "ceiling", "wall:I", "prewall:NAME:front|top|left|right") with its
  * 3D frame and its 2D region (app/design/tile_layout.h): the outline minus the holes, which are the
  * openings, the mouths of niches, the footprints of pre-walls and the fixtures that cover the

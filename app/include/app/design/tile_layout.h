@@ -1,5 +1,5 @@
 /* Tile layout of one surface region: every whole and cut tile, computed as real geometry
- * (issue 6 item 2; DOMAIN.md "Products and catalog records", "What the best planners print").
+ * (DOMAIN.md "Products and catalog records", "What the best planners print").
  * docs/tiling.md describes the model, the patterns and how cuts are counted.
  *
  * Coordinates: 2D surface coordinates in millimetres, s along the surface (x of the points),

@@ -1,4 +1,4 @@
-/* A smooth camera path through a project's stored viewpoints (issue 7 item 7): a uniform
+/* A smooth camera path through a project's stored viewpoints: a uniform
  * Catmull-Rom spline (Catmull and Rom 1974) on the positions and on the targets, with the end
  * points repeated, so the path passes through every viewpoint with a continuous tangent. */
 #ifndef APP_CAMERA_PATH_H

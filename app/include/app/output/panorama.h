@@ -1,4 +1,4 @@
-/* 360-degree panoramas (issue 7 item 6): six cube faces around a viewpoint, resampled into an
+/* 360-degree panoramas: six cube faces around a viewpoint, resampled into an
  * equirectangular image, with the GPano XMP that panorama viewers read. No GL here: the faces
  * are rendered by the caller (app/src/cli/cli_panorama.c). */
 #ifndef APP_PANORAMA_H

@@ -1,4 +1,4 @@
-/* Printed documents of a project (issue 7 items 1-4; DOMAIN.md "What the best planners print"):
+/* Printed documents of a project (DOMAIN.md "What the best planners print"):
  * a floor plan at a true scale, wall elevations with the tile layout, render pages, and the
  * part list with a priced quotation, as one multi-page vector PDF or one SVG per page, drawn
  * with Cairo. docs/printing.md describes the pages and how scales are chosen.

@@ -1,5 +1,5 @@
-/* Exporting a whole project as one GLB file (issue 5 item 4, "any product or a whole project as
- * GLB, so users can open it in other tools"); `tessera export-glb PROJECT -o OUT.glb`.
+/* Exporting a whole project as one GLB file, so users can open it in other tools; `tessera
+ * export-glb PROJECT -o OUT.glb`.
  *
  * The file holds one scene: a root node named after the project with
  *  - a node "room" whose children are the room's surfaces as app_room_geometry_build makes

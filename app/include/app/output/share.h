@@ -1,4 +1,4 @@
-/* The "share" export (issue 8 item 7): a self-contained folder a customer opens in any browser
+/* The "share" export: a self-contained folder a customer opens in any browser
  * from the file system: index.html with the plan, the renders, an interactive 360-degree
  * panorama (assets/share/pano-viewer.js, no network) and the part list with prices. This
  * header writes the page from what the caller made (app/src/cli/cli_share.c renders and prints). */

@@ -1,5 +1,5 @@
 /* Quality presets: named points of the speed/accuracy front measured by `tessera sweep`
- * (docs/benchmarks.md, "The trade"), so a user picks a trade, not six settings. */
+ * (docs/accuracy.md, "The presets"), so a user picks a trade, not six settings. */
 #ifndef APP_QUALITY_H
 #define APP_QUALITY_H
 
