@@ -206,7 +206,7 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glUniform1i(p->u_depth_steps, rd_depth_search_steps(m->glossiness));
     /* The room probe beside the own for "depth" lookups (probe.c, lit.frag's pick_depth_hit). */
     const rd_probe *room = &s->room_probe;
-    int room_ready = c == RD_CORRECTION_DEPTH && !s->reflection.room_probe_off &&
+    int room_ready = c == RD_CORRECTION_DEPTH && s->reflection.room_probe != RD_SWITCH_OFF &&
                      room->faces_valid == 0x3f &&
                      (room->gloss_min >= 1.0f || room->filtered_level >= 0 ||
                       rd_effective_blur(s) != RD_BLUR_PREFILTERED);

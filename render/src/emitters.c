@@ -43,7 +43,7 @@ rd_result rd_emitters_update(rd_scene *s)
     s->object_emitter = flags;
     memset(flags, 0, (size_t)s->object_count);
     s->emitter_count = 0;
-    if (s->reflection.emitters_in_probes)
+    if (s->reflection.exact_lamps == RD_SWITCH_OFF)
         return RD_OK;
     for (int i = 0; i < s->object_count && s->emitter_count < RD_MAX_EMITTERS; i++) {
         const rd_object_desc *o = &s->objects[i];

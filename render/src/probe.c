@@ -803,7 +803,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     if (rd_phase_enabled() && stats->self_traced_probes)
         fprintf(stderr, "self-reflections traced: %d probes, %d triangles\n",
                 stats->self_traced_probes, stats->self_triangles);
-    if (depth_fresh && !s->reflection.room_probe_off &&
+    if (depth_fresh && s->reflection.room_probe != RD_SWITCH_OFF &&
         (r = room_probe_update(ctx, s, bmin, bmax, stats)) != RD_OK)
         return r;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

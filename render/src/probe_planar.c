@@ -48,10 +48,10 @@ static float dot3(const float a[3], const float b[3])
 int rd_planar_candidate(const rd_scene *s, const rd_object_desc *o)
 {
     const rd_material *m = &o->material;
-    return s->reflection.planar_mirrors && m->reflectivity > 0.0f && m->glossiness >= 1.0f &&
-           !(m->transparency > 0.0f) && m->correction == RD_CORRECTION_DEFAULT && !m->sphere_map &&
-           !m->per_vertex_reflection && !s->reflection.per_vertex &&
-           o->probe.update != RD_PROBE_STATIC;
+    return s->reflection.planar_mirrors == RD_SWITCH_ON && m->reflectivity > 0.0f &&
+           m->glossiness >= 1.0f && !(m->transparency > 0.0f) &&
+           m->correction == RD_CORRECTION_DEFAULT && !m->sphere_map && !m->per_vertex_reflection &&
+           !s->reflection.per_vertex && o->probe.update != RD_PROBE_STATIC;
 }
 
 int rd_probe_plan_planar(rd_context *ctx, const rd_scene *s, rd_probe *p, const float eye[3])

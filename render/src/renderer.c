@@ -152,6 +152,7 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     rd_shadow_frame(scene, v, shaded);
     if (r != RD_OK)
         return r;
+    stats.adaptive = adaptive(v, samples);
     ctx->stats = stats;
     begin_hdr_pass(ctx);
     r = rd_draw_view(ctx, scene, vp, view_rot, v->eye, shaded);

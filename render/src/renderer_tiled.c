@@ -30,6 +30,25 @@ void rd_scene_hold_probes(rd_scene *scene, int hold)
         scene->hold_probes = hold != 0;
 }
 
+/* A tiled image's statistics: the work of every tile summed, the scene's state (probes, lamps,
+ * traced triangles) as the tile that saw most of it. */
+static void add_tile_stats(rd_frame_stats *total, const rd_frame_stats *t)
+{
+    total->faces_captured += t->faces_captured;
+    total->prefiltered += t->prefiltered;
+    total->refined_pixels += t->refined_pixels;
+    total->planar_mirrors += t->planar_mirrors;
+#define KEEP_MAX(f) total->f = t->f > total->f ? t->f : total->f
+    KEEP_MAX(probes);
+    KEEP_MAX(adaptive);
+    KEEP_MAX(room_probe);
+    KEEP_MAX(emitters);
+    KEEP_MAX(emitter_probes);
+    KEEP_MAX(self_traced_probes);
+    KEEP_MAX(self_triangles);
+#undef KEEP_MAX
+}
+
 rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view, int tile_max,
                           uint8_t *rgba8, float *linear,
                           void (*progress)(void *user, int done, int total), void *user)
@@ -55,6 +74,7 @@ rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view,
     if (scene->hold_probes)
         scene->reflection.update = RD_PROBE_ONCE;
     rd_result r = RD_OK;
+    rd_frame_stats total = {0};
     rd_phase_restart();
     for (int ty = 0; ty < rows && r == RD_OK; ty++)
         for (int tx = 0; tx < cols && r == RD_OK; tx++) {
@@ -69,6 +89,8 @@ rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view,
             if (cols == 1 && rows == 1)
                 t.full_width = t.full_height = 0; /* one tile: the plain projection */
             r = rd_render(ctx, scene, &t);
+            if (r == RD_OK)
+                add_tile_stats(&total, &ctx->stats);
             rd_phase_mark("main pass and tone map");
             if (r == RD_OK)
                 r = rd_read_rgba8(ctx, tile8, tile_px * 4);
@@ -90,6 +112,7 @@ rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view,
                 progress(user, ty * cols + tx + 1, rows * cols);
         }
     rd_phase_report("rd_render_tiled");
+    ctx->stats = total;
     scene->reflection.update = saved_update;
     free(tile8);
     free(tilef);

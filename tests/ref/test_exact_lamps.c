@@ -32,7 +32,7 @@ enum { W = 160, H = 90 };
 
 static void set_lamps_in_probes(rd_reflection_defaults *d, int in_probes)
 {
-    d->emitters_in_probes = in_probes;
+    d->exact_lamps = in_probes ? RD_SWITCH_OFF : RD_SWITCH_ON;
 }
 
 /* The GPU image of p (a preset when given) with the lamps exact or left in the probes. */

@@ -95,8 +95,8 @@ static int render(rd_context *ctx, setup *su, int planar, int correction, int la
         return 0;
     }
     rd_reflection_defaults d = rd_scene_reflection_defaults(s.scene);
-    d.planar_mirrors = planar;
-    d.emitters_in_probes = lamps_in_probes;
+    d.planar_mirrors = planar ? RD_SWITCH_ON : RD_SWITCH_OFF;
+    d.exact_lamps = lamps_in_probes ? RD_SWITCH_OFF : RD_SWITCH_ON;
     rd_scene_set_reflection_defaults(s.scene, &d);
     int ok = rd_render(ctx, s.scene, &su->view) == RD_OK &&
              rd_read_linear(ctx, img, (size_t)W * H * 4) == RD_OK;

@@ -42,7 +42,7 @@ static void set_room_off(rd_reflection_defaults *d, int off)
 {
     if (off < 0)
         return;
-    d->room_probe_off = off;
+    d->room_probe = off ? RD_SWITCH_OFF : RD_SWITCH_ON;
     d->self_reflections = 0;
 }
 

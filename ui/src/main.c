@@ -1,13 +1,9 @@
-/* The `tessera` program: the planner window with no arguments or `open`, the command line
- * (app/src/cli/cli_main.c) otherwise. */
+/* The `tessera` program: the command line (app/src/cli/), with the planner window behind
+ * `tessera open` and `tessera` alone. */
 #include "app/cli/cli.h"
 #include "ui/ui.h"
 
-#include <string.h>
-
 int main(int argc, char **argv)
 {
-    if (argc < 2 || !strcmp(argv[1], "open"))
-        return ui_cli_open(argc, argv);
-    return app_cli_main(argc, argv);
+    return app_cli_run(argc, argv, ui_open_window);
 }

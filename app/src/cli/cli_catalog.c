@@ -1,9 +1,8 @@
 /* tessera catalog search|show|import|export|info|bench: the product catalog from the command
  * line. Every sub-command takes --db PATH (default: $TESSERA_CATALOG, else the user's cache
  * folder); the catalog is built from the shipped CSV files on first use. */
-#include "app/cli/cli.h"
 #include "catalog/catalog.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 
 #include <errno.h>
 #include <math.h>
@@ -12,135 +11,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-typedef struct cat_options {
-    const char *command; /* "search", ... */
-    const char *db, *category, *manufacturer, *output, *csv;
-    const char *positional[64];
-    int positional_count;
-    double max_width;
-    int limit, queries, dry_run;
-} cat_options;
-
-static const char usage_text[] =
-    "usage: tessera catalog search TEXT... [--category C] [--max-width MM] [--manufacturer M]\n"
-    "                              [--limit N] [--db PATH]\n"
-    "       tessera catalog show ARTICLE|GTIN [--manufacturer M] [--db PATH]\n"
-    "       tessera catalog import FILE.csv [--dry-run] [--db PATH]\n"
-    "       tessera catalog export [-o FILE.csv] [--db PATH]\n"
-    "       tessera catalog info [--db PATH]\n"
-    "       tessera catalog bench [--queries N] [--csv FILE] [--db PATH]\n"
-    "       tessera catalog model ARTICLE|GTIN [--manufacturer M] [--variant CODE] [-o OUT.glb]\n"
-    "       tessera catalog thumbs [--size N] [--out DIR] [--category C] [--limit N] [--db PATH]\n"
-    "       tessera catalog lod MODEL.glb [--fraction F] [-o OUT.glb]\n"
-    "The catalog file is --db, else $TESSERA_CATALOG, else ~/.cache/tessera/catalog.sqlite;\n"
-    "it is built from the shipped CSV files ($TESSERA_ASSETS/catalog) on first use.\n"
-    "Categories: taps_mixers shower_sets basins wcs_bidets baths shower_trays shower_screens\n"
-    "            mirrors mirror_cabinets lamps towel_radiators vanity_units accessories tiles\n";
-
-static int usage(void)
-{
-    fputs(usage_text, stderr);
-    return CLI_USAGE;
-}
-
-/* Options each sub-command takes. */
-static int option_allowed(const char *command, const char *option)
-{
-    static const struct {
-        const char *command, *options;
-    } table[] = {
-        {"search", " db category max-width manufacturer limit "},
-        {"show", " db manufacturer "},
-        {"import", " db dry-run "},
-        {"export", " db output "},
-        {"info", " db "},
-        {"bench", " db queries csv "},
-    };
-    char key[64];
-    snprintf(key, sizeof key, " %s ", option);
-    for (size_t i = 0; i < sizeof table / sizeof table[0]; i++)
-        if (!strcmp(table[i].command, command))
-            return strstr(table[i].options, key) != NULL;
-    return 0;
-}
-
-static int parse_number(const char *text, double lo, double hi, double *out)
-{
-    char *end;
-    errno = 0;
-    double v = strtod(text, &end);
-    if (end == text || *end || errno || !isfinite(v) || v < lo || v > hi)
-        return 0;
-    *out = v;
-    return 1;
-}
-
-static int parse_options(int argc, char **argv, cat_options *o)
-{
-    memset(o, 0, sizeof *o);
-    o->command = argv[2];
-    o->limit = 20;
-    o->queries = 400;
-    for (int i = 3; i < argc; i++) {
-        const char *a = argv[i];
-        if (a[0] != '-' || !a[1]) {
-            if (o->positional_count == (int)(sizeof o->positional / sizeof o->positional[0])) {
-                fprintf(stderr, "tessera catalog %s: too many arguments\n", o->command);
-                return CLI_USAGE;
-            }
-            o->positional[o->positional_count++] = a;
-            continue;
-        }
-        const char *name = !strcmp(a, "-o") ? "output" : !strncmp(a, "--", 2) ? a + 2 : a;
-        if (!option_allowed(o->command, name)) {
-            fprintf(stderr, "tessera catalog %s: unknown option \"%s\"\n", o->command, a);
-            return CLI_USAGE;
-        }
-        if (!strcmp(name, "dry-run")) {
-            o->dry_run = 1;
-            continue;
-        }
-        if (i + 1 >= argc) {
-            fprintf(stderr, "tessera catalog %s: option %s needs a value\n", o->command, a);
-            return CLI_USAGE;
-        }
-        const char *v = argv[++i];
-        double x = 0;
-        int ok = 1;
-        if (!strcmp(name, "db"))
-            o->db = v;
-        else if (!strcmp(name, "category")) {
-            cat_category c;
-            ok = cat_category_parse(v, &c);
-            o->category = v;
-        } else if (!strcmp(name, "manufacturer"))
-            o->manufacturer = v;
-        else if (!strcmp(name, "output"))
-            o->output = v;
-        else if (!strcmp(name, "csv"))
-            o->csv = v;
-        else if (!strcmp(name, "max-width"))
-            ok = parse_number(v, 1, 100000, &o->max_width);
-        else if (!strcmp(name, "limit")) {
-            ok = parse_number(v, 1, 10000, &x) && x == floor(x);
-            o->limit = (int)x;
-        } else if (!strcmp(name, "queries")) {
-            ok = parse_number(v, 1, 1000000, &x) && x == floor(x);
-            o->queries = (int)x;
-        }
-        if (!ok) {
-            fprintf(stderr, "tessera catalog %s: bad value \"%s\" for --%s%s\n", o->command, v,
-                    name,
-                    !strcmp(name, "category")    ? " (see tessera catalog --help for the list)"
-                    : !strcmp(name, "max-width") ? " (expected millimetres, e.g. 600)"
-                    : !strcmp(name, "limit")     ? " (expected 1 to 10000)"
-                                                 : "");
-            return CLI_USAGE;
-        }
-    }
-    return CLI_OK;
-}
 
 /* The shipped catalog data: $TESSERA_ASSETS/catalog, else the source tree's. */
 static void source_dir(char *buf, size_t size)
@@ -165,7 +35,7 @@ static int exit_code(cat_db_result r)
     }
 }
 
-static int open_catalog(const cat_options *o, cat_db **db)
+static int open_catalog(const cli_options *o, cat_db **db)
 {
     char path[4096], src[4096], err[4096];
     if (o->db)
@@ -224,19 +94,19 @@ static void money(long long cents, char *buf, size_t size)
     snprintf(buf, size, "%lld.%02lld", cents / 100, cents % 100);
 }
 
-static int cmd_search(const cat_options *o)
+int cli_cmd_catalog_search(const cli_options *o)
 {
-    if (o->positional_count == 0)
-        return usage();
+    if (o->arg_count == 0)
+        return cli_usage_error(o);
     char text[CAT_SEARCH_MAX_TEXT + 1] = "";
-    for (int i = 0; i < o->positional_count; i++) {
+    for (int i = 0; i < o->arg_count; i++) {
         size_t n = strlen(text);
-        if (n + strlen(o->positional[i]) + 2 > sizeof text) {
+        if (n + strlen(o->args[i]) + 2 > sizeof text) {
             fprintf(stderr, "tessera catalog search: the search text is longer than %d bytes\n",
                     CAT_SEARCH_MAX_TEXT);
             return CLI_USAGE;
         }
-        snprintf(text + n, sizeof text - n, "%s%s", n ? " " : "", o->positional[i]);
+        snprintf(text + n, sizeof text - n, "%s%s", n ? " " : "", o->args[i]);
     }
     cat_db *db;
     int rc = open_catalog(o, &db);
@@ -245,7 +115,8 @@ static int cmd_search(const cat_options *o)
     cat_search_filter f = {.max_width_mm = o->max_width, .manufacturer = o->manufacturer};
     if (o->category)
         cat_category_parse(o->category, &f.category);
-    cat_search_hit *hits = calloc((size_t)o->limit, sizeof *hits);
+    int limit = o->limit ? o->limit : 20;
+    cat_search_hit *hits = calloc((size_t)limit, sizeof *hits);
     if (!hits) {
         cat_db_close(db);
         fprintf(stderr, "tessera: out of memory\n");
@@ -254,7 +125,7 @@ static int cmd_search(const cat_options *o)
     int n = 0;
     char err[1024];
     double t0 = cli_now_ms();
-    cat_db_result r = cat_search(db, text, &f, o->limit, hits, &n, err, sizeof err);
+    cat_db_result r = cat_search(db, text, &f, limit, hits, &n, err, sizeof err);
     double ms = cli_now_ms() - t0;
     if (r != CAT_DB_OK) {
         fprintf(stderr, "tessera: %s\n", err);
@@ -292,17 +163,17 @@ static void print_rgb(const char *label, const float c[3])
     printf(" %s %g %g %g", label, c[0], c[1], c[2]);
 }
 
-static int cmd_show(const cat_options *o)
+int cli_cmd_catalog_show(const cli_options *o)
 {
-    if (o->positional_count != 1)
-        return usage();
+    if (o->arg_count != 1)
+        return cli_usage_error(o);
     cat_db *db;
     int rc = open_catalog(o, &db);
     if (rc != CLI_OK)
         return rc;
     cat_product p;
     char err[1024];
-    cat_db_result r = cat_product_find(db, o->manufacturer, o->positional[0], &p, err, sizeof err);
+    cat_db_result r = cat_product_find(db, o->manufacturer, o->args[0], &p, err, sizeof err);
     cat_db_close(db);
     if (r != CAT_DB_OK) {
         fprintf(stderr, "tessera: %s\n", err);
@@ -376,15 +247,15 @@ static void progress(void *user, long done, long total)
     }
 }
 
-static int cmd_import(const cat_options *o)
+int cli_cmd_catalog_import(const cli_options *o)
 {
-    if (o->positional_count != 1)
-        return usage();
+    if (o->arg_count != 1)
+        return cli_usage_error(o);
     cat_db *db;
     int rc = open_catalog(o, &db);
     if (rc != CLI_OK)
         return rc;
-    const char *file = o->positional[0];
+    const char *file = o->args[0];
     progress_state ps = {.tty = isatty(2), .last_tenth = -1, .last_done = -1};
     cat_import_desc desc = {.dry_run = o->dry_run, .progress = progress, .user = &ps};
     cat_import_report rep;
@@ -420,10 +291,10 @@ static int cmd_import(const cat_options *o)
     return exit_code(r);
 }
 
-static int cmd_export(const cat_options *o)
+int cli_cmd_catalog_export(const cli_options *o)
 {
-    if (o->positional_count != 0)
-        return usage();
+    if (o->arg_count != 0)
+        return cli_usage_error(o);
     cat_db *db;
     int rc = open_catalog(o, &db);
     if (rc != CLI_OK)
@@ -442,10 +313,10 @@ static int cmd_export(const cat_options *o)
     return CLI_OK;
 }
 
-static int cmd_info(const cat_options *o)
+int cli_cmd_catalog_info(const cli_options *o)
 {
-    if (o->positional_count != 0)
-        return usage();
+    if (o->arg_count != 0)
+        return cli_usage_error(o);
     cat_db *db;
     int rc = open_catalog(o, &db);
     if (rc != CLI_OK)
@@ -513,7 +384,7 @@ static int pick_word(const char *text, unsigned k, size_t min_len, char *out, si
     return 1;
 }
 
-static int cmd_bench(const cat_options *o)
+int cli_cmd_catalog_bench(const cli_options *o)
 {
     cat_db *db;
     int rc = open_catalog(o, &db);
@@ -527,7 +398,7 @@ static int cmd_bench(const cat_options *o)
         cat_db_close(db);
         return CLI_FAILED;
     }
-    int per_kind = o->queries;
+    int per_kind = o->queries ? o->queries : 400;
     double *ms[Q_KINDS];
     int counts[Q_KINDS] = {0};
     long hits_total = 0;
@@ -626,44 +497,4 @@ static int cmd_bench(const cat_options *o)
     free(hits);
     cat_db_close(db);
     return exit_code(r);
-}
-
-int app_cli_catalog(int argc, char **argv)
-{
-    if (argc < 3 || !strcmp(argv[2], "--help") || !strcmp(argv[2], "-h") ||
-        !strcmp(argv[2], "help")) {
-        fputs(usage_text, argc < 3 ? stderr : stdout);
-        return argc < 3 ? CLI_USAGE : CLI_OK;
-    }
-    if (!strcmp(argv[2], "model")) /* cli_catalog_model.c */
-        return app_cli_catalog_model(argc, argv);
-    if (!strcmp(argv[2], "thumbs")) /* cli_catalog_thumbs.c */
-        return app_cli_catalog_thumbs(argc, argv);
-    if (!strcmp(argv[2], "lod")) /* cli_catalog_lod.c */
-        return app_cli_catalog_lod(argc, argv);
-    static const char *const commands[] = {"search", "show", "import", "export", "info", "bench"};
-    int known = 0;
-    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        known |= !strcmp(argv[2], commands[i]);
-    if (!known) {
-        fprintf(stderr,
-                "tessera catalog: unknown sub-command \"%s\" (try tessera catalog --help)\n",
-                argv[2]);
-        return CLI_USAGE;
-    }
-    cat_options o;
-    int rc = parse_options(argc, argv, &o);
-    if (rc != CLI_OK)
-        return rc;
-    if (!strcmp(o.command, "search"))
-        return cmd_search(&o);
-    if (!strcmp(o.command, "show"))
-        return cmd_show(&o);
-    if (!strcmp(o.command, "import"))
-        return cmd_import(&o);
-    if (!strcmp(o.command, "export"))
-        return cmd_export(&o);
-    if (!strcmp(o.command, "info"))
-        return cmd_info(&o);
-    return cmd_bench(&o);
 }

@@ -2,63 +2,20 @@
  * validates its meshes (catalog/mesh_lod.h: degenerate triangles, non-manifold and open edges;
  * NaN/Inf and bad indices refused), prints the report and, with -o, writes a level of detail
  * with about F of its triangles (quadric decimation, OpenMesh) as GLB. */
-#include "app/cli/cli.h"
 #include "catalog/mesh_lod.h"
 #include "catalog/model.h"
 #include "catalog/model_write.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-static const char usage_text[] =
-    "usage: tessera catalog lod MODEL.(glb|gltf) [--fraction F] [-o OUT.glb]\n"
-    "Validates the model's meshes and prints what it found; with -o also writes a level of\n"
-    "detail with about F (0 < F <= 1, default 0.5) of each mesh's triangles, same bounding box.\n";
-
-int app_cli_catalog_lod(int argc, char **argv)
+int cli_cmd_catalog_lod(const cli_options *o)
 {
-    const char *in = NULL, *out = NULL;
-    double fraction = 0.5;
-    for (int i = 3; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            fputs(usage_text, stdout);
-            return CLI_OK;
-        }
-        if (!strcmp(a, "-o") || !strcmp(a, "--output") || !strcmp(a, "--fraction")) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "tessera catalog lod: option %s needs a value\n", a);
-                return CLI_USAGE;
-            }
-            const char *v = argv[++i];
-            if (strcmp(a, "--fraction") != 0) { /* -o, --output */
-                out = v;
-                continue;
-            }
-            char *end;
-            fraction = strtod(v, &end);
-            if (end == v || *end || !(fraction > 0 && fraction <= 1)) {
-                fprintf(stderr,
-                        "tessera catalog lod: bad value \"%s\" for --fraction (0 < F <= 1)\n", v);
-                return CLI_USAGE;
-            }
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "tessera catalog lod: unknown option \"%s\"\n", a);
-            return CLI_USAGE;
-        } else if (!in) {
-            in = a;
-        } else {
-            fprintf(stderr, "tessera catalog lod: one model at a time\n");
-            return CLI_USAGE;
-        }
-    }
-    if (!in) {
-        fputs(usage_text, stderr);
-        return CLI_USAGE;
-    }
+    const char *in = o->project, *out = o->output;
+    double fraction = o->fraction > 0 ? o->fraction : 0.5;
     cat_model m;
     char err[2048];
     cat_result r = cat_model_load(in, &m, err, sizeof err);

@@ -2,58 +2,20 @@
  * product's 3D model as GLB, generated from its catalog row by the same generators the build
  * uses for the shipped models (catalog/model_gen.h), with the first variant's material. Lets a
  * user open a product in any glTF viewer; the build's own copies live in cat_models_dir(). */
-#include "app/cli/cli.h"
 #include "catalog/catalog.h"
 #include "catalog/model_gen.h"
 #include "catalog/model_write.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
-static const char usage_text[] =
-    "usage: tessera catalog model ARTICLE|GTIN [--manufacturer M] [--variant CODE] [-o OUT.glb]\n"
-    "                             [--db PATH]\n"
-    "Writes the product's model as GLB (default: ./<article>.glb), its finish parts in the\n"
-    "variant CODE (default: the first by code). Origin: the bottom centre\n"
-    "of the back face; Y up, metres, as glTF wants (docs/catalog.md, \"Models\").\n";
-
-int app_cli_catalog_model(int argc, char **argv)
+int cli_cmd_catalog_model(const cli_options *o)
 {
-    const char *article = NULL, *maker = NULL, *out = NULL, *db_path = NULL, *variant = NULL;
-    for (int i = 3; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            fputs(usage_text, stdout);
-            return CLI_OK;
-        }
-        const char **slot = !strcmp(a, "--manufacturer")                 ? &maker
-                            : !strcmp(a, "-o") || !strcmp(a, "--output") ? &out
-                            : !strcmp(a, "--db")                         ? &db_path
-                            : !strcmp(a, "--variant")                    ? &variant
-                                                                         : NULL;
-        if (slot) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "tessera catalog model: option %s needs a value\n", a);
-                return CLI_USAGE;
-            }
-            *slot = argv[++i];
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "tessera catalog model: unknown option \"%s\"\n", a);
-            return CLI_USAGE;
-        } else if (!article) {
-            article = a;
-        } else {
-            fprintf(stderr, "tessera catalog model: one article at a time\n");
-            return CLI_USAGE;
-        }
-    }
-    if (!article) {
-        fputs(usage_text, stderr);
-        return CLI_USAGE;
-    }
+    const char *article = o->project, *maker = o->manufacturer, *out = o->output, *db_path = o->db,
+               *variant = o->variant;
     char path[4096], src[4096], err[4096];
     if (db_path)
         snprintf(path, sizeof path, "%s", db_path);

@@ -3,9 +3,8 @@
  * Headless thumbnails of every product through the renderer (thumb_scene.c): one GL context
  * for all, one PNG per product named MANUFACTURER-ARTICLE.png (lower case, runs of other
  * characters as '-'), a progress bar on stderr, and at the end the time per product. */
-#include "app/cli/cli.h"
 #include "catalog/catalog.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 #include "cli_print_render.h"
 #include "render/image_io.h"
 #include "app/scene/thumb_scene.h"
@@ -17,75 +16,26 @@
 #include <string.h>
 #include <sys/stat.h>
 
-static const char usage_text[] =
-    "usage: tessera catalog thumbs [--size N] [--out DIR] [--category C] [--limit N]\n"
-    "                              [--variant CODE] [--supersample 1-4] [--backend egl|osmesa]\n"
-    "                              [--db PATH]\n"
-    "Renders a thumbnail of every product (at most 10000 per run) into\n"
-    "DIR/MANUFACTURER-ARTICLE.png (default: thumbs/, 256 px): its model, or a box of its size\n"
-    "while it has none; tiles: a small tiled square of their texture. Each product in its\n"
-    "variant CODE (e.g. CP for chrome) where it has one, else in its main finish.\n";
-
 typedef struct thumbs_options {
     int size, limit, supersample;
-    const char *out, *db, *backend, *variant;
+    const char *out, *db, *variant;
+    rd_backend backend;
     cat_category category;
 } thumbs_options;
 
-static int parse(int argc, char **argv, thumbs_options *o)
+/* The table's options with this command's defaults filled in. */
+static void thumbs_from(const cli_options *c, thumbs_options *o)
 {
     memset(o, 0, sizeof *o);
-    o->size = 256;
-    o->limit = 10000; /* cat_search's most; --category splits a larger catalog */
-    o->supersample = 2;
-    o->out = "thumbs";
-    for (int i = 3; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            fputs(usage_text, stdout);
-            return -1;
-        }
-        if (strncmp(a, "--", 2) != 0) {
-            fprintf(stderr, "tessera catalog thumbs: unexpected argument \"%s\"\n", a);
-            return CLI_USAGE;
-        }
-        if (i + 1 >= argc) {
-            fprintf(stderr, "tessera catalog thumbs: option %s needs a value\n", a);
-            return CLI_USAGE;
-        }
-        const char *v = argv[++i];
-        char *end;
-        long n = strtol(v, &end, 10);
-        int number_ok = end != v && !*end;
-        if (!strcmp(a, "--size") && number_ok && n >= 16 && n <= 2048)
-            o->size = (int)n;
-        else if (!strcmp(a, "--limit") && number_ok && n >= 1 && n <= 10000)
-            o->limit = (int)n;
-        else if (!strcmp(a, "--supersample") && number_ok && n >= 1 && n <= 4)
-            o->supersample = (int)n;
-        else if (!strcmp(a, "--out") || !strcmp(a, "-o"))
-            o->out = v;
-        else if (!strcmp(a, "--db"))
-            o->db = v;
-        else if (!strcmp(a, "--backend"))
-            o->backend = v;
-        else if (!strcmp(a, "--variant"))
-            o->variant = v;
-        else if (!strcmp(a, "--category") && cat_category_parse(v, &o->category))
-            ;
-        else {
-            int known = !strcmp(a, "--size") || !strcmp(a, "--limit") ||
-                        !strcmp(a, "--supersample") || !strcmp(a, "--category");
-            fprintf(stderr, "tessera catalog thumbs: %s \"%s\"%s\n",
-                    known ? "bad value" : "unknown option", known ? v : a,
-                    !strcmp(a, "--size")       ? " for --size (16 to 2048 pixels)"
-                    : !strcmp(a, "--limit")    ? " for --limit (1 to 10000 products)"
-                    : !strcmp(a, "--category") ? " for --category (see tessera catalog --help)"
-                                               : "");
-            return CLI_USAGE;
-        }
-    }
-    return CLI_OK;
+    o->size = c->thumb_size ? c->thumb_size : 256;
+    o->limit = c->limit ? c->limit : 10000; /* cat_search's most; --category splits a larger one */
+    o->supersample = c->supersample ? c->supersample : 2;
+    o->out = c->out_dir ? c->out_dir : "thumbs";
+    o->db = c->db;
+    o->backend = c->backend;
+    o->variant = c->variant;
+    if (c->category)
+        cat_category_parse(c->category, &o->category);
 }
 
 /* "Nordkeram", "NK-51244.00" -> "nordkeram-nk-51244-00" */
@@ -129,12 +79,10 @@ static int by_value(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-int app_cli_catalog_thumbs(int argc, char **argv)
+int cli_cmd_catalog_thumbs(const cli_options *args)
 {
     thumbs_options o;
-    int rc = parse(argc, argv, &o);
-    if (rc != CLI_OK)
-        return rc < 0 ? CLI_OK : rc;
+    thumbs_from(args, &o);
     if (!make_folders(o.out)) {
         fprintf(stderr, "tessera catalog thumbs: cannot make folder %s: %s\n", o.out,
                 strerror(errno));
@@ -167,14 +115,7 @@ int app_cli_catalog_thumbs(int argc, char **argv)
         return CLI_FAILED;
     }
 
-    rd_context_desc cd = {0};
-    if (o.backend && rd_backend_parse(o.backend, &cd.backend) != RD_OK) {
-        fprintf(stderr, "tessera catalog thumbs: unknown backend \"%s\" (egl or osmesa)\n",
-                o.backend);
-        free(hits);
-        cat_db_close(db);
-        return CLI_USAGE;
-    }
+    rd_context_desc cd = {.backend = o.backend};
     rd_context *ctx = NULL;
     thumb_studio st;
     memset(&st, 0, sizeof st);

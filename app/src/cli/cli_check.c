@@ -1,26 +1,15 @@
 /* `tessera check PROJECT [--barrier-free | --wheelchair] [--db CATALOG]`: reads and validates a
  * project, then prints the placement findings (app/design/placement.h, docs/editing.md). Exit 0
  * when no finding is an error, 1 otherwise, 2 for bad usage or a project that cannot be read. */
-#include "app/cli/cli.h"
+#include "cli_commands.h"
 #include "app/design/placement.h"
 #include "app/project/project.h"
-#include "cli_options.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 enum { CHECK_OK = 0, CHECK_FINDINGS = 1, CHECK_USAGE = 2 };
-
-static void check_usage(FILE *f)
-{
-    fprintf(f, "usage: tessera check PROJECT [--barrier-free | --wheelchair] [--db CATALOG]\n"
-               "  validates the project file and checks its fixtures: collisions, walls,\n"
-               "  free areas and 200 mm distances (VDI 6000); --barrier-free adds DIN 18040-2\n"
-               "  1200 x 1200 free areas and doors opening outwards, --wheelchair 1500 x 1500\n"
-               "  and the WC's 900/300 mm sides.\n"
-               "  Exit 0: no errors; 1: errors found; 2: bad usage or unreadable project.\n");
-}
 
 /* Prints the findings; returns the number of errors. */
 static int print_findings(const app_project *p, const app_findings *f)
@@ -34,32 +23,12 @@ static int print_findings(const app_project *p, const app_findings *f)
     return app_findings_errors(f);
 }
 
-int app_cli_check(int argc, char **argv)
+int cli_cmd_check(const cli_options *o)
 {
-    const char *project = NULL, *db = NULL;
-    app_check_options opt = {APP_BARRIER_FREE_OFF};
-    for (int i = 2; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            check_usage(stdout);
-            return CHECK_OK;
-        } else if (!strcmp(argv[i], "--barrier-free")) {
-            opt.barrier_free = APP_BARRIER_FREE_ON;
-        } else if (!strcmp(argv[i], "--wheelchair")) {
-            opt.barrier_free = APP_BARRIER_FREE_WHEELCHAIR;
-        } else if (!strcmp(argv[i], "--db") && i + 1 < argc) {
-            db = argv[++i];
-        } else if (argv[i][0] == '-' || project) {
-            fprintf(stderr, "tessera check: unexpected argument \"%s\"\n", argv[i]);
-            check_usage(stderr);
-            return CHECK_USAGE;
-        } else {
-            project = argv[i];
-        }
-    }
-    if (!project) {
-        check_usage(stderr);
-        return CHECK_USAGE;
-    }
+    const char *project = o->project, *db = o->db;
+    app_check_options opt = {o->wheelchair     ? APP_BARRIER_FREE_WHEELCHAIR
+                             : o->barrier_free ? APP_BARRIER_FREE_ON
+                                               : APP_BARRIER_FREE_OFF};
     app_project p;
     char err[4096];
     if (app_project_read(project, &p, err, sizeof err) != APP_OK) {

@@ -1,6 +1,7 @@
 /* tessera demo: renders the shipped demo bathroom from every one of its cameras into out/. */
 #include "app/cli/cli.h"
-#include "cli_options.h"
+#include "cli_commands.h"
+#include "cli_stats.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -15,18 +16,9 @@ static const char *assets_dir(void)
     return env && *env ? env : TESSERA_SOURCE_DIR "/assets";
 }
 
-int app_cli_demo(int argc, char **argv)
+int cli_cmd_demo(const cli_options *args)
 {
-    cli_options o = {0};
-    int rc = cli_parse(argc, argv, 2, "demo",
-                       "output size supersample adaptive planar-mirrors backend quality", &o);
-    if (rc != CLI_OK)
-        return rc;
-    if (o.project) {
-        fprintf(stderr, "usage: tessera demo [--output DIR] [--size WxH] [--supersample 1-4] "
-                        "[--backend egl|osmesa]\n");
-        return CLI_USAGE;
-    }
+    cli_options o = *args;
     const char *out_dir = o.output ? o.output : "out";
     if (mkdir(out_dir, 0777) != 0 && errno != EEXIST) {
         fprintf(stderr, "tessera demo: cannot make folder %s: %s\n", out_dir, strerror(errno));
@@ -36,15 +28,15 @@ int app_cli_demo(int argc, char **argv)
     snprintf(project, sizeof project, "%s/projects/designed-bathroom.json", assets_dir());
     o.project = project;
     cli_session s;
-    rc = cli_session_open(&o, &s);
+    int rc = cli_session_open(&o, &s);
     if (rc != CLI_OK)
         return rc;
     fprintf(stderr, "tessera demo: %s, %d objects, %d lights, %d cameras, on %s (%s)\n",
             s.project.name, s.project.object_count, s.project.light_count, s.project.camera_count,
             rd_backend_name(rd_context_backend(s.ctx)), rd_context_description(s.ctx));
+    rd_view view = {0};
     for (int i = 0; rc == CLI_OK && i < s.project.camera_count; i++) {
         const char *cam = s.project.cameras[i].name;
-        rd_view view;
         char path[4096];
         rc = cli_session_view(&s, &o, cam, 0, 0, &view);
         if (rc != CLI_OK)
@@ -56,6 +48,10 @@ int app_cli_demo(int argc, char **argv)
             snprintf(path, sizeof path, "%s/demo-%s.exr", out_dir, cam);
             rc = cli_render_to_file(&s, &view, path);
         }
+    }
+    if (rc == CLI_OK && o.stats) { /* the last camera's frame */
+        rd_frame_stats st = rd_last_frame_stats(s.ctx);
+        rc = cli_write_stats(o.stats, &s, &o, &view, &st);
     }
     if (rc == CLI_OK) /* the print set with these renders (docs/printing.md) */
         rc = app_cli_print_demo(&s.project, out_dir);

@@ -1,7 +1,7 @@
 /* `tessera edit PROJECT SCRIPT [-o OUT] [--db CATALOG] [--quiet]`: replays an edit script
  * (docs/editing.md) against a project through the command history and saves the result
  * atomically (app_project_write). Nothing is saved when a line fails; the message names it. */
-#include "app/cli/cli.h"
+#include "cli_commands.h"
 #include "app/project/commands.h"
 #include "app/design/placement.h"
 #include "app/project/project.h"
@@ -13,16 +13,6 @@
 enum { EDIT_OK = 0, EDIT_FAILED = 1, EDIT_USAGE = 2 };
 
 #define MAX_SCRIPT_BYTES (16L * 1024 * 1024)
-
-static void edit_usage(FILE *f)
-{
-    fprintf(f, "usage: tessera edit PROJECT SCRIPT [-o OUT] [--db CATALOG] [--quiet]\n"
-               "  replays SCRIPT (one command per line: place, add, move, nudge, rotate,\n"
-               "  remove, variant, product, tile, untile, door, window, move-opening,\n"
-               "  remove-opening, corner, prewall, remove-prewall, niche, remove-niche,\n"
-               "  reflect, undo, redo; see docs/editing.md) and saves to OUT (default:\n"
-               "  PROJECT itself), atomically. SCRIPT - reads standard input.\n");
-}
 
 static char *read_script(const char *path, size_t *len, char *err, size_t err_size)
 {
@@ -83,34 +73,10 @@ static void free_project(app_project *p)
     app_project_free(p);
 }
 
-int app_cli_edit(int argc, char **argv)
+int cli_cmd_edit(const cli_options *o)
 {
-    const char *project = NULL, *script = NULL, *out = NULL, *db = NULL;
-    int quiet = 0;
-    for (int i = 2; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            edit_usage(stdout);
-            return EDIT_OK;
-        } else if ((!strcmp(argv[i], "-o") || !strcmp(argv[i], "--output")) && i + 1 < argc) {
-            out = argv[++i];
-        } else if (!strcmp(argv[i], "--db") && i + 1 < argc) {
-            db = argv[++i];
-        } else if (!strcmp(argv[i], "--quiet")) {
-            quiet = 1;
-        } else if ((argv[i][0] == '-' && argv[i][1]) || (project && script)) {
-            fprintf(stderr, "tessera edit: unexpected argument \"%s\"\n", argv[i]);
-            edit_usage(stderr);
-            return EDIT_USAGE;
-        } else if (!project) {
-            project = argv[i];
-        } else {
-            script = argv[i];
-        }
-    }
-    if (!project || !script) {
-        edit_usage(stderr);
-        return EDIT_USAGE;
-    }
+    const char *project = o->args[0], *script = o->args[1], *out = o->output, *db = o->db;
+    int quiet = o->quiet;
     char err[4096];
     size_t len = 0;
     char *text = read_script(script, &len, err, sizeof err);

@@ -1,49 +1,15 @@
 /* tessera export-glb PROJECT [-o OUT.glb]: the whole project (room, tiles, objects, placed
  * products with their parts' materials) as one GLB file that other tools open
  * (app/output/project_glb.h, docs/catalog.md "Exporting a project"). */
-#include "app/cli/cli.h"
 #include "app/output/project_glb.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 
 #include <stdio.h>
 #include <string.h>
 
-static const char usage_text[] =
-    "usage: tessera export-glb PROJECT [-o OUT.glb]\n"
-    "Writes the project (room surfaces and tiles, every object, catalog products with their\n"
-    "own part materials) as one GLB file, Y up, metres, as glTF wants (default: PROJECT with\n"
-    ".glb for .json). Products come from the catalog ($TESSERA_CATALOG, else\n"
-    "~/.cache/tessera/catalog.sqlite). docs/catalog.md, \"Exporting a project\".\n";
-
-int app_cli_export_glb(int argc, char **argv)
+int cli_cmd_export_glb(const cli_options *o)
 {
-    const char *project = NULL, *out = NULL;
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            fputs(usage_text, stdout);
-            return CLI_OK;
-        }
-        if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "tessera export-glb: option %s needs a value\n", a);
-                return CLI_USAGE;
-            }
-            out = argv[++i];
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "tessera export-glb: unknown option \"%s\"\n", a);
-            return CLI_USAGE;
-        } else if (!project) {
-            project = a;
-        } else {
-            fprintf(stderr, "tessera export-glb: one project at a time\n");
-            return CLI_USAGE;
-        }
-    }
-    if (!project) {
-        fputs(usage_text, stderr);
-        return CLI_USAGE;
-    }
+    const char *project = o->project, *out = o->output;
     char def[4096];
     if (!out) {
         size_t n = strlen(project);

@@ -1,112 +1,147 @@
+/* The `tessera` entry point: finds the command in the command table (cli_command_table.c),
+ * parses its options by the option table and runs it; `--help` anywhere prints the usage
+ * generated from the same tables. */
 #include "app/cli/cli.h"
-#include "app/measure/cli_ref.h"
+#include "app/scene/quality.h"
+#include "cli_commands.h"
+#include "cli_table.h"
 
-#include <stdio.h>
 #include <string.h>
 
-static void usage(FILE *f)
+static void print_overview(FILE *f)
 {
+    fprintf(f, "tessera: a bathroom and interior-design planner\n"
+               "\n"
+               "usage: tessera COMMAND [options]   (tessera help COMMAND, tessera COMMAND --help)\n"
+               "       tessera                     (the planner window, as tessera open)\n"
+               "\n");
+    for (const cli_command *c = cli_commands; c->name; c++) {
+        fprintf(f, "  tessera %s", c->name);
+        if (c->subcommands) {
+            for (const cli_command *s = c->subcommands; s->name; s++)
+                fprintf(f, "%c%s", s == c->subcommands ? ' ' : '|', s->name);
+            fprintf(f, " ...\n");
+        } else
+            fprintf(f, "%s%s\n", c->synopsis[0] ? " " : "", c->synopsis);
+        fprintf(f, "      %s\n", c->summary);
+    }
     fprintf(f,
-            "tessera: a bathroom and interior-design planner\n"
-            "\n"
-            "usage:\n"
-            "  tessera demo [--output DIR] [--size WxH] [--supersample N] [--backend B]\n"
-            "      renders the shipped demo bathroom from each of its cameras into out/\n"
-            "  tessera render PROJECT -o OUT [--camera NAME] [--size WxH] [--supersample N]\n"
-            "                [--backend egl|osmesa]\n"
-            "      renders a project file to PNG, JPEG, TIFF (8-bit sRGB) or EXR (linear)\n"
-            "      (any size, tiled beyond the GL limits; --shadows off|hard|soft, --dpi N,\n"
-            "      --all-views -o DIR: every stored camera)\n"
-            "  tessera panorama PROJECT -o OUT.jpg [--camera NAME] [--size 4096x2048]\n"
-            "                [--faces DIR]\n"
-            "      a 360-degree equirectangular panorama (GPano XMP) from six cube faces\n"
-            "  tessera video PROJECT -o OUT.mp4 [--seconds S] [--fps N] [--size WxH]\n"
-            "      a smooth path through the stored cameras: PNG frames, MP4 with ffmpeg\n"
-            "  tessera bench PROJECT [--size WxH] [--frames N] [--warmup N] [--camera NAME]\n"
-            "                [--backend egl|osmesa] [--csv FILE]\n"
-            "      milliseconds per frame (median and spread) against a full-screen floor\n"
-            "      (--probes every-frame|once|on-change|time-sliced, --blur prefiltered|box-mips)\n"
-            "      (--animate OBJECT: drag it 10 mm a frame; the cpu row: CPU ms, all threads)\n"
-            "  render, demo and bench take --quality draft|interactive|final|print\n"
-            "  tessera probe-bench [--size WxH] [--frames N] [--csv FILE]\n"
-            "      what reflection probes cost: per update by resolution, per object\n"
-            "  tessera reference PROJECT -o OUT.exr [--camera NAME] [--size WxH] [--samples N]\n"
-            "      the ground truth: a CPU ray tracer (Embree) with the same shading\n"
-            "  tessera compare A B [--mask M] [--heatmap OUT.png] [--worst N]\n"
-            "      RMSE and PSNR in linear RGB, over all pixels and the masked ones, and where\n"
-            "      the error is (the N blocks that carry most of it)\n"
-            "  tessera sweep PROJECT [--size WxH] [--samples N] [--csv FILE] [--plot FILE.png]\n"
-            "      the speed/accuracy trade: each reflection setting timed and compared\n"
-            "  tessera extremes [--size WxH] [--samples N] [--markdown FILE]\n"
-            "      RENDERING.md section 11: every extreme finite on the GPU and in the reference\n"
-            "  tessera catalog search|show|import|export|info|bench|model|thumbs|lod ... (--help)\n"
-            "  tessera edit PROJECT SCRIPT [-o OUT]\n"
-            "      replays an edit script (place, move, tile, undo, ...; docs/editing.md)\n"
-            "  tessera check PROJECT [--barrier-free | --wheelchair]\n"
-            "      collisions and clearances of the fixtures (exit 1 on errors)\n"
-            "  tessera print PROJECT -o OUT.pdf [--paper A4|A3] [--landscape] [--scale 1:20|fit]\n"
-            "                [--svg DIR] [--renders DIR|none]  (tessera print --help)\n"
-            "  tessera share PROJECT -o DIR [--size WxH] [--panorama-size WxH]\n"
-            "      a folder for any browser: renders, plan, 360-degree panorama, part list\n"
-            "      the print set: plan, wall elevations with tiles, renders, part list\n"
-            "  tessera quantities PROJECT [--csv] [--surplus PCT] [--offcuts] [--bench N]\n"
-            "      the tile part list (whole/cut tiles, offcuts, boxes) and bill of materials\n"
-            "  tessera surfaces PROJECT [--csv]\n"
-            "      the room's tileable surfaces: frames, holes (openings, covered) and net m2\n"
-            "  tessera export-glb PROJECT [-o OUT.glb]\n"
-            "      the whole project (room, tiles, objects, products) as GLB for other tools\n"
-            "\n"
-            "The OpenGL backend is EGL (Mesa surfaceless) unless --backend or TESSERA_GL says\n"
+            "\nThe OpenGL backend is EGL (Mesa surfaceless) unless --backend or TESSERA_GL says\n"
             "otherwise; OSMesa is the fallback.\n");
+}
+
+static int run(const cli_command *c, int argc, char **argv, int first, app_open_fn open_window);
+
+static int run_subcommand(const cli_command *c, int argc, char **argv, int first,
+                          app_open_fn open_window)
+{
+    if (first >= argc) {
+        cli_print_usage(c, stderr);
+        return CLI_USAGE;
+    }
+    const char *name = argv[first];
+    if (!strcmp(name, "--help") || !strcmp(name, "-h") || !strcmp(name, "help")) {
+        const cli_command *s =
+            first + 1 < argc ? cli_command_find(c->subcommands, argv[first + 1]) : NULL;
+        cli_print_usage(s ? s : c, stdout);
+        return CLI_OK;
+    }
+    const cli_command *s = cli_command_find(c->subcommands, name);
+    if (!s) {
+        fprintf(stderr, "tessera %s: unknown sub-command \"%s\" (try tessera %s --help)\n", c->name,
+                name, c->name);
+        return CLI_USAGE;
+    }
+    return run(s, argc, argv, first + 1, open_window);
+}
+
+static int run(const cli_command *c, int argc, char **argv, int first, app_open_fn open_window)
+{
+    if (c->subcommands)
+        return run_subcommand(c, argc, argv, first, open_window);
+    cli_options o = {0};
+    if (c->defaults)
+        c->defaults(&o);
+    o.open_window = open_window;
+    int rc = cli_parse_args(c, argc, argv, first, &o);
+    if (rc == CLI_HELP) {
+        cli_print_usage(c, stdout);
+        return CLI_OK;
+    }
+    return rc == CLI_OK ? c->run(&o) : rc;
+}
+
+/* tessera help [COMMAND [SUB-COMMAND]], tessera help --list */
+int cli_cmd_help(const cli_options *o)
+{
+    if (o->list) {
+        for (const cli_command *c = cli_commands; c->name; c++) {
+            if (!c->subcommands)
+                printf("%s\n", c->name);
+            else
+                for (const cli_command *s = c->subcommands; s->name; s++)
+                    printf("%s %s\n", c->name, s->name);
+        }
+        return CLI_OK;
+    }
+    if (o->arg_count == 0) {
+        print_overview(stdout);
+        return CLI_OK;
+    }
+    const cli_command *c = cli_command_find(cli_commands, o->args[0]);
+    if (c && o->arg_count == 2)
+        c = c->subcommands ? cli_command_find(c->subcommands, o->args[1]) : NULL;
+    if (!c) {
+        fprintf(stderr, "tessera help: no command \"%s%s%s\" (tessera --help lists them)\n",
+                o->args[0], o->arg_count == 2 ? " " : "", o->arg_count == 2 ? o->args[1] : "");
+        return CLI_USAGE;
+    }
+    cli_print_usage(c, stdout);
+    return CLI_OK;
+}
+
+int cli_cmd_open(const cli_options *o)
+{
+    if (!o->open_window) {
+        fprintf(stderr, "tessera open: this program has no planner window\n");
+        return CLI_FAILED;
+    }
+    app_open_request r = {.project = o->project,
+                          .script = o->script,
+                          .quality = o->quality ? o->quality->name : NULL,
+                          .frame_log = o->frame_log,
+                          .width = o->width,
+                          .height = o->height,
+                          .fullscreen = o->fullscreen};
+    return o->open_window(&r);
+}
+
+int app_cli_run(int argc, char **argv, app_open_fn open_window)
+{
+    const cli_command *open = cli_command_find(cli_commands, "open");
+    if (argc < 2 && open_window)
+        return run(open, argc, argv, 1, open_window);
+    if (argc < 2) {
+        print_overview(stderr);
+        return CLI_USAGE;
+    }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
+        print_overview(stdout);
+        return CLI_OK;
+    }
+    if (!strcmp(argv[1], "--version")) {
+        printf("tessera 0.1.0\n");
+        return CLI_OK;
+    }
+    const cli_command *c = cli_command_find(cli_commands, argv[1]);
+    if (!c) {
+        fprintf(stderr, "tessera: unknown command \"%s\" (try tessera --help)\n", argv[1]);
+        return CLI_USAGE;
+    }
+    return run(c, argc, argv, 2, open_window);
 }
 
 int app_cli_main(int argc, char **argv)
 {
-    if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") ||
-        !strcmp(argv[1], "help")) {
-        usage(argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
-    }
-    if (!strcmp(argv[1], "render"))
-        return app_cli_render(argc, argv);
-    if (!strcmp(argv[1], "panorama"))
-        return app_cli_panorama(argc, argv);
-    if (!strcmp(argv[1], "video"))
-        return app_cli_video(argc, argv);
-    if (!strcmp(argv[1], "demo"))
-        return app_cli_demo(argc, argv);
-    if (!strcmp(argv[1], "bench"))
-        return app_cli_bench(argc, argv);
-    if (!strcmp(argv[1], "probe-bench"))
-        return app_cli_probe_bench(argc, argv);
-    if (!strcmp(argv[1], "reference"))
-        return app_cli_reference(argc, argv);
-    if (!strcmp(argv[1], "compare"))
-        return app_cli_compare(argc, argv);
-    if (!strcmp(argv[1], "sweep"))
-        return app_cli_sweep(argc, argv);
-    if (!strcmp(argv[1], "extremes"))
-        return app_cli_extremes(argc, argv);
-    if (!strcmp(argv[1], "catalog"))
-        return app_cli_catalog(argc, argv);
-    if (!strcmp(argv[1], "edit"))
-        return app_cli_edit(argc, argv);
-    if (!strcmp(argv[1], "check"))
-        return app_cli_check(argc, argv);
-    if (!strcmp(argv[1], "print"))
-        return app_cli_print(argc, argv);
-    if (!strcmp(argv[1], "quantities"))
-        return app_cli_quantities(argc, argv);
-    if (!strcmp(argv[1], "surfaces"))
-        return app_cli_surfaces(argc, argv);
-    if (!strcmp(argv[1], "export-glb"))
-        return app_cli_export_glb(argc, argv);
-    if (!strcmp(argv[1], "share"))
-        return app_cli_share(argc, argv);
-    if (!strcmp(argv[1], "--version")) {
-        printf("tessera 0.1.0\n");
-        return 0;
-    }
-    fprintf(stderr, "tessera: unknown command \"%s\" (try tessera --help)\n", argv[1]);
-    return 2;
+    return app_cli_run(argc, argv, NULL);
 }

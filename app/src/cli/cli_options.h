@@ -1,52 +1,83 @@
+/* The options of every `tessera` command in one struct, filled from the option table
+ * (cli_option_table.c) by cli_parse_args; a command reads the fields it declared in the command
+ * table (cli_command_table.c). Zero means "not given" throughout, so a command applies its own
+ * default when a field is zero, and an rd_switch field left RD_SWITCH_UNSET leaves the choice
+ * to the quality preset. */
 #ifndef APP_CLI_OPTIONS_H
 #define APP_CLI_OPTIONS_H
 
+#include "app/cli/cli.h"
 #include "app/project/project.h"
 #include "app/scene/scene_build.h"
 #include "render/render.h"
 
 enum { CLI_OK = 0, CLI_FAILED = 1, CLI_USAGE = 2 };
 
-/* Options shared by the sub-commands that render; zero = not given. */
+#define CLI_MAX_ARGS 64
+
+struct cli_command;
+struct app_quality;
+
 typedef struct cli_options {
-    const char *project;
-    const char *output;
-    const char *camera;
-    const char *csv;
-    const char *plot;     /* --plot: a PNG of the sweep */
-    const char *markdown; /* --markdown: the sweep's table */
-    const char *animate;  /* --animate: the object the sweep moves */
-    int samples;          /* --samples: Monte-Carlo rays per glossy lookup (reference) */
-    const struct app_quality *quality; /* --quality: a preset (app/scene/quality.h) */
-    int width, height;
+    const struct cli_command *command; /* the command being run (for its usage) */
+    const char *args[CLI_MAX_ARGS];    /* the positional arguments, in order */
+    int arg_count;
+    const char *project;     /* args[0]: most commands' one positional argument */
+    app_open_fn open_window; /* `tessera open`: the program's window, if it has one */
+
+    /* Files and names. */
+    const char *output, *camera, *csv, *plot, *markdown, *animate, *faces, *stats;
+    const char *db, *category, *manufacturer, *variant, *out_dir, *svg, *renders, *customer, *date,
+        *mask, *heatmap, *png, *script, *frame_log;
+
+    /* The image and the renderer. */
+    int width, height;               /* --size WxH */
+    int pano_width, pano_height;     /* --panorama-size WxH */
+    int render_width, render_height; /* --render-size WxH (print) */
     int supersample;
-    int adaptive;         /* --adaptive: 0 the preset's, 1 on, 2 off */
-    int planar_mirrors;   /* --planar-mirrors: 0 the preset's, 1 on, 2 off */
-    int room_probe;       /* --room-probe: 0 the preset's (on, off in print), 1 on, 2 off */
-    int exact_lamps;      /* --exact-lamps: 0 the default (on), 1 on, 2 off */
-    int self_reflections; /* --self-reflections: 0 the preset's, 1 on, 2 off */
+    int samples; /* --samples: Monte-Carlo rays per glossy lookup (reference) */
+    const struct app_quality *quality; /* --quality: a preset (app/scene/quality.h) */
+    rd_switch adaptive, planar_mirrors, room_probe, exact_lamps, self_reflections;
     int self_rays;        /* --self-reflections N: its lobe directions a sample; 0 = default */
-    int probe_resolution; /* --probe-resolution: texels a face side; 0 = the preset's */
-    int frames, warmup;
+    int probe_resolution; /* texels a face side; 0 = the preset's */
     rd_backend backend;
-    rd_probe_update probes; /* --probes: the scene's default update policy; 0 = the project's */
-    rd_blur_method blur;    /* --blur */
-    int ambient;            /* --ambient: 0 the project's, 1 constant, 2 sh9 */
-    int shadows;            /* --shadows: 0 the preset's (or off), else rd_shadow_mode + 1 */
-    int dpi;                /* --dpi: pixels per inch written into the image; 0 = none */
-    int tile;               /* --tile: largest tile side in pixels; 0 = the GL limit */
-    const char *faces;      /* --faces: folder for a panorama's six cube faces */
-    double seconds;         /* --seconds: a video's length */
-    int fps;                /* --fps: a video's frame rate */
+    rd_probe_update probes; /* the scene's default update policy; 0 = the project's */
+    rd_blur_method blur;
+    int ambient; /* 0 the project's, 1 constant, 2 sh9 */
+    int shadows; /* 0 the preset's (or off), else rd_shadow_mode + 1 */
+    int dpi, tile;
+
+    /* Timing, video, reference. */
+    int frames, warmup, fps, threads;
+    long long seed;
+    double seconds;
+
+    /* Comparison. */
+    int worst, block;
+    double heat_max;
+
+    /* Catalog, quantities, checks, print. */
+    int limit, queries, thumb_size, bench_repeats;
+    double max_width, fraction, surplus;
+    int paper, scale; /* app_paper, app_print_scale (app/output/print.h) */
+
+    /* Flags. */
+    int all_views, dry_run, barrier_free, wheelchair, quiet, csv_table, offcuts, bench_mosaic,
+        landscape, no_clearances, fullscreen, list;
 } cli_options;
 
-/* Parses argv[first..]; prints the problem and returns CLI_USAGE on a bad option. `allowed`
- * lists the long options this sub-command takes, e.g. "camera size backend". */
-int cli_parse(int argc, char **argv, int first, const char *command, const char *allowed,
-              cli_options *o);
+/* Prints `tessera CMD`'s usage to stderr and returns CLI_USAGE: for a command that finds its
+ * required arguments missing. */
+int cli_usage_error(const cli_options *o);
 
-/* "1280x720" -> 1280, 720; each side 1..65535 (larger sizes fail later with the limit named). */
+/* "1280x720" -> 1280, 720; each side 1..1000000 (larger sizes fail later with the limit named). */
 int cli_parse_size(const char *text, int *w, int *h);
+
+/* The resolved on/off of a switch: `set` unless unset, else `preset`. */
+static inline int cli_switch_on(rd_switch set, int preset)
+{
+    return set == RD_SWITCH_UNSET ? preset : set == RD_SWITCH_ON;
+}
 
 /* Everything a render needs, opened from the options; cli_session_close undoes it. */
 typedef struct cli_session {

@@ -4,7 +4,7 @@
  * gets the GPano XMP that panorama viewers read (app/output/panorama.h, docs/rendering.md). */
 #include "app/cli/cli.h"
 #include "app/output/panorama.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 #include "cli_print_render.h"
 #include "render/image_io.h"
 
@@ -14,11 +14,6 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
-
-#define USAGE                                                                                      \
-    "usage: tessera panorama PROJECT -o OUT.(jpg|png|tif) [--camera NAME] [--size 4096x2048]\n"    \
-    "                        [--faces DIR] [--quality Q] [--shadows off|hard|soft]\n"              \
-    "                        [--supersample 1-4] [--backend egl|osmesa]\n"
 
 static int is_jpeg(const char *path)
 {
@@ -104,20 +99,12 @@ static int make_panorama(cli_session *s, const cli_options *o, int w, int h)
     return rc;
 }
 
-int app_cli_panorama(int argc, char **argv)
+int cli_cmd_panorama(const cli_options *args)
 {
-    cli_options o = {0};
-    int rc = cli_parse(argc, argv, 2, "panorama",
-                       "output camera size supersample adaptive planar-mirrors backend probes blur "
-                       "ambient quality "
-                       "shadows faces tile",
-                       &o);
-    if (rc != CLI_OK)
-        return rc;
-    if (!o.project || !o.output) {
-        fprintf(stderr, USAGE);
-        return CLI_USAGE;
-    }
+    cli_options o = *args;
+    int rc = CLI_OK;
+    if (!o.project || !o.output)
+        return cli_usage_error(&o);
     int w = o.width ? o.width : 4096, h = o.height ? o.height : 2048;
     if (w != 2 * h) {
         fprintf(stderr,

@@ -5,7 +5,7 @@
 #include "app/cli/cli.h"
 #include "app/output/print.h"
 #include "app/scene/quality.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -19,19 +19,6 @@ static const char *assets_dir(void)
 {
     const char *env = getenv("TESSERA_ASSETS");
     return env && *env ? env : TESSERA_SOURCE_DIR "/assets";
-}
-
-static void usage(FILE *f)
-{
-    fprintf(f, "usage: tessera print PROJECT -o OUT.pdf [--paper A4|A3] [--landscape]\n"
-               "                     [--scale 1:20|1:25|1:50|fit] [--svg DIR]\n"
-               "                     [--renders DIR|none] [--render-size WxH] [--customer NAME]\n"
-               "                     [--date TEXT] [--no-clearances] [--backend egl|osmesa]\n"
-               "                     [--quality draft|interactive|final|print]\n"
-               "  writes the print set: floor plan, wall elevations with the tile layout, renders\n"
-               "  of the project's cameras (960x540, --render-size, quality final, or the PNG\n"
-               "  files in --renders DIR), part list and quotation. --svg DIR also writes each\n"
-               "  page as DIR/page-NN.svg.\n");
 }
 
 typedef struct image_list {
@@ -141,91 +128,20 @@ static int render_cameras(const char *project, rd_backend backend, const app_qua
     return rc;
 }
 
-int app_cli_print(int argc, char **argv)
+int cli_cmd_print(const cli_options *o)
 {
-    const char *project = NULL, *output = NULL, *svg = NULL, *renders = NULL;
-    const char *customer = NULL, *date = NULL, *backend_name = NULL;
-    const app_quality *quality = app_quality_find("final");
-    int render_w = 960, render_h = 540;
-    app_print_options po = {0};
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            usage(stdout);
-            return CLI_OK;
-        } else if (!strcmp(a, "--landscape")) {
-            po.landscape = 1;
-        } else if (!strcmp(a, "--no-clearances")) {
-            po.no_clearances = 1;
-        } else if (a[0] == '-' && a[1]) {
-            if (!v) {
-                fprintf(stderr, "tessera print: %s needs a value\n", a);
-                return CLI_USAGE;
-            }
-            i++;
-            if (!strcmp(a, "-o") || !strcmp(a, "--output"))
-                output = v;
-            else if (!strcmp(a, "--svg"))
-                svg = v;
-            else if (!strcmp(a, "--renders"))
-                renders = v;
-            else if (!strcmp(a, "--customer"))
-                customer = v;
-            else if (!strcmp(a, "--date"))
-                date = v;
-            else if (!strcmp(a, "--backend"))
-                backend_name = v;
-            else if (!strcmp(a, "--quality")) {
-                quality = app_quality_find(v);
-                if (!quality) {
-                    fprintf(stderr, "tessera print: --quality %s: use one of %s\n", v,
-                            app_quality_names());
-                    return CLI_USAGE;
-                }
-            } else if (!strcmp(a, "--paper")) {
-                if (!app_paper_parse(v, &po.paper)) {
-                    fprintf(stderr, "tessera print: --paper %s: use A4 or A3\n", v);
-                    return CLI_USAGE;
-                }
-            } else if (!strcmp(a, "--scale")) {
-                if (!app_print_scale_parse(v, &po.scale)) {
-                    fprintf(stderr, "tessera print: --scale %s: use 1:20, 1:25, 1:50 or fit\n", v);
-                    return CLI_USAGE;
-                }
-            } else if (!strcmp(a, "--render-size")) {
-                if (!cli_parse_size(v, &render_w, &render_h) || render_w > 8192 ||
-                    render_h > 8192) {
-                    fprintf(stderr, "tessera print: --render-size %s: use WxH up to 8192\n", v);
-                    return CLI_USAGE;
-                }
-            } else {
-                fprintf(stderr, "tessera print: unknown option %s\n", a);
-                usage(stderr);
-                return CLI_USAGE;
-            }
-        } else if (!project) {
-            project = a;
-        } else {
-            fprintf(stderr, "tessera print: one project only (got %s and %s)\n", project, a);
-            return CLI_USAGE;
-        }
-    }
-    if (!project || !output) {
-        usage(stderr);
-        return CLI_USAGE;
-    }
-    rd_backend backend = RD_BACKEND_DEFAULT;
-    if (backend_name) {
-        if (!strcmp(backend_name, "egl"))
-            backend = RD_BACKEND_EGL;
-        else if (!strcmp(backend_name, "osmesa"))
-            backend = RD_BACKEND_OSMESA;
-        else {
-            fprintf(stderr, "tessera print: --backend %s: use egl or osmesa\n", backend_name);
-            return CLI_USAGE;
-        }
-    }
+    const char *project = o->project, *output = o->output, *svg = o->svg, *renders = o->renders;
+    const char *customer = o->customer, *date = o->date;
+    const app_quality *quality = o->quality ? o->quality : app_quality_find("final");
+    int render_w = o->render_width ? o->render_width : 960;
+    int render_h = o->render_height ? o->render_height : 540;
+    rd_backend backend = o->backend;
+    app_print_options po = {.paper = (app_paper)o->paper,
+                            .landscape = o->landscape,
+                            .scale = o->scale,
+                            .no_clearances = o->no_clearances};
+    if (!output)
+        return cli_usage_error(o);
     if (svg) {
         struct stat st;
         if (stat(svg, &st) != 0 && mkdir(svg, 0777) != 0) {

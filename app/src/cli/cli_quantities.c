@@ -9,7 +9,7 @@
 #include "app/cli/cli.h"
 #include "app/design/quantities.h"
 #include "app/design/room_surfaces.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 
 #include <errno.h>
 #include <math.h>
@@ -17,80 +17,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
-
-typedef struct q_options {
-    const char *project, *db;
-    int csv, offcuts, bench, mosaic;
-    double surplus;
-} q_options;
-
-static const char usage_text[] =
-    "usage: tessera quantities PROJECT [--csv] [--surplus PCT] [--offcuts] [--db PATH]\n"
-    "       tessera quantities PROJECT --bench N      (re-layout timing, N repeats)\n"
-    "       tessera quantities --bench-mosaic [--bench N]  (10 surfaces, 30 x 30 mm mosaic)\n"
-    "The tile part list (whole and cut tiles, m2, offcut reuse, boxes with the surplus, default\n"
-    "10 %) and the bill of materials with prices and VAT from the catalog (--db PATH, else\n"
-    "$TESSERA_CATALOG, else ~/.cache/tessera/catalog.sqlite).\n";
-
-static int parse(int argc, char **argv, q_options *o)
-{
-    memset(o, 0, sizeof *o);
-    o->surplus = 10.0;
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            fputs(usage_text, stdout);
-            return -1;
-        } else if (!strcmp(a, "--csv"))
-            o->csv = 1;
-        else if (!strcmp(a, "--offcuts"))
-            o->offcuts = 1;
-        else if (!strcmp(a, "--bench-mosaic"))
-            o->mosaic = 1;
-        else if ((!strcmp(a, "--surplus") || !strcmp(a, "--db") || !strcmp(a, "--bench"))) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "tessera quantities: %s needs a value\n", a);
-                return CLI_USAGE;
-            }
-            const char *v = argv[++i];
-            if (!strcmp(a, "--db")) {
-                o->db = v;
-                continue;
-            }
-            char *end;
-            errno = 0;
-            double x = strtod(v, &end);
-            int bad = end == v || *end || errno || !isfinite(x);
-            if (!strcmp(a, "--surplus")) {
-                if (bad || x < 0 || x > 1000) {
-                    fprintf(stderr,
-                            "tessera quantities: --surplus wants 0..1000 (%%), got \"%s\"\n", v);
-                    return CLI_USAGE;
-                }
-                o->surplus = x;
-            } else {
-                if (bad || x < 1 || x > 100000 || x != floor(x)) {
-                    fprintf(stderr, "tessera quantities: --bench wants 1..100000, got \"%s\"\n", v);
-                    return CLI_USAGE;
-                }
-                o->bench = (int)x;
-            }
-        } else if (a[0] == '-' && a[1]) {
-            fprintf(stderr, "tessera quantities: unknown option %s\n%s", a, usage_text);
-            return CLI_USAGE;
-        } else if (!o->project)
-            o->project = a;
-        else {
-            fprintf(stderr, "tessera quantities: one project only (got \"%s\")\n", a);
-            return CLI_USAGE;
-        }
-    }
-    if (!o->project && !o->mosaic) {
-        fputs(usage_text, stderr);
-        return CLI_USAGE;
-    }
-    return CLI_OK;
-}
 
 static int open_catalog(const char *db_path, cat_db **db)
 {
@@ -460,27 +386,31 @@ done:
     return rc;
 }
 
-int app_cli_quantities(int argc, char **argv)
+void cli_defaults_quantities(cli_options *o)
 {
-    q_options o;
-    int rc = parse(argc, argv, &o);
-    if (rc != CLI_OK)
-        return rc < 0 ? CLI_OK : rc;
-    if (o.mosaic)
-        return bench_mosaic(o.bench > 0 ? o.bench : 5);
+    o->surplus = 10.0;
+}
+
+int cli_cmd_quantities(const cli_options *o)
+{
+    int rc = CLI_OK;
+    if (o->bench_mosaic)
+        return bench_mosaic(o->bench_repeats > 0 ? o->bench_repeats : 5);
+    if (!o->project)
+        return cli_usage_error(o);
     char err[2048];
     app_project p;
-    if (app_project_read(o.project, &p, err, sizeof err) != APP_OK) {
+    if (app_project_read(o->project, &p, err, sizeof err) != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         return CLI_USAGE;
     }
     cat_db *db = NULL;
-    if ((rc = open_catalog(o.db, &db)) != CLI_OK) {
+    if ((rc = open_catalog(o->db, &db)) != CLI_OK) {
         app_project_free(&p);
         return rc;
     }
-    if (o.bench > 0) {
-        rc = bench_project(&p, db, o.bench);
+    if (o->bench_repeats > 0) {
+        rc = bench_project(&p, db, o->bench_repeats);
         cat_db_close(db);
         app_project_free(&p);
         return rc;
@@ -493,23 +423,23 @@ int app_cli_quantities(int argc, char **argv)
     memset(&bom, 0, sizeof bom);
     app_result res = app_room_tile_layouts(&p, db, &layouts, &n, err, sizeof err);
     app_quantity_options qo = app_quantity_options_default();
-    qo.surplus_percent = o.surplus;
+    qo.surplus_percent = o->surplus;
     if (res == APP_OK)
         res = app_quantities_compute(layouts, n, &qo, &q, err, sizeof err);
     if (res == APP_OK)
         res = app_bom_build(db, &p, &q, &bom, err, sizeof err);
     if (res != APP_OK) {
-        fprintf(stderr, "tessera: %s: %s\n", o.project, err);
+        fprintf(stderr, "tessera: %s: %s\n", o->project, err);
         rc = res == APP_ERR_OUT_OF_MEMORY || res == APP_ERR_IO ? CLI_FAILED : CLI_USAGE;
     } else {
         if (p.tiling_count == 0)
-            fprintf(o.csv ? stderr : stdout,
-                    "%s: no tilings yet (no surface of this project is tiled)\n", o.project);
+            fprintf(o->csv_table ? stderr : stdout,
+                    "%s: no tilings yet (no surface of this project is tiled)\n", o->project);
         else
-            print_tiles(&q, &bom, o.csv);
-        if (o.offcuts && p.tiling_count > 0)
-            print_offcuts(&q, layouts, o.csv);
-        print_bom(&bom, o.csv);
+            print_tiles(&q, &bom, o->csv_table);
+        if (o->offcuts && p.tiling_count > 0)
+            print_offcuts(&q, layouts, o->csv_table);
+        print_bom(&bom, o->csv_table);
     }
     app_bom_free(&bom);
     app_quantities_free(&q);

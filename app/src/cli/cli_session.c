@@ -9,7 +9,15 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
+
+double cli_now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
 
 int cli_check_output_path(const char *path)
 {
@@ -66,18 +74,20 @@ int cli_session_open(const cli_options *o, cli_session *s)
         sh.mode = (rd_shadow_mode)(o->shadows - 1);
         rd_scene_set_shadows(s->scene.scene, &sh);
     }
+    /* Each switch given on the command line overrides the preset's; unset leaves it. */
     if (o->probes || o->blur || o->ambient || o->planar_mirrors || o->room_probe ||
         o->exact_lamps || o->self_reflections || o->probe_resolution) {
         rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
         if (o->planar_mirrors)
-            d.planar_mirrors = o->planar_mirrors == 1;
+            d.planar_mirrors = o->planar_mirrors;
         if (o->room_probe)
-            d.room_probe_off = o->room_probe == 2;
+            d.room_probe = o->room_probe;
         if (o->exact_lamps)
-            d.emitters_in_probes = o->exact_lamps == 2;
-        if (o->self_reflections == 2)
+            d.exact_lamps = o->exact_lamps;
+        if (o->self_reflections == RD_SWITCH_OFF)
             d.self_reflections = 0;
-        else if (o->self_reflections == 1 && (o->self_rays > 0 || d.self_reflections <= 0))
+        else if (o->self_reflections == RD_SWITCH_ON &&
+                 (o->self_rays > 0 || d.self_reflections <= 0))
             d.self_reflections = o->self_rays > 0 ? o->self_rays : APP_SELF_REFLECTION_RAYS;
         if (o->probe_resolution)
             d.resolution = o->probe_resolution;
@@ -117,7 +127,7 @@ int cli_session_view(const cli_session *s, const cli_options *o, const char *cam
     if (o->supersample)
         out->supersample = o->supersample;
     if (o->adaptive)
-        out->adaptive = o->adaptive == 1;
+        out->adaptive = o->adaptive == RD_SWITCH_ON;
     return CLI_OK;
 }
 

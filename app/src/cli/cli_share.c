@@ -4,7 +4,8 @@
  * the plan and elevations (SVG pages of the print set), an interactive 360-degree panorama, the
  * part list with prices, and the print set as PDF. It composes the commands that make each
  * part (render --all-views, panorama, print), so the folder shows exactly what they make. */
-#include "app/cli/cli.h"
+#include "cli_commands.h"
+#include "cli_table.h"
 #include "app/design/placement.h"
 #include "app/project/project.h"
 #include "app/design/quantities.h"
@@ -18,10 +19,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-
-#define USAGE                                                                                      \
-    "usage: tessera share PROJECT -o DIR [--size WxH] [--panorama-size WxH] [--camera NAME]\n"     \
-    "  a folder to open in any browser: renders, plan, 360-degree panorama, part list, PDF\n"
 
 #define MAX_FILES 64
 
@@ -72,14 +69,6 @@ static int list_files(const char *dir, const char *sub, const char *suffix, char
             titles[i][strlen(titles[i]) - strlen(suffix)] = 0;
     }
     return n;
-}
-
-static int run(int (*command)(int, char **), char **argv)
-{
-    int argc = 0;
-    while (argv[argc])
-        argc++;
-    return command(argc, argv);
 }
 
 static char *money(long long cents, const char *currency)
@@ -159,38 +148,18 @@ static int read_file(const char *path, uint8_t **out, size_t *size)
     return bad;
 }
 
-int app_cli_share(int argc, char **argv)
+/* A sub-command run as if typed: its options as the table would fill them. */
+static int run(int (*command)(const cli_options *), const char *name, cli_options *o)
 {
-    const char *project = NULL, *out = NULL, *size = "1280x720", *pano_size = "4096x2048",
-               *camera = NULL;
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            printf(USAGE);
-            return 0;
-        }
-        if (a[0] == '-' && !v) {
-            fprintf(stderr, "tessera share: %s needs a value\n" USAGE, a);
-            return 2;
-        }
-        if (!strcmp(a, "-o") || !strcmp(a, "--output"))
-            out = argv[++i];
-        else if (!strcmp(a, "--size"))
-            size = argv[++i];
-        else if (!strcmp(a, "--panorama-size"))
-            pano_size = argv[++i];
-        else if (!strcmp(a, "--camera"))
-            camera = argv[++i];
-        else if (a[0] == '-') {
-            fprintf(stderr, "tessera share: unknown option %s\n" USAGE, a);
-            return 2;
-        } else
-            project = a;
-    }
-    if (!project || !out) {
-        fprintf(stderr, USAGE);
-        return 2;
-    }
+    o->command = cli_command_find(cli_commands, name);
+    return command(o);
+}
+
+int cli_cmd_share(const cli_options *o)
+{
+    const char *project = o->project, *out = o->output, *camera = o->camera;
+    if (!out)
+        return cli_usage_error(o);
     app_project p;
     char err[1024];
     if (app_project_read(project, &p, err, sizeof err) != APP_OK) {
@@ -207,18 +176,23 @@ int app_cli_share(int argc, char **argv)
     /* 1. every stored viewpoint */
     fprintf(stderr, "tessera share: renders of %d viewpoints\n", p.camera_count);
     if (!rc && p.camera_count > 0) {
-        char *cmd[] = {"tessera", "render", (char *)project, "--all-views", "-o",
-                       renders,   "--size", (char *)size,    NULL};
-        rc = run(app_cli_render, cmd);
+        cli_options r = {.project = project,
+                         .output = renders,
+                         .all_views = 1,
+                         .width = o->width ? o->width : 1280,
+                         .height = o->height ? o->height : 720};
+        rc = run(cli_cmd_render, "render", &r);
     }
     /* 2. the panorama from the first (or the named) viewpoint */
     int has_pano = 0;
     if (!rc && p.camera_count > 0) {
         fprintf(stderr, "tessera share: 360-degree panorama\n");
-        char *cmd[] = {"tessera",      "panorama", (char *)project,   "-o",
-                       pano,           "--size",   (char *)pano_size, camera ? "--camera" : NULL,
-                       (char *)camera, NULL};
-        rc = run(app_cli_panorama, cmd);
+        cli_options r = {.project = project,
+                         .output = pano,
+                         .camera = camera,
+                         .width = o->pano_width ? o->pano_width : 4096,
+                         .height = o->pano_height ? o->pano_height : 2048};
+        rc = run(cli_cmd_panorama, "panorama", &r);
         uint8_t *jpeg = NULL;
         size_t n = 0;
         if (!rc && !read_file(pano, &jpeg, &n) &&
@@ -232,9 +206,8 @@ int app_cli_share(int argc, char **argv)
     /* 3. the print set, its pages also as SVG for the page */
     if (!rc) {
         fprintf(stderr, "tessera share: print set\n");
-        char *cmd[] = {"tessera", "print", (char *)project, "-o",    pdf,
-                       "--svg",   plan,    "--renders",     renders, NULL};
-        rc = run(app_cli_print, cmd);
+        cli_options r = {.project = project, .output = pdf, .svg = plan, .renders = renders};
+        rc = run(cli_cmd_print, "print", &r);
     }
     /* 4. the page */
     char *files[MAX_FILES] = {0}, *titles[MAX_FILES] = {0};

@@ -1,7 +1,7 @@
 /* tessera surfaces PROJECT [--csv]: the room's tileable surfaces (app/design/room_surfaces.h) with
  * their frames, outline and hole counts and net areas, as the tile layouts see them (the
  * project's baths and shower trays from the catalog covering what they stand against). */
-#include "app/cli/cli.h"
+#include "cli_commands.h"
 #include "app/project/project.h"
 #include "app/design/room_surfaces.h"
 #include "scene/scene_build_internal.h"
@@ -10,26 +10,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-int app_cli_surfaces(int argc, char **argv)
+int cli_cmd_surfaces(const cli_options *o)
 {
-    const char *path = NULL;
-    int csv = 0;
-    for (int i = 2; i < argc; i++) {
-        if (!strcmp(argv[i], "--csv"))
-            csv = 1;
-        else if (argv[i][0] == '-' || path) {
-            fprintf(stderr,
-                    "tessera surfaces: unexpected argument \"%s\"\n"
-                    "usage: tessera surfaces PROJECT [--csv]\n",
-                    argv[i]);
-            return 2;
-        } else
-            path = argv[i];
-    }
-    if (!path) {
-        fprintf(stderr, "usage: tessera surfaces PROJECT [--csv]\n");
-        return 2;
-    }
+    const char *path = o->project;
+    int csv = o->csv_table;
     app_project p;
     char err[1024];
     if (app_project_read(path, &p, err, sizeof err) != APP_OK) {

@@ -3,7 +3,7 @@
  * written as PNG into OUT_frames/ and encoded to H.264 MP4 with ffmpeg when it is installed. */
 #include "app/output/camera_path.h"
 #include "app/cli/cli.h"
-#include "cli_options.h"
+#include "cli_commands.h"
 #include "cli_print_render.h"
 #include "render/image_io.h"
 
@@ -14,10 +14,6 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#define USAGE                                                                                      \
-    "usage: tessera video PROJECT -o OUT.mp4 [--seconds S] [--fps N] [--size WxH]\n"               \
-    "                     [--quality Q] [--shadows off|hard|soft] [--supersample 1-4]\n"
 
 /* Whether an executable `name` is on PATH. */
 static int on_path(const char *name)
@@ -106,20 +102,12 @@ static int render_frames(cli_session *s, const cli_options *o, const char *dir, 
     return rc;
 }
 
-int app_cli_video(int argc, char **argv)
+int cli_cmd_video(const cli_options *args)
 {
-    cli_options o = {0};
-    int rc = cli_parse(argc, argv, 2, "video",
-                       "output size supersample adaptive planar-mirrors backend probes blur "
-                       "ambient quality shadows "
-                       "seconds fps tile",
-                       &o);
-    if (rc != CLI_OK)
-        return rc;
-    if (!o.project || !o.output) {
-        fprintf(stderr, USAGE);
-        return CLI_USAGE;
-    }
+    cli_options o = *args;
+    int rc = CLI_OK;
+    if (!o.project || !o.output)
+        return cli_usage_error(&o);
     double seconds = o.seconds > 0.0 ? o.seconds : 8.0;
     int fps = o.fps ? o.fps : 25;
     int frames = (int)(seconds * fps + 0.5);

@@ -3,7 +3,8 @@
  * same size). Frames and floors are interleaved so drift in the machine's speed hits both. */
 #include "app/cli/cli.h"
 #include "app/measure/stats.h"
-#include "cli/cli_options.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_stats.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -84,22 +85,18 @@ static int write_csv(const char *path, const double *frame, const double *floor_
     return fclose(f) == 0 ? CLI_OK : CLI_FAILED;
 }
 
-int app_cli_bench(int argc, char **argv)
+void cli_defaults_bench(cli_options *o)
 {
-    cli_options o = {.frames = 30, .warmup = 5};
-    int rc = cli_parse(argc, argv, 2, "bench",
-                       "camera size frames warmup backend csv probes blur ambient quality animate "
-                       "exact-lamps self-reflections probe-resolution",
-                       &o);
-    if (rc != CLI_OK)
-        return rc;
-    if (!o.project) {
-        fprintf(stderr, "usage: tessera bench PROJECT [--size WxH] [--frames N] [--warmup N] "
-                        "[--camera NAME] [--backend egl|osmesa] [--csv FILE] [--animate OBJECT] "
-                        "[--exact-lamps on|off] [--self-reflections on|off|1-16] "
-                        "[--probe-resolution 16-2048]\n");
-        return CLI_USAGE;
-    }
+    o->frames = 30;
+    o->warmup = 5;
+}
+
+int cli_cmd_bench(const cli_options *args)
+{
+    cli_options o = *args;
+    int rc = CLI_OK;
+    if (!o.project)
+        return cli_usage_error(&o);
     cli_session s;
     rc = cli_session_open(&o, &s);
     if (rc != CLI_OK)
@@ -154,6 +151,8 @@ int app_cli_bench(int argc, char **argv)
                 i < o.warmup ? i + 1 : i + 1 - o.warmup, i < o.warmup ? o.warmup : o.frames);
     }
     fprintf(stderr, "\n");
+    if (rc == CLI_OK && o.stats) /* the last timed frame's */
+        rc = cli_write_stats(o.stats, &s, &o, &view, &stats[o.frames - 1]);
     if (rc == CLI_OK && o.csv)
         rc = write_csv(o.csv, frame, floor_ms, cpu, stats, o.frames);
     if (rc == CLI_OK) {

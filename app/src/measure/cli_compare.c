@@ -2,9 +2,8 @@
  * RMSE and PSNR in linear RGB between two images, over all pixels and over a mask, a heat map
  * of the per-pixel error, and the blocks that carry most of it (RENDERING.md section 10,
  * docs/reference.md). */
-#include "app/measure/cli_ref.h"
 #include "app/measure/image_compare.h"
-#include "cli/cli_options.h"
+#include "cli/cli_commands.h"
 #include "render/image_io.h"
 
 #include <errno.h>
@@ -12,10 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define USAGE                                                                                      \
-    "usage: tessera compare A B [--mask MASK] [--heatmap OUT.png] [--heat-max E] [--worst N "      \
-    "[--block PX]]\n"
 
 /* An image as linear RGBA floats: EXR/HDR as stored, 8-bit files decoded from sRGB. */
 typedef struct linear_image {
@@ -65,81 +60,9 @@ static const char *number(double x, char *buf, size_t size)
     return buf;
 }
 
-typedef struct compare_args {
-    const char *a, *b, *mask, *heatmap;
-    double heat_max;
-    int worst, block; /* --worst N blocks of --block PX (default 20) */
-} compare_args;
-
-/* A whole number in [lo, hi] for option `name`, or CLI_USAGE with a message. */
-static int parse_count(const char *name, const char *v, int lo, int hi, int *out)
+/* What the table-driven parser cannot check: --block only sizes --worst's blocks. */
+static int check_args(const cli_options *o)
 {
-    char *end;
-    errno = 0;
-    long x = strtol(v, &end, 10);
-    if (end == v || *end || errno || x < lo || x > hi) {
-        fprintf(stderr, "tessera compare: bad value \"%s\" for %s (expected %d to %d)\n", v, name,
-                lo, hi);
-        return CLI_USAGE;
-    }
-    *out = (int)x;
-    return CLI_OK;
-}
-
-static int parse_args(int argc, char **argv, compare_args *o)
-{
-    const char **a = &o->a, **b = &o->b, **mask = &o->mask, **heatmap = &o->heatmap;
-    double *heat_max = &o->heat_max;
-    for (int i = 2; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!strcmp(arg, "--worst") || !strcmp(arg, "--block")) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "tessera compare: option %s needs a value\n", arg);
-                return CLI_USAGE;
-            }
-            int rc = !strcmp(arg, "--worst") ? parse_count(arg, argv[++i], 1, 1000, &o->worst)
-                                             : parse_count(arg, argv[++i], 1, 4096, &o->block);
-            if (rc != CLI_OK)
-                return rc;
-        } else if (!strcmp(arg, "--mask") || !strcmp(arg, "--heatmap") ||
-                   !strcmp(arg, "--heat-max")) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "tessera compare: option %s needs a value\n", arg);
-                return CLI_USAGE;
-            }
-            const char *v = argv[++i];
-            if (!strcmp(arg, "--mask")) {
-                *mask = v;
-            } else if (!strcmp(arg, "--heatmap")) {
-                *heatmap = v;
-            } else {
-                char *end;
-                errno = 0;
-                *heat_max = strtod(v, &end);
-                if (end == v || *end || errno || !(*heat_max > 0.0) || !isfinite(*heat_max)) {
-                    fprintf(stderr,
-                            "tessera compare: bad value \"%s\" for --heat-max (expected a "
-                            "number > 0)\n",
-                            v);
-                    return CLI_USAGE;
-                }
-            }
-        } else if (!strncmp(arg, "--", 2) || !strcmp(arg, "-o")) {
-            fprintf(stderr, "tessera compare: unknown option \"%s\"\n", arg);
-            return CLI_USAGE;
-        } else if (!*a) {
-            *a = arg;
-        } else if (!*b) {
-            *b = arg;
-        } else {
-            fprintf(stderr, "tessera compare: unexpected argument \"%s\"\n", arg);
-            return CLI_USAGE;
-        }
-    }
-    if (!*a || !*b) {
-        fprintf(stderr, USAGE);
-        return CLI_USAGE;
-    }
     if (o->block > 0 && o->worst == 0) {
         fprintf(stderr, "tessera compare: --block sets the size of --worst's blocks: give --worst "
                         "N as well\n");
@@ -192,14 +115,13 @@ static void print_metrics(const char *label, const app_image_metrics *m)
            number(m->max_error, x, sizeof x));
 }
 
-int app_cli_compare(int argc, char **argv)
+int cli_cmd_compare(const cli_options *o)
 {
-    compare_args o = {0};
-    int rc = parse_args(argc, argv, &o);
+    int rc = check_args(o);
     if (rc != CLI_OK)
         return rc;
-    const char *pa = o.a, *pb = o.b, *pm = o.mask, *heat = o.heatmap;
-    double heat_max = o.heat_max;
+    const char *pa = o->args[0], *pb = o->args[1], *pm = o->mask, *heat = o->heatmap;
+    double heat_max = o->heat_max;
     if (heat) {
         rc = cli_check_output_path(heat);
         if (rc == CLI_OK && rd_image_format_is_float(heat) != 0) {
@@ -265,9 +187,9 @@ int app_cli_compare(int argc, char **argv)
             if (in_mask.pixels == 0)
                 fprintf(stderr, "tessera compare: warning: mask %s selects no pixel\n", pm);
         }
-        if (o.worst > 0)
-            rc = print_worst(&a, &b, mask, mask ? &in_mask : &all, o.worst,
-                             o.block > 0 ? o.block : 20);
+        if (o->worst > 0)
+            rc = print_worst(&a, &b, mask, mask ? &in_mask : &all, o->worst,
+                             o->block > 0 ? o->block : 20);
     }
     double scale = heat_max;
     if (rc == CLI_OK && heat) {

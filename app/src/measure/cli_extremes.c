@@ -8,7 +8,7 @@
 #include "app/measure/image_compare.h"
 #include "app/scene/quality.h"
 #include "app/scene/ref_scene_build.h"
-#include "cli/cli_options.h"
+#include "cli/cli_commands.h"
 
 #include "ref/ref.h"
 #include "render/image_io.h"
@@ -128,12 +128,10 @@ static int write_nan_texture(const char *path)
     return rd_image_write_float(path, 8, 8, 4, px, err, sizeof err) == RD_IMAGE_OK ? 0 : -1;
 }
 
-int app_cli_extremes(int argc, char **argv)
+int cli_cmd_extremes(const cli_options *args)
 {
-    cli_options o = {0};
-    int rc = cli_parse(argc, argv, 2, "extremes", "size backend samples markdown", &o);
-    if (rc != CLI_OK)
-        return rc;
+    cli_options o = *args;
+    int rc = CLI_OK;
     int w = o.width ? o.width : 160, h = o.height ? o.height : 90;
     char dir[] = "/tmp/tessera-extremes-XXXXXX", texture[256], fake[300];
     if (!mkdtemp(dir)) {

@@ -4,7 +4,7 @@
  * frame time grows with the number of reflective objects and does not with plain ones. */
 #include "app/cli/cli.h"
 #include "app/measure/stats.h"
-#include "cli/cli_options.h"
+#include "cli/cli_commands.h"
 
 #include "render/primitives.h"
 
@@ -110,17 +110,18 @@ static double median_frame_ms(rd_context *ctx, rd_scene *s, const rd_view *v, in
     return m;
 }
 
-int app_cli_probe_bench(int argc, char **argv)
+void cli_defaults_probe_bench(cli_options *o)
 {
-    cli_options o = {.frames = 15, .warmup = 3};
-    int rc = cli_parse(argc, argv, 2, "probe-bench", "size frames warmup backend csv", &o);
-    if (rc != CLI_OK)
-        return rc;
-    if (o.project) {
-        fprintf(stderr, "usage: tessera probe-bench [--size WxH] [--frames N] [--warmup N] "
-                        "[--backend egl|osmesa] [--csv FILE]\n");
-        return CLI_USAGE;
-    }
+    o->frames = 15;
+    o->warmup = 3;
+}
+
+int cli_cmd_probe_bench(const cli_options *args)
+{
+    cli_options o = *args;
+    int rc = CLI_OK;
+    if (o.project)
+        return cli_usage_error(&o);
     rd_context *ctx = NULL;
     if (rd_context_create(&(rd_context_desc){.backend = o.backend}, &ctx) != RD_OK) {
         fprintf(stderr, "tessera: cannot open an OpenGL context: %s\n", rd_last_error());

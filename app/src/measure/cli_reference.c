@@ -1,90 +1,15 @@
 /* tessera reference PROJECT -o OUT [--camera NAME] [--size WxH] [--supersample N] [--samples N]
  *                   [--threads N] [--seed N] [--png OUT.png] [--mask MASK.png]
  * The ground-truth image of a project view (RENDERING.md section 10, docs/reference.md). */
-#include "app/measure/cli_ref.h"
 #include "app/scene/quality.h"
 #include "app/scene/ref_scene_build.h"
-#include "cli/cli_options.h"
+#include "cli/cli_commands.h"
 #include "render/image_io.h"
 
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-#define USAGE                                                                                      \
-    "usage: tessera reference PROJECT -o OUT.(exr|png|jpg|tif) [--camera NAME] [--size WxH]\n"     \
-    "                         [--supersample 1-4] [--samples N] [--threads N] [--seed N]\n"        \
-    "                         [--png OUT.png] [--mask MASK.png] [--shadows off|hard|soft]\n"       \
-    "                         [--quality draft|interactive|final|print]\n"                         \
-    "                         [--ambient constant|sh9]\n"
-
-typedef struct ref_options {
-    int samples, threads;
-    long long seed;
-    const char *png, *mask;
-} ref_options;
-
-static int parse_long(const char *text, long long lo, long long hi, long long *out)
-{
-    char *end;
-    errno = 0;
-    long long v = strtoll(text, &end, 10);
-    if (end == text || *end || errno || v < lo || v > hi)
-        return 0;
-    *out = v;
-    return 1;
-}
-
-/* Takes this command's own options out of argv; everything else goes to `rest` for cli_parse.
- * Every option takes a value, so an option's value is never mistaken for an option. */
-static int take_options(int argc, char **argv, char **rest, int *rest_count, ref_options *o)
-{
-    int n = 0;
-    rest[n++] = argv[0];
-    rest[n++] = argv[1];
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i];
-        int mine = !strcmp(a, "--samples") || !strcmp(a, "--threads") || !strcmp(a, "--seed") ||
-                   !strcmp(a, "--png") || !strcmp(a, "--mask");
-        if (!mine) {
-            rest[n++] = argv[i];
-            if ((!strcmp(a, "-o") || !strncmp(a, "--", 2)) && i + 1 < argc)
-                rest[n++] = argv[++i];
-            continue;
-        }
-        if (i + 1 >= argc) {
-            fprintf(stderr, "tessera reference: option %s needs a value\n", a);
-            return CLI_USAGE;
-        }
-        const char *v = argv[++i];
-        long long x = 0;
-        int ok = 1;
-        if (!strcmp(a, "--samples")) {
-            ok = parse_long(v, 1, 1 << 20, &x);
-            o->samples = (int)x;
-        } else if (!strcmp(a, "--threads")) {
-            ok = parse_long(v, 1, 256, &x);
-            o->threads = (int)x;
-        } else if (!strcmp(a, "--seed")) {
-            ok = parse_long(v, 0, 4294967295LL, &x);
-            o->seed = x;
-        } else if (!strcmp(a, "--png")) {
-            o->png = v;
-        } else {
-            o->mask = v;
-        }
-        if (!ok) {
-            fprintf(stderr, "tessera reference: bad value \"%s\" for %s (expected %s)\n", v, a,
-                    !strcmp(a, "--samples")   ? "1 to 1048576"
-                    : !strcmp(a, "--threads") ? "1 to 256"
-                                              : "0 to 4294967295");
-            return CLI_USAGE;
-        }
-    }
-    *rest_count = n;
-    return CLI_OK;
-}
 
 /* An extra output (--png, --mask) must be an 8-bit format in a writable folder. */
 static int check_display_path(const char *path, const char *option)
@@ -132,51 +57,36 @@ static int write_outputs(const ref_image *img, const char *output, const char *p
     return CLI_OK;
 }
 
-int app_cli_reference(int argc, char **argv)
+int cli_cmd_reference(const cli_options *o)
 {
-    ref_options ro = {0};
-    char **rest = malloc((size_t)(argc > 2 ? argc : 2) * sizeof *rest);
-    if (!rest)
-        return CLI_FAILED;
-    int rest_count = 0;
-    int rc = take_options(argc, argv, rest, &rest_count, &ro);
-    cli_options o = {0};
-    if (rc == CLI_OK)
-        rc = cli_parse(rest_count, rest, 2, "reference",
-                       "output camera size supersample shadows quality ambient", &o);
-    free(rest);
-    if (rc != CLI_OK)
-        return rc;
-    if (!o.project || !o.output) {
-        fprintf(stderr, USAGE);
-        return CLI_USAGE;
-    }
-    rc = cli_check_output_path(o.output);
-    if (rc == CLI_OK && ro.png)
-        rc = check_display_path(ro.png, "--png");
-    if (rc == CLI_OK && ro.mask)
-        rc = check_display_path(ro.mask, "--mask");
+    if (!o->output)
+        return cli_usage_error(o);
+    int rc = cli_check_output_path(o->output);
+    if (rc == CLI_OK && o->png)
+        rc = check_display_path(o->png, "--png");
+    if (rc == CLI_OK && o->mask)
+        rc = check_display_path(o->mask, "--mask");
     if (rc != CLI_OK)
         return rc;
 
     app_project p;
     char err[2048];
-    app_result ar = app_project_read(o.project, &p, err, sizeof err);
+    app_result ar = app_project_read(o->project, &p, err, sizeof err);
     if (ar != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         return ar == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
     }
     rd_view view;
-    ar = app_view_from_camera(&p, o.camera, o.width, o.height, &view, err, sizeof err);
+    ar = app_view_from_camera(&p, o->camera, o->width, o->height, &view, err, sizeof err);
     if (ar != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         app_project_free(&p);
         return CLI_USAGE;
     }
-    if (o.supersample)
-        view.supersample = o.supersample;
-    if (o.ambient)
-        p.render.ambient_model = o.ambient == 2; /* as `render --ambient` (cli_session.c) */
+    if (o->supersample)
+        view.supersample = o->supersample;
+    if (o->ambient)
+        p.render.ambient_model = o->ambient == 2; /* as `render --ambient` (cli_session.c) */
     double t0 = cli_now_ms();
     ref_scene *scene = NULL;
     ar = app_ref_scene_build(&p, &scene, err, sizeof err);
@@ -188,15 +98,15 @@ int app_cli_reference(int argc, char **argv)
     /* Shadows as the GPU draws them with the same options: a preset's, refined by
      * --shadows; a preset's supersampling too, unless --supersample says otherwise. */
     rd_shadow_settings shadows = {0};
-    if (o.quality) {
-        shadows = (rd_shadow_settings){.mode = o.quality->shadows,
-                                       .map_size = o.quality->shadow_map_size,
-                                       .taps = o.quality->shadow_taps};
-        if (!o.supersample)
-            view.supersample = app_quality_supersample(o.quality, view.width, view.height);
+    if (o->quality) {
+        shadows = (rd_shadow_settings){.mode = o->quality->shadows,
+                                       .map_size = o->quality->shadow_map_size,
+                                       .taps = o->quality->shadow_taps};
+        if (!o->supersample)
+            view.supersample = app_quality_supersample(o->quality, view.width, view.height);
     }
-    if (o.shadows)
-        shadows.mode = (rd_shadow_mode)(o.shadows - 1);
+    if (o->shadows)
+        shadows.mode = (rd_shadow_mode)(o->shadows - 1);
     ref_scene_set_shadows(scene, &shadows);
     ref_result rr = ref_scene_commit(scene);
     double build_ms = cli_now_ms() - t0;
@@ -204,9 +114,9 @@ int app_cli_reference(int argc, char **argv)
     if (rr == REF_OK)
         rr = ref_render(scene,
                         &(ref_render_desc){.view = view,
-                                           .samples = ro.samples,
-                                           .threads = ro.threads,
-                                           .seed = (uint32_t)ro.seed,
+                                           .samples = o->samples,
+                                           .threads = o->threads,
+                                           .seed = (uint32_t)o->seed,
                                            .progress = 1},
                         &img);
     if (rr != REF_OK) {
@@ -215,7 +125,7 @@ int app_cli_reference(int argc, char **argv)
         app_project_free(&p);
         return rr == REF_ERR_INVALID_ARGUMENT || rr == REF_ERR_TOO_LARGE ? CLI_USAGE : CLI_FAILED;
     }
-    rc = write_outputs(&img, o.output, ro.png, ro.mask);
+    rc = write_outputs(&img, o->output, o->png, o->mask);
     if (rc == CLI_OK) {
         long long masked = 0;
         for (size_t i = 0; i < (size_t)img.width * (size_t)img.height; i++)
@@ -224,8 +134,8 @@ int app_cli_reference(int argc, char **argv)
         fprintf(stderr,
                 "tessera: wrote %s%s%s%s%s (%dx%d, supersample %d, %d samples, %d threads, "
                 "scene %.0f ms, trace %.2f s, %.2f Mrays/s, %lld reflective pixels)\n",
-                o.output, ro.png ? ", " : "", ro.png ? ro.png : "", ro.mask ? ", " : "",
-                ro.mask ? ro.mask : "", img.width, img.height, ss, ro.samples ? ro.samples : 64,
+                o->output, o->png ? ", " : "", o->png ? o->png : "", o->mask ? ", " : "",
+                o->mask ? o->mask : "", img.width, img.height, ss, o->samples ? o->samples : 64,
                 img.threads_used, build_ms, img.seconds,
                 img.seconds > 0.0 ? (double)img.rays / img.seconds * 1e-6 : 0.0, masked);
     }

@@ -3,13 +3,12 @@
  * GPU work finished) and compared with the ground-truth tracer (render/ref) over all pixels
  * and over the reflective ones: a table, a CSV and a plot. */
 #include "app/cli/cli.h"
-#include "app/measure/cli_ref.h"
 #include "app/measure/image_compare.h"
 #include "app/scene/quality.h"
 #include "app/scene/ref_scene_build.h"
 #include "app/measure/stats.h"
 #include "app/measure/sweep_plot.h"
-#include "cli/cli_options.h"
+#include "cli/cli_commands.h"
 
 #include "ref/ref.h"
 
@@ -124,9 +123,9 @@ static void make_settings(sweep_setting out[SETTINGS])
         st->max_resolution = q->max_resolution;
         st->supersample = q->supersample;
         st->correction = q->correction != RD_CORRECTION_DEFAULT ? q->correction : base.correction;
-        st->planar = q->planar_mirrors;
+        st->planar = q->planar_mirrors == RD_SWITCH_ON;
         st->self_rays = q->self_reflections;
-        st->room_off = q->room_probe_off;
+        st->room_off = q->room_probe == RD_SWITCH_OFF;
     }
 }
 
@@ -151,9 +150,9 @@ static void apply(rd_scene *scene, const rd_reflection_defaults *base, const swe
     d.ambient = s->ambient;
     d.max_resolution = s->max_resolution;
     d.probe_no_specular = s->no_specular;
-    d.planar_mirrors = s->planar;
-    d.room_probe_off = s->room_off;
-    d.emitters_in_probes = s->lamps_in_probes;
+    d.planar_mirrors = s->planar ? RD_SWITCH_ON : RD_SWITCH_OFF;
+    d.room_probe = s->room_off ? RD_SWITCH_OFF : RD_SWITCH_ON;
+    d.exact_lamps = s->lamps_in_probes ? RD_SWITCH_OFF : RD_SWITCH_ON;
     d.self_reflections = s->self_rays;
     rd_scene_set_reflection_defaults(scene, &d);
 }
@@ -215,19 +214,18 @@ static int write_markdown(const char *path, const app_sweep_point *p, const swee
     return fclose(f) == 0 ? 0 : -1;
 }
 
-int app_cli_sweep(int argc, char **argv)
+void cli_defaults_sweep(cli_options *o)
 {
-    cli_options o = {.frames = 6, .warmup = 2};
-    int rc = cli_parse(argc, argv, 2, "sweep",
-                       "camera size frames warmup backend csv samples plot animate markdown", &o);
-    if (rc != CLI_OK)
-        return rc;
-    if (!o.project) {
-        fprintf(stderr, "usage: tessera sweep PROJECT [--camera NAME] [--size WxH] "
-                        "[--frames N] [--samples N] [--animate OBJECT] [--csv FILE] "
-                        "[--plot FILE.png] [--backend egl|osmesa]\n");
-        return CLI_USAGE;
-    }
+    o->frames = 6;
+    o->warmup = 2;
+}
+
+int cli_cmd_sweep(const cli_options *args)
+{
+    cli_options o = *args;
+    int rc = CLI_OK;
+    if (!o.project)
+        return cli_usage_error(&o);
     cli_session s;
     rc = cli_session_open(&o, &s);
     if (rc != CLI_OK)

@@ -17,22 +17,66 @@
 #include <string.h>
 
 static const app_quality presets[] = {
-    {"draft", "probes captured once, box-mip blur: the fastest frames", RD_PROBE_ONCE,
-     RD_BLUR_BOX_MIPS, 0, 128, 1, RD_SHADOWS_OFF, 0, 0, RD_CORRECTION_DEFAULT, 0, 0, 0, 0, 0},
-    {"interactive", "probes refreshed on change, one face a frame, prefiltered blur: live",
-     RD_PROBE_ON_CHANGE, RD_BLUR_PREFILTERED, 0, 256, 1, RD_SHADOWS_OFF, 1024, 1,
-     RD_CORRECTION_DEFAULT, 1, 0, 0, 0, 0},
-    {"final",
-     "every probe complete at 128 texels, flat mirrors as planar reflections, 2x2 supersampling: "
-     "stills",
-     RD_PROBE_EVERY_FRAME, RD_BLUR_PREFILTERED, 128, 0, 2, RD_SHADOWS_SOFT, 1024, 12,
-     RD_CORRECTION_DEFAULT, 0, 0, 1, 0, 0},
-    {"print",
-     "probes at 256 texels, depth lookups, fixtures' reflections of themselves and their "
-     "neighbours traced, flat mirrors as planar reflections, 4x4 supersampling (adaptive in "
-     "large prints), soft shadows: print",
-     RD_PROBE_EVERY_FRAME, RD_BLUR_PREFILTERED, 256, 0, 4, RD_SHADOWS_SOFT, 2048, 16,
-     RD_CORRECTION_DEPTH, 0, 1, 1, APP_SELF_REFLECTION_RAYS, 1},
+    {
+        .name = "draft",
+        .use = "probes captured once, box-mip blur: the fastest frames",
+        .update = RD_PROBE_ONCE,
+        .blur = RD_BLUR_BOX_MIPS,
+        .max_resolution = 128,
+        .supersample = 1,
+        .shadows = RD_SHADOWS_OFF,
+        .adaptive = RD_SWITCH_OFF,
+        .planar_mirrors = RD_SWITCH_OFF,
+        .room_probe = RD_SWITCH_ON,
+    },
+    {
+        .name = "interactive",
+        .use = "probes refreshed on change, one face a frame, prefiltered blur: live",
+        .update = RD_PROBE_ON_CHANGE,
+        .blur = RD_BLUR_PREFILTERED,
+        .max_resolution = 256,
+        .supersample = 1,
+        .shadows = RD_SHADOWS_OFF,
+        .shadow_map_size = 1024,
+        .shadow_taps = 1,
+        .probe_faces_per_frame = 1,
+        .adaptive = RD_SWITCH_OFF,
+        .planar_mirrors = RD_SWITCH_OFF,
+        .room_probe = RD_SWITCH_ON,
+    },
+    {
+        .name = "final",
+        .use = "every probe complete at 128 texels, flat mirrors as planar reflections, 2x2 "
+               "supersampling: stills",
+        .update = RD_PROBE_EVERY_FRAME,
+        .blur = RD_BLUR_PREFILTERED,
+        .resolution = 128,
+        .supersample = 2,
+        .shadows = RD_SHADOWS_SOFT,
+        .shadow_map_size = 1024,
+        .shadow_taps = 12,
+        .adaptive = RD_SWITCH_OFF,
+        .planar_mirrors = RD_SWITCH_ON,
+        .room_probe = RD_SWITCH_ON,
+    },
+    {
+        .name = "print",
+        .use = "probes at 256 texels, depth lookups, fixtures' reflections of themselves and their "
+               "neighbours traced, flat mirrors as planar reflections, 4x4 supersampling "
+               "(adaptive in large prints), soft shadows: print",
+        .update = RD_PROBE_EVERY_FRAME,
+        .blur = RD_BLUR_PREFILTERED,
+        .resolution = 256,
+        .supersample = 4,
+        .shadows = RD_SHADOWS_SOFT,
+        .shadow_map_size = 2048,
+        .shadow_taps = 16,
+        .correction = RD_CORRECTION_DEPTH,
+        .adaptive = RD_SWITCH_ON,
+        .planar_mirrors = RD_SWITCH_ON,
+        .self_reflections = APP_SELF_REFLECTION_RAYS,
+        .room_probe = RD_SWITCH_OFF,
+    },
 };
 
 const app_quality *app_quality_find(const char *name)
@@ -58,7 +102,8 @@ int app_quality_supersample(const app_quality *q, int width, int height)
 
 int app_quality_adaptive(const app_quality *q, int width, int height)
 {
-    return q->adaptive && app_quality_supersample(q, width, height) < q->supersample;
+    return q->adaptive == RD_SWITCH_ON &&
+           app_quality_supersample(q, width, height) < q->supersample;
 }
 
 void app_quality_apply(const app_quality *q, rd_scene *scene)
@@ -73,7 +118,7 @@ void app_quality_apply(const app_quality *q, rd_scene *scene)
     d.max_faces_per_frame = q->probe_faces_per_frame;
     d.planar_mirrors = q->planar_mirrors;
     d.self_reflections = q->self_reflections;
-    d.room_probe_off = q->room_probe_off;
+    d.room_probe = q->room_probe;
     rd_scene_set_reflection_defaults(scene, &d);
     /* Shadows by preset: none in drafts and live walk-throughs (hard shadows are filtered per
      * sample on the CPU under llvmpipe, too dear for a live frame budget; `--shadows hard`

@@ -241,6 +241,14 @@ typedef enum rd_ambient_model {
 } rd_ambient_model;
 
 /* Scene-wide reflection settings, used where a material or probe says DEFAULT. */
+/* A setting that is on, off, or left to whoever decides next (a quality preset, then the
+ * renderer's default): one name and one polarity from the command line to the renderer. */
+typedef enum rd_switch {
+    RD_SWITCH_UNSET = 0,
+    RD_SWITCH_OFF,
+    RD_SWITCH_ON,
+} rd_switch;
+
 typedef struct rd_reflection_defaults {
     rd_correction correction; /* DEFAULT = box */
     rd_blur_method blur;      /* DEFAULT = prefiltered */
@@ -255,19 +263,23 @@ typedef struct rd_reflection_defaults {
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
     int max_faces_per_frame; /* refreshes of probes already complete: at most this many faces
                                 a frame, probes taking turns; 0 = no limit */
-    int planar_mirrors;      /* 1: a flat mirror's probe is captured from the eye's mirror image,
-                                clipped at its plane, at the view's resolution (a planar reflection
-                                through the probe's cube map; docs/rendering.md) */
-    int room_probe_off;      /* 1: the "depth" lookup searches the object's own probe only, not
-                                also the room probe (docs/rendering.md, "The room probe") */
-    int emitters_in_probes;  /* 1: lamps stay in the probes of mirrors and glass, reflected as
-                                the probe saw them, instead of intersected exactly (docs/
-                                rendering.md, "Lamps in sharp reflections") */
-    int self_reflections;    /* > 0: a fixture's lookups trace its own parts and the fixtures
-                                beside it (a tap's lever in its body, the basin by it), which its
-                                probe then leaves out; blurred lookups trace this many directions
-                                of their lobe a sample. 0: off (docs/rendering.md,
-                                "Self-reflections") */
+    /* Switches: RD_SWITCH_UNSET takes the renderer's default, named with each. */
+    rd_switch planar_mirrors; /* ON: a flat mirror's probe is captured from the eye's mirror
+                                 image, clipped at its plane, at the view's resolution (a planar
+                                 reflection through the probe's cube map; docs/rendering.md).
+                                 Default off */
+    rd_switch room_probe;     /* ON: the "depth" lookup searches the room probe beside the
+                                 object's own probe; OFF: its own probe only (docs/rendering.md,
+                                 "The room probe"). Default on */
+    rd_switch exact_lamps;    /* ON: lamps in the sharp reflections of mirrors and glass are
+                                 intersected exactly, and those probes leave them out; OFF: they
+                                 stay in the probes, reflected as the probe saw them (docs/
+                                 rendering.md, "Lamps in sharp reflections"). Default on */
+    int self_reflections;     /* > 0: a fixture's lookups trace its own parts and the fixtures
+                                 beside it (a tap's lever in its body, the basin by it), which its
+                                 probe then leaves out; blurred lookups trace this many directions
+                                 of their lobe a sample. 0: off (docs/rendering.md,
+                                 "Self-reflections") */
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
@@ -314,9 +326,11 @@ int rd_scene_probe_count(const rd_scene *scene);
  * level's side. For tests and diagnostics. */
 rd_result rd_scene_read_probe(rd_scene *scene, int index, int face, int level, float *rgba,
                               size_t count, int *size);
-/* Frame statistics of the last rd_render: faces captured, prefilter passes. */
+/* Frame statistics of the last rd_render (of rd_render_tiled: the whole image, each tile's work
+ * summed): what each stage did, so a caller can tell which stages ran. */
 typedef struct rd_frame_stats {
     int probes, faces_captured, prefiltered;
+    int adaptive;             /* 1: the samples were taken adaptively (renderer_adaptive.c) */
     long long refined_pixels; /* adaptive supersampling: pixels given s x s samples */
     int planar_mirrors;       /* flat mirrors captured as planar reflections (probe_planar.c) */
     int room_probe;           /* 1: the room probe was captured ("depth" lookups; probe.c) */

@@ -3,6 +3,8 @@
 #ifndef UI_UI_H
 #define UI_UI_H
 
+#include "app/cli/cli.h"
+
 #include <stddef.h>
 
 #ifdef __cplusplus
@@ -25,9 +27,9 @@ int ui_display_available(char *why, size_t why_size);
  * 0 fine, 1 a failure (message on stderr), 2 bad options. */
 int ui_run(const ui_options *o);
 
-/* `tessera open [PROJECT] [--script FILE] [--quality Q] [--size WxH] [--fullscreen]
- * [--frame-log FILE]` */
-int ui_cli_open(int argc, char **argv);
+/* `tessera open` and `tessera` alone (app_cli_run): the planner window for the request, or,
+ * with no display, a pointer to the command line and exit code 2. */
+int ui_open_window(const app_open_request *r);
 
 #ifdef __cplusplus
 }

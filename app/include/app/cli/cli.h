@@ -1,5 +1,6 @@
-/* The `tessera` command line: one sub-command per capability. Each returns the process exit
- * code: 0 success, 1 the work failed, 2 bad usage or bad input. */
+/* The `tessera` command line: one sub-command per capability (app/src/cli/cli_command_table.c,
+ * docs/cli.md). Each returns the process exit code: 0 success, 1 the work failed, 2 bad usage or
+ * bad input. */
 #ifndef APP_CLI_H
 #define APP_CLI_H
 
@@ -7,29 +8,26 @@
 extern "C" {
 #endif
 
+/* What `tessera open` (and `tessera` alone) asks of the program's planner window (ui/). */
+typedef struct app_open_request {
+    const char *project;   /* NULL = the shipped demo */
+    const char *script;    /* a file of UI actions to run, then quit */
+    const char *quality;   /* a preset's name, NULL = the window's default */
+    const char *frame_log; /* CSV of per-frame times, NULL = none */
+    int width, height;     /* 0 = the window's default */
+    int fullscreen;
+} app_open_request;
+typedef int (*app_open_fn)(const app_open_request *r);
+
+/* Runs argv[1] with its options; with no command, `open_window` (when not NULL) opens the
+ * planner window, as `tessera open` does. */
+int app_cli_run(int argc, char **argv, app_open_fn open_window);
+/* app_cli_run without a window: for programs and tests that only use the command line. */
 int app_cli_main(int argc, char **argv);
-int app_cli_render(int argc, char **argv);
-int app_cli_panorama(int argc, char **argv);
-int app_cli_video(int argc, char **argv);
-int app_cli_demo(int argc, char **argv);
-int app_cli_bench(int argc, char **argv);
-int app_cli_probe_bench(int argc, char **argv);
-int app_cli_sweep(int argc, char **argv);
-int app_cli_extremes(int argc, char **argv);
-int app_cli_catalog(int argc, char **argv);
-int app_cli_catalog_model(int argc, char **argv);
-int app_cli_catalog_thumbs(int argc, char **argv); /* cli_catalog_thumbs.c */
-int app_cli_catalog_lod(int argc, char **argv);    /* cli_catalog_lod.c */
-int app_cli_print(int argc, char **argv);
-int app_cli_share(int argc, char **argv); /* cli_share.c */
+
 /* tessera demo's print set: OUT_DIR/plan.pdf with the demo-CAMERA.png renders found there. */
 struct app_project;
 int app_cli_print_demo(const struct app_project *p, const char *out_dir);
-int app_cli_quantities(int argc, char **argv);
-int app_cli_edit(int argc, char **argv);       /* cli_edit.c */
-int app_cli_check(int argc, char **argv);      /* cli_check.c */
-int app_cli_surfaces(int argc, char **argv);   /* cli_surfaces.c */
-int app_cli_export_glb(int argc, char **argv); /* cli_export_glb.c */
 
 #ifdef __cplusplus
 }

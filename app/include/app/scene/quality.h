@@ -20,18 +20,19 @@ typedef struct app_quality {
     rd_correction correction;
     /* Probe faces refreshed a frame at most (the live frame budget); 0 = no limit. */
     int probe_faces_per_frame;
-    /* 1: adaptive supersampling (rd_view.adaptive): the s x s samples only where a pixel
-     * differs from its neighbours; 0: every pixel s x s. */
-    int adaptive;
-    /* 1: flat mirrors reflect from the eye's mirror image (rd_reflection_defaults); their
+    /* ON: adaptive supersampling (rd_view.adaptive): the s x s samples only where a pixel
+     * differs from its neighbours, at the sizes app_quality_adaptive names; else every pixel
+     * s x s. */
+    rd_switch adaptive;
+    /* ON: flat mirrors reflect from the eye's mirror image (rd_reflection_defaults); their
      * captures follow the eye, so only stills take them. */
-    int planar_mirrors;
+    rd_switch planar_mirrors;
     /* Lobe directions a sample the self-reflection trace takes; 0 off
      * (rd_reflection_defaults.self_reflections). */
     int self_reflections;
-    /* 1: "depth" lookups leave the room probe out (rd_reflection_defaults.room_probe_off): the
+    /* OFF: "depth" lookups leave the room probe out (rd_reflection_defaults.room_probe): the
      * self-reflection trace finds what it was searched for, at less cost. */
-    int room_probe_off;
+    rd_switch room_probe;
 } app_quality;
 
 /* The print preset's self-reflection rays, which --self-reflections on gives the others. */

@@ -1,0 +1,250 @@
+/* Every option of every `tessera` command: its name, kind, range, field and help line. A
+ * command lists the keys it takes in the command table (cli_command_table.c); the parser, the
+ * errors and the usage lines all read this one table (docs/cli.md, "Adding an option"). */
+#include "app/output/print.h"
+#include "app/scene/quality.h"
+#include "catalog/catalog.h"
+#include "cli_table.h"
+
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define FIELD(f) offsetof(cli_options, f)
+
+static int parse_quality(const char *v, cli_options *o)
+{
+    return (o->quality = app_quality_find(v)) != NULL;
+}
+
+static int parse_backend(const char *v, cli_options *o)
+{
+    return rd_backend_parse(v, &o->backend) == RD_OK && o->backend != RD_BACKEND_ADOPT;
+}
+
+/* on, off, or a number: on with that many lobe directions a sample (rd_reflection_defaults). */
+static int parse_self_reflections(const char *v, cli_options *o)
+{
+    if (!strcmp(v, "on") || !strcmp(v, "off")) {
+        o->self_reflections = !strcmp(v, "on") ? RD_SWITCH_ON : RD_SWITCH_OFF;
+        return 1;
+    }
+    char *end;
+    long n = strtol(v, &end, 10);
+    if (end == v || *end || n < 1 || n > 16)
+        return 0;
+    o->self_rays = (int)n;
+    o->self_reflections = RD_SWITCH_ON;
+    return 1;
+}
+
+static int parse_paper(const char *v, cli_options *o)
+{
+    app_paper p;
+    if (!app_paper_parse(v, &p))
+        return 0;
+    o->paper = (int)p;
+    return 1;
+}
+
+static int parse_scale(const char *v, cli_options *o)
+{
+    return app_print_scale_parse(v, &o->scale);
+}
+
+static int parse_category(const char *v, cli_options *o)
+{
+    cat_category c;
+    o->category = v;
+    return cat_category_parse(v, &c);
+}
+
+/* Names by enum value; index 0 (not given) is not accepted on the command line. */
+static const char *const probe_names[] = {"",          "every-frame", "once",
+                                          "on-change", "time-sliced", NULL};
+static const char *const blur_names[] = {"", "prefiltered", "box-mips", "reference", NULL};
+static const char *const ambient_names[] = {"", "constant", "sh9", NULL};
+/* rd_shadow_mode + 1 */
+static const char *const shadow_names[] = {"", "off", "hard", "soft", NULL};
+
+#define STRING(k, f, v, h)                                                                         \
+    {                                                                                              \
+        .key = k, .kind = CLI_STRING, .offset = FIELD(f), .value = v, .hint = h                    \
+    }
+#define FLAG(k, f, h)                                                                              \
+    {                                                                                              \
+        .key = k, .kind = CLI_FLAG, .offset = FIELD(f), .hint = h                                  \
+    }
+#define INT(k, f, l, u, v, h)                                                                      \
+    {                                                                                              \
+        .key = k, .kind = CLI_INT, .lo = l, .hi = u, .offset = FIELD(f), .value = v, .hint = h     \
+    }
+#define FLOAT(k, f, l, u, v, h)                                                                    \
+    {                                                                                              \
+        .key = k, .kind = CLI_FLOAT, .lo = l, .hi = u, .offset = FIELD(f), .value = v, .hint = h   \
+    }
+#define SWITCH(k, f, h)                                                                            \
+    {                                                                                              \
+        .key = k, .kind = CLI_SWITCH, .offset = FIELD(f), .value = "on|off", .hint = h             \
+    }
+#define ENUM(k, f, n, h)                                                                           \
+    {                                                                                              \
+        .key = k, .kind = CLI_ENUM, .names = n, .offset = FIELD(f), .hint = h                      \
+    }
+#define SIZE(k, n, w, h_, l, u, v, h)                                                              \
+    {                                                                                              \
+        .key = k, .name = n, .kind = CLI_SIZE, .lo = l, .hi = u, .offset = FIELD(w),               \
+        .offset2 = FIELD(h_), .value = v, .hint = h                                                \
+    }
+#define CUSTOM(k, p, v, e, h)                                                                      \
+    {                                                                                              \
+        .key = k, .kind = CLI_CUSTOM, .parse = p, .value = v, .expect = e, .hint = h               \
+    }
+
+static const cli_option_spec options[] = {
+    /* Outputs and inputs. */
+    {.key = "output",
+     .short_name = 'o',
+     .kind = CLI_STRING,
+     .offset = FIELD(output),
+     .value = "OUT",
+     .hint = "the file (or folder) to write"},
+    STRING("camera", camera, "NAME", "the stored camera to render (default: the first)"),
+    STRING("csv", csv, "FILE", "also write the table as CSV"),
+    {.key = "csv-table",
+     .name = "csv",
+     .kind = CLI_FLAG,
+     .offset = FIELD(csv_table),
+     .hint = "print CSV instead of a table"},
+    STRING("plot", plot, "FILE.png", "plot the speed/accuracy front"),
+    STRING("markdown", markdown, "FILE", "also write the table as Markdown"),
+    STRING("animate", animate, "OBJECT", "drag this object 10 mm a frame"),
+    STRING("faces", faces, "DIR", "also write the six cube faces into DIR"),
+    STRING("stats", stats, "FILE.json",
+           "write the frame statistics and the resolved settings as JSON"),
+    STRING("db", db, "PATH", "the catalog file (default: $TESSERA_CATALOG, else the cache)"),
+    STRING("manufacturer", manufacturer, "M", "only this manufacturer's products"),
+    STRING("variant", variant, "CODE", "the finish variant (e.g. CP for chrome)"),
+    {.key = "out",
+     .short_name = 'o',
+     .kind = CLI_STRING,
+     .offset = FIELD(out_dir),
+     .value = "DIR",
+     .hint = "the folder to write into"},
+    STRING("svg", svg, "DIR", "also write each page as DIR/page-NN.svg"),
+    STRING("renders", renders, "DIR|none", "take the renders from DIR's PNG files, or none"),
+    STRING("customer", customer, "NAME", "the customer named on the title block"),
+    STRING("date", date, "TEXT", "the date on the title block (default: today)"),
+    STRING("mask", mask, "MASK.png", "also measure (or write) the masked pixels"),
+    STRING("heatmap", heatmap, "OUT.png", "write the per-pixel error as a heat map"),
+    STRING("png", png, "OUT.png", "also write an 8-bit sRGB copy"),
+    STRING("script", script, "FILE", "replay an edit script in the window"),
+    STRING("frame-log", frame_log, "FILE.csv", "log each frame's timings"),
+    CUSTOM("category", parse_category, "C", "a category (see tessera catalog --help)",
+           "only this category (see tessera catalog --help for the list)"),
+
+    /* The image. */
+    SIZE("size", NULL, width, height, 1, 1000000, "WxH", "the image size in pixels"),
+    SIZE("window-size", "size", width, height, 64, 16384, "WxH", "the window size in pixels"),
+    SIZE("panorama-size", NULL, pano_width, pano_height, 1, 1000000, "WxH",
+         "the panorama's size (default: 4096x2048)"),
+    SIZE("render-size", NULL, render_width, render_height, 1, 8192, "WxH",
+         "the renders' size (default: 960x540)"),
+    INT("supersample", supersample, 1, 4, "N", "N x N samples a pixel"),
+    INT("dpi", dpi, 1, 100000, "N", "pixels per inch written into the image"),
+    INT("tile", tile, 16, 65536, "N", "largest tile side in pixels (default: the GL limit)"),
+    {.key = "thumb-size",
+     .name = "size",
+     .kind = CLI_INT,
+     .lo = 16,
+     .hi = 2048,
+     .offset = FIELD(thumb_size),
+     .value = "N",
+     .hint = "the thumbnails' side in pixels (default: 256)"},
+
+    /* The renderer's settings: a preset, then the switches that refine it. */
+    CUSTOM("quality", parse_quality, "Q", "draft, interactive, final or print",
+           "a preset: draft|interactive|final|print"),
+    SWITCH("adaptive", adaptive, "adaptive supersampling (default: the preset's)"),
+    SWITCH("planar-mirrors", planar_mirrors, "flat mirrors as planar reflections"),
+    SWITCH("room-probe", room_probe, "\"depth\" lookups also search the room probe"),
+    SWITCH("exact-lamps", exact_lamps, "lamps in sharp reflections intersected exactly"),
+    CUSTOM("self-reflections", parse_self_reflections, "on|off|N", "on, off or 1 to 16",
+           "fixtures trace their own reflections (N lobe directions a sample)"),
+    INT("probe-resolution", probe_resolution, 16, 2048, "N", "probe texels a face side"),
+    CUSTOM("backend", parse_backend, "egl|osmesa", "egl or osmesa",
+           "the OpenGL backend (default: $TESSERA_GL, else EGL)"),
+    ENUM("probes", probes, probe_names, "when probes are captured"),
+    ENUM("blur", blur, blur_names, "how probes are blurred for rough surfaces"),
+    ENUM("ambient", ambient, ambient_names, "the ambient light's model"),
+    ENUM("shadows", shadows, shadow_names, "shadows from every light"),
+    INT("samples", samples, 1, 1 << 20, "N", "Monte-Carlo rays a glossy lookup (reference)"),
+
+    /* Timing, video, reference, comparison. */
+    INT("frames", frames, 1, 100000, "N", "frames timed"),
+    INT("warmup", warmup, 0, 100000, "N", "frames rendered before timing"),
+    {.key = "seconds",
+     .kind = CLI_FLOAT,
+     .lo = 0,
+     .hi = 3600,
+     .above_lo = 1,
+     .offset = FIELD(seconds),
+     .value = "S",
+     .hint = "the video's length"},
+    INT("fps", fps, 1, 240, "N", "frames a second"),
+    INT("threads", threads, 1, 256, "N", "CPU threads (default: all)"),
+    {.key = "seed",
+     .kind = CLI_LONG,
+     .lo = 0,
+     .hi = 4294967295.0,
+     .offset = FIELD(seed),
+     .value = "N",
+     .hint = "the random sequence's seed"},
+    INT("worst", worst, 1, 1000, "N", "list the N blocks that carry most of the error"),
+    INT("block", block, 1, 4096, "PX", "the side of --worst's blocks"),
+    {.key = "heat-max",
+     .kind = CLI_FLOAT,
+     .lo = 0,
+     .hi = 1e30,
+     .above_lo = 1,
+     .offset = FIELD(heat_max),
+     .value = "E",
+     .hint = "the error shown white in the heat map"},
+
+    /* Catalog, quantities, checks, print. */
+    FLOAT("max-width", max_width, 1, 100000, "MM", "only products at most this wide"),
+    INT("limit", limit, 1, 10000, "N", "at most N products"),
+    INT("queries", queries, 1, 1000000, "N", "queries timed (default: 400)"),
+    FLAG("dry-run", dry_run, "check the file, change nothing"),
+    {.key = "fraction",
+     .kind = CLI_FLOAT,
+     .lo = 0,
+     .hi = 1,
+     .above_lo = 1,
+     .offset = FIELD(fraction),
+     .value = "F",
+     .hint = "keep about F of each mesh's triangles"},
+    FLAG("barrier-free", barrier_free, "DIN 18040-2: 1200 x 1200 free areas, doors outwards"),
+    FLAG("wheelchair", wheelchair, "DIN 18040-2 R: 1500 x 1500 free areas, the WC's sides"),
+    FLAG("quiet", quiet, "print nothing but errors"),
+    FLOAT("surplus", surplus, 0, 1000, "PCT", "boxes with this surplus (default: 10 %)"),
+    FLAG("offcuts", offcuts, "list the offcuts and where they are reused"),
+    INT("bench", bench_repeats, 1, 100000, "N", "time the layout N times"),
+    FLAG("bench-mosaic", bench_mosaic, "time a 30 x 30 mm mosaic on 10 surfaces"),
+    CUSTOM("paper", parse_paper, "A4|A3", "A4 or A3", "the paper size"),
+    CUSTOM("scale", parse_scale, "1:N|fit", "1:20, 1:25, 1:50, 1:100, 1:200 or fit",
+           "the drawings' scale (default: fit)"),
+    FLAG("landscape", landscape, "landscape pages"),
+    FLAG("no-clearances", no_clearances, "leave the clearance areas out of the plan"),
+    FLAG("all-views", all_views, "every stored camera into OUT/NAME.png"),
+    FLAG("fullscreen", fullscreen, "open the window full-screen"),
+    FLAG("list", list, "the command names, one a line"),
+};
+
+const cli_option_spec *cli_option_find(const char *key)
+{
+    for (size_t i = 0; i < sizeof options / sizeof options[0]; i++)
+        if (!strcmp(options[i].key, key))
+            return &options[i];
+    return NULL;
+}

@@ -1,0 +1,104 @@
+#include "cli_stats.h"
+
+#include "app/scene/quality.h"
+
+#include <cjson/cJSON.h>
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static const char *on_off(int on)
+{
+    return on ? "on" : "off";
+}
+
+static cJSON *frame_json(const rd_frame_stats *st)
+{
+    cJSON *f = cJSON_CreateObject();
+#define FIELD(name) cJSON_AddNumberToObject(f, #name, (double)st->name)
+    FIELD(probes);
+    FIELD(faces_captured);
+    FIELD(prefiltered);
+    FIELD(adaptive);
+    FIELD(refined_pixels);
+    FIELD(planar_mirrors);
+    FIELD(room_probe);
+    FIELD(emitters);
+    FIELD(emitter_probes);
+    FIELD(self_traced_probes);
+    FIELD(self_triangles);
+#undef FIELD
+    return f;
+}
+
+static cJSON *settings_json(const cli_session *s, const cli_options *o, const rd_view *view)
+{
+    rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
+    rd_shadow_settings sh = rd_scene_shadows(s->scene.scene);
+    cJSON *j = cJSON_CreateObject();
+    cJSON_AddStringToObject(j, "quality", o->quality ? o->quality->name : "project");
+    cJSON_AddNumberToObject(j, "width", view->width);
+    cJSON_AddNumberToObject(j, "height", view->height);
+    cJSON_AddNumberToObject(j, "supersample", view->supersample > 1 ? view->supersample : 1);
+    cJSON_AddStringToObject(j, "adaptive", on_off(view->adaptive && view->supersample > 1));
+    cJSON_AddStringToObject(j, "planar_mirrors", on_off(d.planar_mirrors == RD_SWITCH_ON));
+    cJSON_AddStringToObject(j, "room_probe", on_off(d.room_probe != RD_SWITCH_OFF));
+    cJSON_AddStringToObject(j, "exact_lamps", on_off(d.exact_lamps != RD_SWITCH_OFF));
+    cJSON_AddStringToObject(j, "self_reflections", on_off(d.self_reflections > 0));
+    cJSON_AddNumberToObject(j, "self_reflection_rays", d.self_reflections);
+    cJSON_AddNumberToObject(j, "probe_resolution", d.resolution);
+    cJSON_AddStringToObject(j, "shadows", rd_shadow_mode_name(sh.mode));
+    return j;
+}
+
+/* `text` into `path` through a temporary file in the same folder, so a reader never sees half a
+ * file and a failed write leaves the old one. */
+static int write_atomic(const char *path, const char *text)
+{
+    size_t n = strlen(path);
+    char *tmp = malloc(n + sizeof ".tmp-XXXXXX");
+    if (!tmp) {
+        fprintf(stderr, "tessera: %s: out of memory\n", path);
+        return CLI_FAILED;
+    }
+    memcpy(tmp, path, n);
+    memcpy(tmp + n, ".tmp-XXXXXX", sizeof ".tmp-XXXXXX");
+    int fd = mkstemp(tmp);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    int ok = f && fputs(text, f) >= 0;
+    ok = f && fclose(f) == 0 && ok;
+    ok = ok && rename(tmp, path) == 0;
+    if (!ok) {
+        fprintf(stderr, "tessera: %s: cannot write the statistics: %s\n", path, strerror(errno));
+        if (fd >= 0)
+            unlink(tmp);
+    }
+    free(tmp);
+    return ok ? CLI_OK : CLI_FAILED;
+}
+
+int cli_write_stats(const char *path, const cli_session *s, const cli_options *o,
+                    const rd_view *view, const rd_frame_stats *st)
+{
+    cJSON *root = cJSON_CreateObject();
+    cJSON_AddStringToObject(root, "project", s->project.path);
+    cJSON_AddItemToObject(root, "settings", settings_json(s, o, view));
+    cJSON_AddItemToObject(root, "frame", frame_json(st));
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (!text) {
+        fprintf(stderr, "tessera: %s: out of memory\n", path);
+        return CLI_FAILED;
+    }
+    size_t len = strlen(text);
+    char *line = realloc(text, len + 2); /* a text file ends in a newline */
+    if (line) {
+        memcpy(line + len, "\n", 2);
+        text = line;
+    }
+    int rc = write_atomic(path, text);
+    free(text);
+    return rc;
+}

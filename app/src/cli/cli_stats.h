@@ -1,0 +1,15 @@
+/* --stats FILE.json: the renderer's frame statistics and the settings a render resolved to, as
+ * one JSON object for scripts and tests (docs/cli.md, "Frame statistics"). */
+#ifndef APP_CLI_STATS_H
+#define APP_CLI_STATS_H
+
+#include "cli_options.h"
+
+/* Writes `st` (every rd_frame_stats field by its C name, under "frame") and the resolved
+ * settings of `s` and `view` (under "settings": the preset, each switch "on" or "off") to
+ * `path`, atomically (a temporary file next to it, then rename). Prints the problem naming the
+ * file and returns CLI_FAILED if it cannot be written. */
+int cli_write_stats(const char *path, const cli_session *s, const cli_options *o,
+                    const rd_view *view, const rd_frame_stats *st);
+
+#endif
