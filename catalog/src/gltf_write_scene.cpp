@@ -1,150 +1,21 @@
-// Writing a scene of named, transformed nodes as GLB with tinygltf (catalog/scene_write.h).
-// tinygltf's implementation is compiled once, in gltf_load.cpp, with the same configuration
-// macros as below; this file only uses its classes. The helpers for buffers, extras and the
-// atomic write mirror gltf_write.cpp's (they are private there).
-#define TINYGLTF_NO_STB_IMAGE
-#define TINYGLTF_NO_STB_IMAGE_WRITE
-#define TINYGLTF_NO_EXTERNAL_IMAGE
-#define TINYGLTF_NO_FS
-#include <fstream> // tiny_gltf.h 2.7 uses std::ofstream but includes <fstream> only with its FS code
-#include <tiny_gltf.h>
+// Writing a scene of named, transformed nodes as GLB with tinygltf (catalog/scene_write.h). The
+// helpers shared with the model writer are in gltf_write_common.h.
+#include "gltf_write_common.h"
 
 #include "catalog/scene_write.h"
 
-#include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <exception>
-#include <new>
-#include <sstream>
 #include <string>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <vector>
+
+using cat_gltf::add_accessor;
+using cat_gltf::add_view;
+using cat_gltf::fail;
 
 namespace
 {
-
-cat_result fail(const char *path, char *err, size_t size, cat_result code, const char *fmt, ...)
-{
-    if (!err || !size)
-        return code;
-    int n = std::snprintf(err, size, "%s: ", path ? path : "(no file)");
-    if (n < 0 || static_cast<size_t>(n) >= size)
-        return code;
-    va_list ap;
-    va_start(ap, fmt);
-    std::vsnprintf(err + n, size - static_cast<size_t>(n), fmt, ap);
-    va_end(ap);
-    return code;
-}
-
-int add_view(tinygltf::Model &m, const void *data, size_t bytes, int target)
-{
-    std::vector<unsigned char> &buf = m.buffers[0].data;
-    while (buf.size() % 4)
-        buf.push_back(0);
-    tinygltf::BufferView v;
-    v.buffer = 0;
-    v.byteOffset = buf.size();
-    v.byteLength = bytes;
-    v.target = target;
-    const unsigned char *p = static_cast<const unsigned char *>(data);
-    buf.insert(buf.end(), p, p + bytes);
-    m.bufferViews.push_back(v);
-    return static_cast<int>(m.bufferViews.size() - 1);
-}
-
-int add_accessor(tinygltf::Model &m, int view, int component, int type, size_t count)
-{
-    tinygltf::Accessor a;
-    a.bufferView = view;
-    a.componentType = component;
-    a.type = type;
-    a.count = count;
-    m.accessors.push_back(a);
-    return static_cast<int>(m.accessors.size() - 1);
-}
-
-// The shortest decimal that reads back as the same float (as gltf_write.cpp).
-tinygltf::Value num(float v)
-{
-    char text[32];
-    for (int digits = 6; digits <= 9; digits++) {
-        std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(v));
-        if (static_cast<float>(std::strtod(text, nullptr)) == v)
-            break;
-    }
-    return tinygltf::Value(std::strtod(text, nullptr));
-}
-
-tinygltf::Value rgb(const float c[3])
-{
-    tinygltf::Value::Array a;
-    for (int k = 0; k < 3; k++)
-        a.push_back(num(c[k]));
-    return tinygltf::Value(a);
-}
-
-// {"tessera": {...}}: the same keys as gltf_write.cpp, so cat_model_read_extras reads both.
-tinygltf::Value extras_value(const cat_material_extras &e)
-{
-    const cat_render_material &r = e.params;
-    tinygltf::Value::Object t;
-    t["ambient"] = rgb(r.ambient);
-    t["diffuse"] = rgb(r.diffuse);
-    t["specular"] = rgb(r.specular);
-    t["emissive"] = rgb(r.emissive);
-    t["shininess"] = num(r.shininess);
-    t["k_r"] = num(r.reflectivity);
-    t["g"] = num(r.glossiness);
-    t["blend"] = tinygltf::Value(std::string(cat_blend_name(r.blend)));
-    t["transparency"] = num(r.transparency);
-    t["ior"] = num(r.ior);
-    t["variant_slot"] = tinygltf::Value(e.variant_slot != 0);
-    tinygltf::Value::Object o;
-    o["tessera"] = tinygltf::Value(t);
-    return tinygltf::Value(o);
-}
-
-cat_result write_atomic(const char *path, const std::string &bytes, char *err, size_t err_size)
-{
-    std::string tmp = std::string(path) + ".tmp-XXXXXX";
-    std::vector<char> name(tmp.begin(), tmp.end());
-    name.push_back(0);
-    int fd = mkstemp(name.data());
-    if (fd < 0)
-        return fail(path, err, err_size, CAT_ERR_IO, "cannot write: %s", std::strerror(errno));
-    size_t done = 0;
-    while (done < bytes.size()) {
-        ssize_t n = write(fd, bytes.data() + done, bytes.size() - done);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0) {
-            int e = errno;
-            close(fd);
-            unlink(name.data());
-            return fail(path, err, err_size, CAT_ERR_IO, "write failed: %s", std::strerror(e));
-        }
-        done += static_cast<size_t>(n);
-    }
-    fchmod(fd, 0644);
-    if (fsync(fd) != 0 || close(fd) != 0) {
-        int e = errno;
-        unlink(name.data());
-        return fail(path, err, err_size, CAT_ERR_IO, "write failed: %s", std::strerror(e));
-    }
-    if (std::rename(name.data(), path) != 0) {
-        int e = errno;
-        unlink(name.data());
-        return fail(path, err, err_size, CAT_ERR_IO, "cannot write: %s", std::strerror(e));
-    }
-    return CAT_OK;
-}
 
 // C: Tessera (x, y, z) mm -> glTF (x, z, -y) m, as a 3x3 rotation A (row-major) and 1/1000.
 const double A[3][3] = {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
@@ -184,40 +55,16 @@ void node_matrix(const double m[16], std::vector<double> &out)
 cat_result add_part(const char *path, const cat_scene *s, int node, int part, const cat_mesh &cm,
                     tinygltf::Model &m, tinygltf::Primitive &prim, char *err, size_t err_size)
 {
-    if (!cm.positions || !cm.indices || cm.vertex_count <= 0 || cm.index_count <= 0 ||
-        cm.index_count % 3)
-        return fail(path, err, err_size, CAT_ERR_INVALID,
-                    "node %d (\"%s\"), part %d: no triangles or no positions", node,
-                    s->nodes[node].name, part);
-    if (cm.material < -1 || cm.material >= s->material_count)
-        return fail(path, err, err_size, CAT_ERR_INVALID,
-                    "node %d (\"%s\"), part %d: material %d out of range", node,
-                    s->nodes[node].name, part, cm.material);
+    char where[160];
+    std::snprintf(where, sizeof where, "node %d (\"%s\"), part %d", node, s->nodes[node].name,
+                  part);
+    cat_result r =
+        cat_gltf::add_part_positions(path, where, cm, s->material_count, m, prim, err, err_size);
+    if (r != CAT_OK)
+        return r;
     size_t nv = static_cast<size_t>(cm.vertex_count);
-    std::vector<float> p(nv * 3), n;
-    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-    for (size_t v = 0; v < nv; v++) {
-        const float *q = cm.positions + 3 * v;
-        float g[3] = {q[0] / 1000.0f, q[2] / 1000.0f, -q[1] / 1000.0f};
-        for (int k = 0; k < 3; k++) {
-            if (!std::isfinite(g[k]))
-                return fail(path, err, err_size, CAT_ERR_INVALID,
-                            "node %d (\"%s\"), part %d: vertex %zu is not finite", node,
-                            s->nodes[node].name, part, v);
-            p[3 * v + k] = g[k];
-            lo[k] = std::min(lo[k], static_cast<double>(g[k]));
-            hi[k] = std::max(hi[k], static_cast<double>(g[k]));
-        }
-    }
-    prim.mode = TINYGLTF_MODE_TRIANGLES;
-    prim.material = cm.material;
-    int pa = add_accessor(m, add_view(m, p.data(), p.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER),
-                          TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
-    m.accessors[static_cast<size_t>(pa)].minValues.assign(lo, lo + 3);
-    m.accessors[static_cast<size_t>(pa)].maxValues.assign(hi, hi + 3);
-    prim.attributes["POSITION"] = pa;
     if (cm.normals) {
-        n.resize(nv * 3);
+        std::vector<float> n(nv * 3);
         for (size_t v = 0; v < nv; v++) {
             const float *q = cm.normals + 3 * v;
             float x = q[0], y = q[2], z = -q[1];
@@ -237,23 +84,7 @@ cat_result add_part(const char *path, const cat_scene *s, int node, int part, co
                          TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, nv);
     }
     // No TEXCOORD_0: no textures are written, and validators flag unused coordinates.
-    size_t ni = static_cast<size_t>(cm.index_count);
-    for (size_t k = 0; k < ni; k++)
-        if (cm.indices[k] >= nv)
-            return fail(path, err, err_size, CAT_ERR_INVALID,
-                        "node %d (\"%s\"), part %d: index %u out of range (%zu vertices)", node,
-                        s->nodes[node].name, part, cm.indices[k], nv);
-    if (nv <= 65535) {
-        std::vector<unsigned short> sh(cm.indices, cm.indices + ni);
-        prim.indices =
-            add_accessor(m, add_view(m, sh.data(), ni * 2, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, ni);
-    } else {
-        prim.indices =
-            add_accessor(m, add_view(m, cm.indices, ni * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER),
-                         TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, ni);
-    }
-    return CAT_OK;
+    return cat_gltf::add_part_indices(path, where, cm, m, prim, err, err_size);
 }
 
 // A camera node: in glTF space (C applied to eye, target and up) the node's -Z looks at the
@@ -324,20 +155,7 @@ cat_result build(const char *path, const cat_scene *s, tinygltf::Model &m, char 
     m.asset.version = "2.0";
     m.asset.generator = "Tessera project exporter";
     m.buffers.resize(1);
-    for (int i = 0; i < s->material_count; i++) {
-        const cat_material &cm = s->materials[i];
-        tinygltf::Material mat;
-        mat.name = std::string(cm.name, strnlen(cm.name, sizeof cm.name));
-        mat.pbrMetallicRoughness.baseColorFactor.assign(cm.base_color, cm.base_color + 4);
-        mat.pbrMetallicRoughness.metallicFactor = cm.metallic;
-        mat.pbrMetallicRoughness.roughnessFactor = cm.roughness;
-        mat.emissiveFactor.assign(cm.emissive, cm.emissive + 3);
-        if (cm.base_color[3] < 1.0f)
-            mat.alphaMode = "BLEND";
-        if (s->extras && s->extras[i].present)
-            mat.extras = extras_value(s->extras[i]);
-        m.materials.push_back(mat);
-    }
+    cat_gltf::add_materials(m, s->materials, s->material_count, s->extras);
     tinygltf::Scene scene;
     for (int i = 0; i < s->node_count; i++) {
         const cat_scene_node &sn = s->nodes[i];
@@ -404,19 +222,9 @@ extern "C" cat_result cat_scene_write_glb(const char *path, const cat_scene *s, 
         (s->material_count > 0 && !s->materials) || s->camera_count < 0 ||
         (s->camera_count > 0 && !s->cameras))
         return fail(path, err, err_size, CAT_ERR_INVALID, "the scene has no nodes");
-    try {
+    return cat_gltf::guarded(path, err, err_size, [&] {
         tinygltf::Model m;
         cat_result r = build(path, s, m, err, err_size);
-        if (r != CAT_OK)
-            return r;
-        std::ostringstream out;
-        tinygltf::TinyGLTF writer;
-        if (!writer.WriteGltfSceneToStream(&m, out, false, true))
-            return fail(path, err, err_size, CAT_ERR_INVALID, "tinygltf could not write it");
-        return write_atomic(path, out.str(), err, err_size);
-    } catch (const std::bad_alloc &) {
-        return fail(path, err, err_size, CAT_ERR_OUT_OF_MEMORY, "out of memory");
-    } catch (const std::exception &e) {
-        return fail(path, err, err_size, CAT_ERR_INVALID, "%s", e.what());
-    }
+        return r == CAT_OK ? cat_gltf::write_glb(path, m, err, err_size) : r;
+    });
 }

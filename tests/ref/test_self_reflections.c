@@ -98,12 +98,10 @@ static int render_moved(rd_context *ctx, app_project *p, const rd_view *view, in
     rd_scene_set_shadows(s.scene, &sh);
     size_t n = (size_t)W * H * 4;
     int ok = rd_render(ctx, s.scene, view) == RD_OK;
-    int first = s.object_parts[counter][0];
-    rd_object_desc d;
-    ok = ok && rd_scene_object_desc(s.scene, first, &d) == RD_OK;
     if (ok) {
-        d.transform[14] -= drop_m; /* column-major: the translation's z */
-        ok = rd_scene_set_transform(s.scene, first, d.transform) == RD_OK &&
+        double at[3] = {p->objects[counter].position_mm[0], p->objects[counter].position_mm[1],
+                        p->objects[counter].position_mm[2] - drop_m * 1e3};
+        ok = app_scene_move_object(&s, p, counter, at) == APP_OK &&
              rd_render(ctx, s.scene, view) == RD_OK && rd_read_linear(ctx, img, n) == RD_OK;
     }
     CHECK_MSG(ok, "moved render: %s", rd_last_error());
@@ -117,8 +115,7 @@ static void moved_neighbour(rd_context *ctx, app_project *p, const rd_view *view
     int counter = find_object(p, "counter");
     CHECK_MSG(counter >= 0, "stress-taps.json has no \"counter\"");
     if (counter < 0 || !render_moved(ctx, p, view, counter, 0.1f, moved))
-        return;
-    p->objects[counter].position_mm[2] -= 100.0;
+        return; /* the counter stays moved in the document: the fresh build draws it there */
     if (!gpu_render(ctx, p, view, "print", NULL, 0, fresh, NULL))
         return;
     for (int i = 0; i < W * H; i++)

@@ -32,38 +32,28 @@ static const app_fixture *fixture_of_object(const planner *p, int object)
     return NULL;
 }
 
-/* The renderer objects of project object `object` and of every object in its group. */
-static int collect_parts(planner *p, ui_fixture_drag *d)
+/* Project object `object` and every object in its group, where the document has them. */
+static int collect_objects(planner *p, ui_fixture_drag *d)
 {
     const app_project *pr = &p->project;
     const char *group = pr->objects[d->object].group;
-    int n = 0;
-    for (int i = 0; i < pr->object_count; i++)
-        if (i == d->object || (group[0] && !strcmp(pr->objects[i].group, group)))
-            n += p->scene.object_parts[i][1];
-    d->parts = malloc((size_t)(n ? n : 1) * sizeof *d->parts);
-    d->start = malloc((size_t)(n ? n : 1) * sizeof *d->start);
-    if (!d->parts || !d->start)
+    d->objects = malloc((size_t)pr->object_count * sizeof *d->objects);
+    d->start = malloc((size_t)pr->object_count * sizeof *d->start);
+    if (!d->objects || !d->start)
         return 0;
-    d->part_count = 0;
+    d->object_count = 0;
     for (int i = 0; i < pr->object_count; i++) {
         if (i != d->object && !(group[0] && !strcmp(pr->objects[i].group, group)))
             continue;
-        for (int k = 0; k < p->scene.object_parts[i][1]; k++) {
-            int index = p->scene.object_parts[i][0] + k;
-            rd_object_desc desc;
-            if (rd_scene_object_desc(p->scene.scene, index, &desc) != RD_OK)
-                continue;
-            d->parts[d->part_count] = index;
-            memcpy(d->start[d->part_count++], desc.transform, sizeof desc.transform);
-        }
+        d->objects[d->object_count] = i;
+        memcpy(d->start[d->object_count++], pr->objects[i].position_mm, sizeof d->start[0]);
     }
     return 1;
 }
 
 static void drag_free(ui_fixture_drag *d)
 {
-    free(d->parts);
+    free(d->objects);
     free(d->start);
     memset(d, 0, sizeof *d);
 }
@@ -77,7 +67,7 @@ int planner_fixture_drag_begin(planner *p, int object, const double grab[3])
 {
     ui_fixture_drag *d = &p->fixture_drag;
     const app_fixture *f = fixture_of_object(p, object);
-    if (d->active || !f || !p->scene_ready || !p->scene.object_parts)
+    if (d->active || !f || !p->scene_ready)
         return 1;
     memset(d, 0, sizeof *d);
     d->object = object;
@@ -86,7 +76,7 @@ int planner_fixture_drag_begin(planner *p, int object, const double grab[3])
     d->grab[1] = grab[1];
     d->start_centre[0] = d->centre[0] = f->centre[0];
     d->start_centre[1] = d->centre[1] = f->centre[1];
-    if (!collect_parts(p, d)) {
+    if (!collect_objects(p, d)) {
         drag_free(d);
         planner_status(p, "drag: out of memory");
         return 1;
@@ -103,15 +93,11 @@ void planner_fixture_drag_to(planner *p, double x_mm, double y_mm)
         return;
     d->centre[0] = x_mm;
     d->centre[1] = y_mm;
-    /* A translation in the plan, applied on the left of each part's own transform (metres). */
-    float dx = (float)((x_mm - d->start_centre[0]) * 1e-3);
-    float dy = (float)((y_mm - d->start_centre[1]) * 1e-3);
-    for (int i = 0; i < d->part_count; i++) {
-        float t[16];
-        memcpy(t, d->start[i], sizeof t);
-        t[12] += dx * t[15];
-        t[13] += dy * t[15];
-        rd_scene_set_transform(p->scene.scene, d->parts[i], t);
+    /* A translation in the plan of every object of the fixture. */
+    double dx = x_mm - d->start_centre[0], dy = y_mm - d->start_centre[1];
+    for (int i = 0; i < d->object_count; i++) {
+        double at[3] = {d->start[i][0] + dx, d->start[i][1] + dy, d->start[i][2]};
+        app_scene_move_object(&p->scene, &p->project, d->objects[i], at);
     }
 }
 
@@ -124,19 +110,12 @@ int planner_fixture_drag_end(planner *p, int commit)
     char name[sizeof p->project.objects[0].name];
     memcpy(name, p->project.objects[d->object].name, sizeof name);
     double x = d->centre[0], y = d->centre[1];
-    int rc = 0;
-    if (commit && moved) {
-        drag_free(d);
-        /* One move edit (snapped to the nearest wall): the scene is rebuilt from the document. */
-        rc = planner_drag_object(p, name, x, y);
-        if (rc == 0)
-            return 0;
-        planner_rebuild_scene(p); /* refused: back to where the document has it */
-        return rc;
-    }
+    /* Back where the drag began, in the document and the scene, so that the edit below moves
+     * the fixture from there (and a refused edit leaves it there). */
     planner_fixture_drag_to(p, d->start_centre[0], d->start_centre[1]);
     drag_free(d);
-    return rc;
+    /* One move edit (snapped to the nearest wall): the scene is rebuilt from the document. */
+    return commit && moved ? planner_drag_object(p, name, x, y) : 0;
 }
 
 int planner_fixture_drag_press(planner *p, double sx, double sy)

@@ -1,8 +1,9 @@
-/* Dragging a placed fixture in the 3D view: press on it, move the pointer, let
- * go. While the button is held the fixture's renderer objects are moved in place (no scene
- * rebuild: only the probes that see it are captured again, within the frame's face budget),
- * so the drag runs at the view's frame rate; on release one `move` edit (snapped to the
- * nearest wall, as the plan's drag) makes it one undo step. */
+/* Dragging a placed fixture in the 3D view: press on it, move the pointer, let go. While the
+ * button is held the fixture's objects are moved in the document and in the built scene
+ * (app_scene_move_object: no rebuild, only the probes that see it are captured again, within
+ * the frame's face budget), so the drag runs at the view's frame rate; on release they go back
+ * to where they were and one `move` edit (snapped to the nearest wall, as the plan's drag)
+ * makes the move one undo step. */
 #ifndef UI_FIXTURE_DRAG_H
 #define UI_FIXTURE_DRAG_H
 
@@ -14,9 +15,9 @@ typedef struct ui_fixture_drag {
     double grab[2];         /* the plan point grabbed on that plane, mm */
     double start_centre[2]; /* the fixture's centre when grabbed, mm */
     double centre[2];       /* where it is now, mm */
-    int *parts;             /* renderer objects moved, and their transforms when grabbed */
-    float (*start)[16];
-    int part_count;
+    int *objects;           /* the project objects moved (the fixture's group) and their */
+    double (*start)[3];     /* document positions when grabbed, mm */
+    int object_count;
 } ui_fixture_drag;
 
 #endif

@@ -22,46 +22,33 @@ static double cpu_now_ms(void)
 }
 
 /* --animate NAME: the object is dragged, as in the planner, 10 mm a frame along x and back
- * (40 frames each way), its parts moved in place with rd_scene_set_transform, so the frames
- * measure what a drag costs the renderer (probes refreshed on change within their budget). */
+ * (40 frames each way), moved in the document and the scene (app_scene_move_object), so the
+ * frames measure what a drag costs the renderer (probes refreshed on change within their
+ * budget). */
 typedef struct drag_state {
-    int first, parts;
-    float (*rest)[16];
+    int object; /* -1: no drag */
+    double rest_mm[3];
 } drag_state;
 
 static int drag_begin(cli_session *s, const char *name, drag_state *d)
 {
-    memset(d, 0, sizeof *d);
+    d->object = -1;
     for (int i = 0; i < s->project.object_count; i++)
-        if (!strcmp(s->project.objects[i].name, name)) {
-            d->first = s->scene.object_parts[i][0];
-            d->parts = s->scene.object_parts[i][1];
-        }
-    if (!d->parts) {
+        if (!strcmp(s->project.objects[i].name, name))
+            d->object = i;
+    if (d->object < 0) {
         fprintf(stderr, "tessera bench: no object named \"%s\" to drag\n", name);
         return CLI_USAGE;
     }
-    d->rest = calloc((size_t)d->parts, sizeof *d->rest);
-    if (!d->rest)
-        return CLI_FAILED;
-    for (int k = 0; k < d->parts; k++) {
-        rd_object_desc o;
-        if (rd_scene_object_desc(s->scene.scene, d->first + k, &o) == RD_OK)
-            memcpy(d->rest[k], o.transform, sizeof d->rest[k]);
-    }
+    memcpy(d->rest_mm, s->project.objects[d->object].position_mm, sizeof d->rest_mm);
     return CLI_OK;
 }
 
 static void drag_step(cli_session *s, const drag_state *d, int frame)
 {
     int t = frame % 80;
-    float offset = 0.01f * (float)(t < 40 ? t : 80 - t);
-    for (int k = 0; k < d->parts; k++) {
-        float m[16];
-        memcpy(m, d->rest[k], sizeof m);
-        m[12] -= offset;
-        rd_scene_set_transform(s->scene.scene, d->first + k, m);
-    }
+    double at[3] = {d->rest_mm[0] - 10.0 * (t < 40 ? t : 80 - t), d->rest_mm[1], d->rest_mm[2]};
+    app_scene_move_object(&s->scene, &s->project, d->object, at);
 }
 
 static void print_row(const char *what, const app_stats *s)
@@ -107,7 +94,7 @@ int cli_cmd_bench(const cli_options *args)
         return CLI_USAGE;
     }
     view.supersample = 1; /* an interactive frame */
-    drag_state drag = {0};
+    drag_state drag = {.object = -1};
     if (o.animate && (rc = drag_begin(&s, o.animate, &drag)) != CLI_OK) {
         cli_session_close(&s);
         return rc;
@@ -117,7 +104,6 @@ int cli_cmd_bench(const cli_options *args)
     double *cpu = calloc((size_t)o.frames, sizeof *cpu);
     rd_frame_stats *stats = calloc((size_t)o.frames, sizeof *stats);
     if (!frame || !floor_ms || !cpu || !stats) {
-        free(drag.rest);
         free(cpu);
         free(frame);
         free(floor_ms);
@@ -126,7 +112,7 @@ int cli_cmd_bench(const cli_options *args)
         return CLI_FAILED;
     }
     for (int i = 0; rc == CLI_OK && i < o.warmup + o.frames; i++) {
-        if (drag.parts)
+        if (drag.object >= 0)
             drag_step(&s, &drag, i + 1);
         double t0 = cli_now_ms(), c0 = cpu_now_ms();
         rd_result r1 = rd_render(s.ctx, s.scene.scene, &view);
@@ -173,13 +159,12 @@ int cli_cmd_bench(const cli_options *args)
         for (int i = 0; i < o.frames; i++)
             faces += stats[i].faces_captured;
         printf("probe faces captured: %.2f a frame%s\n", (double)faces / o.frames,
-               drag.parts ? " (dragging)" : "");
+               drag.object >= 0 ? " (dragging)" : "");
     }
     free(frame);
     free(floor_ms);
     free(cpu);
     free(stats);
-    free(drag.rest);
     cli_session_close(&s);
     return rc;
 }

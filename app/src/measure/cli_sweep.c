@@ -179,16 +179,12 @@ static int pick_moving(const app_project *p, const char *name)
     return best;
 }
 
-/* Moves the object's parts by `offset` metres along x from their project transforms. */
-static void place(cli_session *s, int object, const float (*rest)[16], float offset)
+/* Moves the object by `offset` metres along x from its rest position, in the document and
+ * the scene. */
+static void place(cli_session *s, int object, const double rest_mm[3], float offset)
 {
-    int first = s->scene.object_parts[object][0], parts = s->scene.object_parts[object][1];
-    for (int k = 0; k < parts; k++) {
-        float m[16];
-        memcpy(m, rest[k], sizeof m);
-        m[12] += offset;
-        rd_scene_set_transform(s->scene.scene, first + k, m);
-    }
+    double at[3] = {rest_mm[0] + (double)offset * 1e3, rest_mm[1], rest_mm[2]};
+    app_scene_move_object(&s->scene, &s->project, object, at);
 }
 
 typedef struct sweep_row {
@@ -244,7 +240,7 @@ int cli_cmd_sweep(const cli_options *args)
     ref_image truth[5] = {{0}};
     size_t n = (size_t)view.width * (size_t)view.height;
     float *image = malloc(n * 4 * sizeof *image), *mask = malloc(n * sizeof *mask);
-    float(*rest)[16] = NULL;
+    double rest[3] = {0};
     int moving = pick_moving(&s.project, o.animate);
     if (rc == CLI_OK && (!image || !mask))
         rc = CLI_FAILED;
@@ -253,18 +249,8 @@ int cli_cmd_sweep(const cli_options *args)
                 o.animate ? o.animate : "");
         rc = CLI_USAGE;
     }
-    if (rc == CLI_OK) {
-        int parts = s.scene.object_parts[moving][1];
-        rest = calloc((size_t)(parts ? parts : 1), sizeof *rest);
-        for (int k = 0; rest && k < parts; k++) {
-            rd_object_desc d;
-            if (rd_scene_object_desc(s.scene.scene, s.scene.object_parts[moving][0] + k, &d) ==
-                RD_OK)
-                memcpy(rest[k], d.transform, sizeof rest[k]);
-        }
-        if (!rest)
-            rc = CLI_FAILED;
-    }
+    if (rc == CLI_OK)
+        memcpy(rest, s.project.objects[moving].position_mm, sizeof rest);
     FILE *csv = rc == CLI_OK && o.csv ? fopen(o.csv, "w") : NULL;
     if (rc == CLI_OK && o.csv && !csv) {
         perror(o.csv);
@@ -315,7 +301,7 @@ int cli_cmd_sweep(const cli_options *args)
             break;
         }
         for (int f = 0; f < frames; f++) {
-            place(&s, moving, (const float(*)[16])rest,
+            place(&s, moving, rest,
                   animated ? (float)(f - (frames - 1)) * SLIDE_PER_FRAME_M : 0.0f);
             double t0 = cli_now_ms();
             if (rd_render(s.ctx, s.scene.scene, &view_k) != RD_OK) {
@@ -377,7 +363,6 @@ int cli_cmd_sweep(const cli_options *args)
             }
         }
     }
-    free(rest);
     free(image);
     free(mask);
     for (int i = 0; i < 5; i++)

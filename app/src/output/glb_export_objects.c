@@ -1,6 +1,6 @@
 /* The project's objects as nodes of the exported GLB (app/output/project_glb.h): primitives as the
- * renderer's unit meshes (render/primitives.h, the segment counts of scene_objects.c) scaled to
- * their size, glTF models and catalog products as their files' parts with their own materials.
+ * renderer's unit meshes (render/primitives.h, the segment counts of render_list_objects.c) scaled
+ * to their size, glTF models and catalog products as their files' parts with their own materials.
  * The node's matrix is the object's placement T(position) * Rz * Ry * Rx * S(scale) in mm
  * (app_object_transform's, without the size, which is baked into a primitive's vertices). */
 #include "glb_export_internal.h"
@@ -81,7 +81,8 @@ static app_result primitive_model(const app_object *o, int material, cat_model *
         r = rd_mesh_data_plane(&d);
         size[2] = 1;
         break;
-    default: /* the unit torus is 1 across and `ratio` thick: z scales like x (scene_objects.c) */
+    default: /* the unit torus is 1 across and `ratio` thick: z scales like x
+                (render_list_objects.c) */
         r = rd_mesh_data_torus((float)fmin(o->size_mm[2] / o->size_mm[0], 0.5), 64, 24, &d);
         size[2] = size[0];
         break;

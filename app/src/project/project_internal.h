@@ -93,6 +93,16 @@ app_result pj_get_string(pj_ctx *c, const cJSON *obj, const char *key, int requi
                          int allow_empty, char *out, size_t out_size);
 /* The number of elements of an array checked against APP_PROJECT_MAX_ITEMS. */
 app_result pj_check_count(pj_ctx *c, const cJSON *array, const char *what, int *count);
+/* Reads array member `key` of root (absent: no items) into a zeroed array of a->size-byte
+ * elements, item i by a->read(c, item, i, element) under the path key[i]. a->items and
+ * a->count (the items read whole) are set also on failure, for the caller to keep and free. */
+typedef struct pj_array {
+    size_t size;
+    app_result (*read)(pj_ctx *c, const cJSON *item, int index, void *out);
+    void *items;
+    int count;
+} pj_array;
+app_result pj_read_array(pj_ctx *c, const cJSON *root, const char *key, pj_array *a);
 
 /* ---- defaults (project_defaults.c) ---------------------------------------------------------- */
 

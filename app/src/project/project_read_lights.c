@@ -48,8 +48,9 @@ static app_result read_direction(pj_ctx *c, const cJSON *item, app_light *l)
     return APP_OK;
 }
 
-static app_result read_light(pj_ctx *c, const cJSON *item, int index, app_light *l)
+static app_result read_light(pj_ctx *c, const cJSON *item, int index, void *out)
 {
+    app_light *l = out;
     if (!cJSON_IsObject(item))
         return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(item));
     pj_default_light(l);
@@ -90,26 +91,9 @@ static app_result read_light(pj_ctx *c, const cJSON *item, int index, app_light 
 
 app_result pj_read_lights(pj_ctx *c, const cJSON *root)
 {
-    const cJSON *list;
-    app_result r = pj_member(c, root, "lights", cJSON_Array, 0, &list);
-    if (r != APP_OK || !list)
-        return r;
-    size_t mark = pj_path_key(c, "lights");
-    int count;
-    if ((r = pj_check_count(c, list, "lights", &count)) != APP_OK)
-        return r;
-    app_project *p = c->p;
-    p->lights = pj_calloc((size_t)count, sizeof *p->lights);
-    if (!p->lights)
-        return pj_fail(c, APP_ERR_OUT_OF_MEMORY, "out of memory (%d lights)", count);
-    int i = 0;
-    for (const cJSON *item = list->child; item; item = item->next, i++) {
-        size_t l_mark = pj_path_index(c, i);
-        if ((r = read_light(c, item, i, &p->lights[i])) != APP_OK)
-            return r;
-        p->light_count = i + 1;
-        pj_path_restore(c, l_mark);
-    }
-    pj_path_restore(c, mark);
-    return APP_OK;
+    pj_array a = {.size = sizeof *c->p->lights, .read = read_light};
+    app_result r = pj_read_array(c, root, "lights", &a);
+    c->p->lights = a.items;
+    c->p->light_count = a.count;
+    return r;
 }

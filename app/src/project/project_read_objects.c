@@ -72,8 +72,9 @@ static app_result read_scale(pj_ctx *c, const cJSON *item, app_object *o)
     return APP_OK;
 }
 
-static app_result read_object(pj_ctx *c, const cJSON *item, int index, app_object *o)
+static app_result read_object(pj_ctx *c, const cJSON *item, int index, void *out)
 {
+    app_object *o = out;
     if (!cJSON_IsObject(item))
         return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(item));
     pj_default_object(o);
@@ -122,26 +123,9 @@ static app_result read_object(pj_ctx *c, const cJSON *item, int index, app_objec
 
 app_result pj_read_objects(pj_ctx *c, const cJSON *root)
 {
-    const cJSON *list;
-    app_result r = pj_member(c, root, "objects", cJSON_Array, 0, &list);
-    if (r != APP_OK || !list)
-        return r;
-    size_t mark = pj_path_key(c, "objects");
-    int count;
-    if ((r = pj_check_count(c, list, "objects", &count)) != APP_OK)
-        return r;
-    app_project *p = c->p;
-    p->objects = pj_calloc((size_t)count, sizeof *p->objects);
-    if (!p->objects)
-        return pj_fail(c, APP_ERR_OUT_OF_MEMORY, "out of memory (%d objects)", count);
-    int i = 0;
-    for (const cJSON *item = list->child; item; item = item->next, i++) {
-        size_t o_mark = pj_path_index(c, i);
-        if ((r = read_object(c, item, i, &p->objects[i])) != APP_OK)
-            return r;
-        p->object_count = i + 1;
-        pj_path_restore(c, o_mark);
-    }
-    pj_path_restore(c, mark);
-    return APP_OK;
+    pj_array a = {.size = sizeof *c->p->objects, .read = read_object};
+    app_result r = pj_read_array(c, root, "objects", &a);
+    c->p->objects = a.items;
+    c->p->object_count = a.count;
+    return r;
 }

@@ -104,8 +104,9 @@ static app_result read_borders(pj_ctx *c, const cJSON *item, app_tiling *t)
     return APP_OK;
 }
 
-static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, app_tiling *t)
+static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, void *out)
 {
+    app_tiling *t = out;
     if (!cJSON_IsObject(item))
         return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(item));
     pj_default_tiling(t);
@@ -139,26 +140,9 @@ static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, app_tilin
 
 app_result pj_read_tilings(pj_ctx *c, const cJSON *root)
 {
-    const cJSON *list;
-    app_result r = pj_member(c, root, "tilings", cJSON_Array, 0, &list);
-    if (r != APP_OK || !list)
-        return r;
-    size_t mark = pj_path_key(c, "tilings");
-    int count;
-    if ((r = pj_check_count(c, list, "tilings", &count)) != APP_OK)
-        return r;
-    app_project *p = c->p;
-    p->tilings = pj_calloc((size_t)count, sizeof *p->tilings);
-    if (!p->tilings)
-        return pj_fail(c, APP_ERR_OUT_OF_MEMORY, "out of memory (%d tilings)", count);
-    int i = 0;
-    for (const cJSON *item = list->child; item; item = item->next, i++) {
-        size_t i_mark = pj_path_index(c, i);
-        if ((r = read_tiling(c, item, i, &p->tilings[i])) != APP_OK)
-            return r;
-        p->tiling_count = i + 1;
-        pj_path_restore(c, i_mark);
-    }
-    pj_path_restore(c, mark);
-    return APP_OK;
+    pj_array a = {.size = sizeof *c->p->tilings, .read = read_tiling};
+    app_result r = pj_read_array(c, root, "tilings", &a);
+    c->p->tilings = a.items;
+    c->p->tiling_count = a.count;
+    return r;
 }

@@ -1,5 +1,5 @@
-/* The material of each part of a model, shared by the GPU scene (scene_objects.c), the
- * reference tracer's scene (ref_scene_build.c) and the thumbnails (thumb_scene.c), so all three
+/* The material of each part of a model, shared by the render list of both renderers
+ * (render_list_objects.c) and the thumbnails (thumb_scene.c), so all of them
  * draw a product the same way. A generated product model carries Tessera's parameters per part
  * (catalog/model_write.h, "extras"): the parts its finish variant applies to (variant_slot)
  * take the object's material, the fixed parts (a basin's chrome waste, a WC's chrome flush

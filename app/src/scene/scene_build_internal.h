@@ -4,24 +4,15 @@
 #include "app/design/room_mesh.h"
 #include "app/design/placement.h"
 #include "app/design/room_surfaces.h"
+#include "app/scene/render_list.h"
 #include "app/scene/scene_build.h"
 
 #include <stdio.h>
 #include <string.h>
 
-app_result app_scene_track_mesh(app_scene *s, rd_mesh mesh);
-/* The renderer's material for project material index mi, loading its texture once. */
-app_result app_scene_material(rd_context *ctx, const app_project *p, app_scene *s, int mi,
-                              rd_material *out, char *err, size_t err_size);
-/* The same for a material that is not in the project (room_mesh.h inline materials). */
-app_result app_scene_material_of(rd_context *ctx, const app_project *p, app_scene *s,
-                                 const app_material *am, rd_material *out, char *err,
-                                 size_t err_size);
-/* The room's meshes (app_room_geometry_build, shared with the reference tracer). */
-app_result app_scene_add_room(rd_context *ctx, const app_project *p, const app_room_geometry *room,
-                              app_scene *s, char *err, size_t err_size);
-app_result app_scene_add_objects(rd_context *ctx, const app_project *p, app_scene *s, char *err,
-                                 size_t err_size);
+/* The map from renderer objects to project objects for app_scene_move_object (scene_move.c). */
+app_result app_scene_parts_make(const app_render_list *l, app_scene *s);
+void app_scene_parts_free(app_scene *s);
 /* A copy q of p whose catalog products are drawable objects (scene_products.c); owns = 1 when
  * q has its own objects and materials arrays. covers: the boxes of the baths and shower trays
  * (app/design/room_surfaces.h), for the tile layouts. Free with app_scene_resolved_free. */
@@ -43,9 +34,7 @@ void app_room_add_tiles(const app_project *p, const app_fixture_box *covers, int
 /* A product the catalog could not give a size or model to: nothing to draw. */
 #define APP_OBJECT_UNRESOLVED(o)                                                                   \
     ((o)->has_product && (o)->shape != APP_SHAPE_MODEL && !((o)->size_mm[0] > 0))
-/* A static probe map (RENDERING.md section 8) from six files, loaded once per pattern. */
-app_result app_scene_cubemap(rd_context *ctx, app_scene *s, const char *pattern, rd_cubemap *out,
-                             char *err, size_t err_size);
+/* M = T(position) * Rz * Ry * Rx * S(scale * size), column-major, metres. */
 void app_object_transform(const app_object *o, const double size_m[3], float out[16]);
 
 #endif

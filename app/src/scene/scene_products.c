@@ -1,6 +1,6 @@
 /* Placed catalog products (app_object.has_product, project file version 2) made drawable for
- * both scene builders: a working copy of the project in which each product object is a plain
- * object: the product's model (the catalog's `model` column, relative to the assets folder)
+ * the render list (render_list.h): a working copy of the project in which each product object is a
+ * plain object: the product's model (the catalog's `model` column, relative to the assets folder)
  * when that file exists, else a box of the catalog's width x depth x height; with the
  * variant's render material unless the project gave the object a material of its own (any
  * but "default"). The product frame is app/design/placement.h's: the origin at the bottom centre of

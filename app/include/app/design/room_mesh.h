@@ -1,6 +1,6 @@
-/* The room's geometry from its floor plan (app/design/room.h): the meshes both renderers draw (the
- * GPU scene in scene_room.c, the reference tracer's in ref_scene_build.c), so they see the same
- * triangles, normals and texture coordinates.
+/* The room's geometry from its floor plan (app/design/room.h): the meshes both renderers draw
+ * (through the render list, app/scene/render_list.h), so they see the same triangles, normals and
+ * texture coordinates.
  *
  *  - floor and ceiling: the plan polygon, ear-clipped (any simple polygon: L-shapes, ...); the
  *    ceiling follows the sloped section where there is one;

@@ -10,26 +10,34 @@
 extern "C" {
 #endif
 
+typedef struct app_scene_parts app_scene_parts;
+
+/* A project's GPU scene: the adapter of render_list.h. */
 typedef struct app_scene {
     rd_scene *scene;
-    rd_mesh *meshes; /* every mesh this scene uploaded, destroyed by app_scene_release */
-    int mesh_count, mesh_capacity;
+    rd_mesh *meshes; /* per list mesh (id 0: not drawn), destroyed by app_scene_release */
+    int mesh_count;
     rd_texture *textures;
-    char (*texture_paths)[1024];
-    int texture_count, texture_capacity;
-    rd_cubemap *cubemaps; /* static probe maps, loaded once per file pattern */
-    char (*cubemap_paths)[1024];
-    int cubemap_count, cubemap_capacity;
-    rd_mesh unit_meshes[2][5];
-    /* Per project object: its first renderer object and how many parts it has (to move it). */
-    int (*object_parts)[2]; /* shared primitives: [coarse][app_shape] (models excluded) */
+    int texture_count;
+    rd_cubemap *cubemaps; /* static probe maps */
+    int cubemap_count;
+    app_scene_parts *parts; /* which project object each renderer object draws */
 } app_scene;
 
 /* Uploads the room, the objects (primitives and glTF/GLB models), the textures and the
- * lights. On failure nothing stays allocated and err names the file and the object. */
+ * lights of p's render list (app/scene/render_list.h). On failure nothing stays allocated and
+ * err names the file and the object. */
 app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out, char *err,
                            size_t err_size);
 void app_scene_release(rd_context *ctx, app_scene *s);
+
+/* Moves project object `object` to position_mm (its document position, millimetres): in the
+ * document p and in the scene s built from p, whose renderer objects for it take the
+ * transform a fresh build would give them (probes that see it are captured again under their
+ * policies). The one way to move a built object without rebuilding the scene.
+ * APP_ERR_NOT_FOUND when p has no such object or s was not built from p. */
+app_result app_scene_move_object(app_scene *s, app_project *p, int object,
+                                 const double position_mm[3]);
 
 /* The room's geometry, the same for the GPU scene and the reference tracer's scene, is
  * app_room_geometry_build (app/design/room_mesh.h). */
