@@ -217,7 +217,7 @@ int cli_usage_error(const cli_options *o)
 
 static void print_option(const cli_option_spec *s, FILE *f)
 {
-    char left[96], expect[160];
+    char left[224], expect[160];
     cli_option_expect(s, expect, sizeof expect);
     const char *value = s->value;
     char enum_value[96];
