@@ -46,6 +46,18 @@ function(tessera_add_test)
     string(REPLACE ";" "\\;" arg "${arg}")
     list(APPEND args "${arg}")
   endforeach()
+  # CMake lists also join the elements between an unbalanced '[' and ']': refuse rather than
+  # pass a different test.
+  list(LENGTH T_EXPECT_RC n_rc)
+  list(LENGTH T_EXPECT_OUTPUT n_out)
+  list(LENGTH T_EXPECT_STDERR n_err)
+  list(LENGTH T_COMMAND n_cmd)
+  list(LENGTH args n_args)
+  math(EXPR n_want "2 * (${n_rc} + ${n_out} + ${n_err}) + 1 + ${n_cmd}")
+  if(NOT n_args EQUAL n_want)
+    message(FATAL_ERROR "tessera_add_test(${T_NAME}): an argument with an unbalanced [ or ] "
+                        "cannot be passed whole")
+  endif()
   add_test(NAME ${T_NAME} COMMAND ${CMAKE_COMMAND} -P ${TESSERA_RUN_TEST} -- ${args})
   if(T_LABELS)
     set_tests_properties(${T_NAME} PROPERTIES LABELS "${T_LABELS}")
