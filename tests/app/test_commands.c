@@ -304,7 +304,7 @@ static void test_random_sequences(void)
             } else {
                 refused_total++;
                 /* A refused command changes nothing and says why. */
-                CHECK_MSG(app_project_equal(&copy, &p, diff, sizeof diff), diff);
+                CHECK_MSG(app_project_equal(&copy, &p, diff, sizeof diff), "%s", diff);
                 CHECK(err[0] != 0);
             }
             app_project_free_all(&copy);
@@ -313,7 +313,7 @@ static void test_random_sequences(void)
                 CHECK(app_project_copy(&copy, &p, err, sizeof err) == APP_OK);
                 CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
                 CHECK(app_history_redo(h, &p, err, sizeof err) == APP_OK);
-                CHECK_MSG(app_project_equal(&copy, &p, diff, sizeof diff), diff);
+                CHECK_MSG(app_project_equal(&copy, &p, diff, sizeof diff), "%s", diff);
                 app_project_free_all(&copy);
             }
         }
@@ -324,11 +324,11 @@ static void test_random_sequences(void)
             char path[256];
             snprintf(path, sizeof path, "%s/edited-%d.json", tmp_dir, seed);
             app_result w = app_project_write(path, &p, err, sizeof err);
-            CHECK_MSG(w == APP_OK, err);
+            CHECK_MSG(w == APP_OK, "%s", err);
             app_project back;
             if (w == APP_OK) {
                 app_result rr = app_project_read(path, &back, err, sizeof err);
-                CHECK_MSG(rr == APP_OK, err);
+                CHECK_MSG(rr == APP_OK, "%s", err);
                 if (rr == APP_OK) {
                     CHECK(back.object_count == p.object_count &&
                           back.tiling_count == p.tiling_count &&
@@ -345,14 +345,14 @@ static void test_random_sequences(void)
         for (int i = 0; i < applied; i++)
             CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
         CHECK(app_history_undo(h, &p, err, sizeof err) == APP_ERR_NOT_FOUND);
-        CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), diff);
+        CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), "%s", diff);
         for (int i = 0; i < applied; i++)
             CHECK(app_history_redo(h, &p, err, sizeof err) == APP_OK);
         CHECK(app_history_redo(h, &p, err, sizeof err) == APP_ERR_NOT_FOUND);
-        CHECK_MSG(app_project_equal(&edited, &p, diff, sizeof diff), diff);
+        CHECK_MSG(app_project_equal(&edited, &p, diff, sizeof diff), "%s", diff);
         while (app_history_undo_count(h) > 0)
             CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
-        CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), diff);
+        CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), "%s", diff);
         app_history_destroy(h);
         app_project_free_all(&edited);
         app_project_free_all(&original);
@@ -361,7 +361,7 @@ static void test_random_sequences(void)
     printf("random sequences: %d commands applied, %d refused\n", applied_total, refused_total);
     /* The sequences must have exercised every command type. */
     for (int t = 0; t < APP_CMD_COUNT; t++) {
-        CHECK_MSG(kinds_applied[t] > 0, app_command_type_name((app_command_type)t));
+        CHECK_MSG(kinds_applied[t] > 0, "%s", app_command_type_name((app_command_type)t));
         printf("  %-18s %d\n", app_command_type_name((app_command_type)t), kinds_applied[t]);
     }
 }
@@ -418,7 +418,7 @@ static void test_history_rules(void)
     CHECK(app_history_undo_count(h) == 1);
     CHECK(!strcmp(app_history_undo_label(h), "rebuild the WC wall"));
     CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
-    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), diff);
+    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), "%s", diff);
     /* A cancelled group leaves no trace: the document as before, no undo step, the redo
      * stack kept. */
     CHECK(app_history_redo_count(h) == 1);
@@ -429,7 +429,7 @@ static void test_history_rules(void)
     }
     CHECK(app_history_do(h, &p, &rm, err, sizeof err) == APP_OK);
     CHECK(app_history_abort_group(h, &p, err, sizeof err) == APP_OK);
-    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), diff);
+    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), "%s", diff);
     CHECK(app_history_undo_count(h) == 0 && app_history_redo_count(h) == 1);
     /* Specific refusals, each naming the rule. */
     app_command_desc bad = {.type = APP_CMD_MOVE_CORNER, .index = 3, .corner = {1800, -500}};
@@ -455,7 +455,7 @@ static void test_history_rules(void)
     CHECK(p.room.width_mm == 3200);
     CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
     CHECK(p.room.width_mm == 3000);
-    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), diff);
+    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), "%s", diff);
     app_history_destroy(h);
     app_project_free_all(&original);
     app_project_free_all(&p);
@@ -468,5 +468,5 @@ int main(void)
     test_random_sequences();
     tu_remove_tree(tmp_dir);
     free(tmp_dir);
-    return tu_result("commands");
+    return check_report("commands");
 }

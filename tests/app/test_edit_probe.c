@@ -13,7 +13,7 @@ static void make_room(app_project *p)
     char err[1024];
     CHECK_MSG(app_project_read(TESSERA_SOURCE_DIR "/tests/cli/data/edit-room.json", p, err,
                                sizeof err) == APP_OK,
-              err);
+              "%s", err);
 }
 
 static app_result run(app_project *p, app_history *h, const char *text, char *err, size_t err_size)
@@ -32,9 +32,9 @@ static void refused(app_project *p, app_history *h, const char *line, const char
     int undo = app_history_undo_count(h);
     CHECK(run(p, h, line, err, sizeof err) != APP_OK);
     printf("refused: %s\n", err);
-    CHECK_MSG(tu_contains(err, piece), err);
-    CHECK_MSG(tu_contains(err, "probe.script:1:"), err);
-    CHECK_MSG(app_project_equal(&before, p, diff, sizeof diff), diff);
+    CHECK_MSG(tu_contains(err, piece), "%s", err);
+    CHECK_MSG(tu_contains(err, "probe.script:1:"), "%s", err);
+    CHECK_MSG(app_project_equal(&before, p, diff, sizeof diff), "%s", diff);
     CHECK(app_history_undo_count(h) == undo);
     app_project_free_all(&before);
 }
@@ -42,10 +42,10 @@ static void refused(app_project *p, app_history *h, const char *line, const char
 static void check_policy(const app_material *m, int update, int every, int resolution,
                          int correction)
 {
-    CHECK_MSG(m->probe_update == update, m->name);
-    CHECK_MSG(m->probe_every == every, m->name);
-    CHECK_MSG(m->probe_resolution == resolution, m->name);
-    CHECK_MSG(m->correction == correction, m->name);
+    CHECK_MSG(m->probe_update == update, "%s", m->name);
+    CHECK_MSG(m->probe_every == every, "%s", m->name);
+    CHECK_MSG(m->probe_resolution == resolution, "%s", m->name);
+    CHECK_MSG(m->correction == correction, "%s", m->name);
 }
 
 /* A material with a prepared cube map (static probe): leaving static drops the map so the
@@ -72,7 +72,7 @@ static void test_static_map(void)
     snprintf(path, sizeof path, "%s/static.json", dir);
     CHECK(tu_write_file(path, doc, sizeof doc - 1));
     app_project p, start, back;
-    CHECK_MSG(app_project_read(path, &p, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_project_read(path, &p, err, sizeof err) == APP_OK, "%s", err);
     int m = app_project_find_material(&p, "chrome");
     CHECK(m >= 0 && p.materials[m].probe_update == APP_PROBE_STATIC && p.materials[m].probe_map[0]);
     if (m < 0) {
@@ -83,13 +83,14 @@ static void test_static_map(void)
     CHECK(app_project_copy(&start, &p, err, sizeof err) == APP_OK);
     app_history *h = app_history_create(0);
     /* Static stays static with its map when only the resolution changes. */
-    CHECK_MSG(run(&p, h, "probe chrome resolution 256\n", err, sizeof err) == APP_OK, err);
+    CHECK_MSG(run(&p, h, "probe chrome resolution 256\n", err, sizeof err) == APP_OK, "%s", err);
     CHECK(p.materials[m].probe_update == APP_PROBE_STATIC && p.materials[m].probe_map[0] &&
           p.materials[m].probe_resolution == 256);
-    CHECK_MSG(run(&p, h, "probe chrome update time-sliced\n", err, sizeof err) == APP_OK, err);
+    CHECK_MSG(run(&p, h, "probe chrome update time-sliced\n", err, sizeof err) == APP_OK, "%s",
+              err);
     CHECK(p.materials[m].probe_update == APP_PROBE_TIME_SLICED && !p.materials[m].probe_map[0]);
-    CHECK_MSG(app_project_write(path, &p, err, sizeof err) == APP_OK, err);
-    CHECK_MSG(app_project_read(path, &back, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_project_write(path, &p, err, sizeof err) == APP_OK, "%s", err);
+    CHECK_MSG(app_project_read(path, &back, err, sizeof err) == APP_OK, "%s", err);
     CHECK(back.materials[m].probe_update == APP_PROBE_TIME_SLICED &&
           !back.materials[m].probe_map[0]);
     app_project_free_all(&back);
@@ -98,11 +99,11 @@ static void test_static_map(void)
     CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
     CHECK(p.materials[m].probe_update == APP_PROBE_STATIC && p.materials[m].probe_map[0]);
     CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
-    CHECK_MSG(app_project_equal(&start, &p, diff, sizeof diff), diff);
+    CHECK_MSG(app_project_equal(&start, &p, diff, sizeof diff), "%s", diff);
     CHECK(app_history_redo(h, &p, err, sizeof err) == APP_OK);
     CHECK_MSG(run(&p, h, "probe chrome update static correction sphere\n", err, sizeof err) ==
                   APP_OK,
-              err);
+              "%s", err);
     app_history_destroy(h);
     app_project_free_all(&start);
     app_project_free_all(&p);
@@ -123,7 +124,7 @@ int main(void)
                   "add box b at 2000 500 400 size 300 300 800 material default\n"
                   "reflect default 0.4 gloss 0.8\n",
                   err, sizeof err) == APP_OK,
-              err);
+              "%s", err);
     int m = app_project_find_material(&p, "default");
     CHECK(m >= 0 && p.objects[0].material == m && p.objects[1].material == m);
     check_policy(&p.materials[m], APP_PROBE_DEFAULT, 0, 0, APP_CORRECTION_DEFAULT);
@@ -151,10 +152,10 @@ int main(void)
     app_project after[6];
     for (int i = 0; i < n; i++) {
         int undo = app_history_undo_count(h);
-        CHECK_MSG(run(&p, h, steps[i].line, err, sizeof err) == APP_OK, err);
+        CHECK_MSG(run(&p, h, steps[i].line, err, sizeof err) == APP_OK, "%s", err);
         CHECK(app_history_undo_count(h) == undo + 1);
         CHECK(app_history_last_changed(h) == APP_CHANGED_MATERIALS);
-        CHECK_MSG(!strcmp(app_history_undo_label(h), "set the probe of \"default\""),
+        CHECK_MSG(!strcmp(app_history_undo_label(h), "set the probe of \"default\""), "%s",
                   app_history_undo_label(h));
         check_policy(&p.materials[m], steps[i].update, steps[i].every, steps[i].resolution,
                      steps[i].correction);
@@ -166,13 +167,13 @@ int main(void)
 
     /* Undo steps back through each state exactly; redo forward again. */
     for (int i = n - 1; i >= 0; i--) {
-        CHECK_MSG(app_project_equal(&after[i], &p, diff, sizeof diff), diff);
+        CHECK_MSG(app_project_equal(&after[i], &p, diff, sizeof diff), "%s", diff);
         CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
     }
-    CHECK_MSG(app_project_equal(&start, &p, diff, sizeof diff), diff);
+    CHECK_MSG(app_project_equal(&start, &p, diff, sizeof diff), "%s", diff);
     for (int i = 0; i < n; i++) {
         CHECK(app_history_redo(h, &p, err, sizeof err) == APP_OK);
-        CHECK_MSG(app_project_equal(&after[i], &p, diff, sizeof diff), diff);
+        CHECK_MSG(app_project_equal(&after[i], &p, diff, sizeof diff), "%s", diff);
     }
     CHECK(app_history_redo(h, &p, err, sizeof err) == APP_ERR_NOT_FOUND);
 
@@ -211,7 +212,7 @@ int main(void)
     d.index = p.material_count;
     CHECK(app_command_check(&p, &d, err, sizeof err) == APP_ERR_NOT_FOUND);
     d.index = m;
-    CHECK_MSG(app_command_check(&p, &d, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_command_check(&p, &d, err, sizeof err) == APP_OK, "%s", err);
 
     /* Saved and read back: the file stores the policy. */
     char path[] = "/tmp/tessera-probe-words-XXXXXX";
@@ -220,10 +221,10 @@ int main(void)
     close(fd);
     CHECK_MSG(run(&p, h, "probe default update every-frame every 3 resolution 256\n", err,
                   sizeof err) == APP_OK,
-              err);
-    CHECK_MSG(app_project_write(path, &p, err, sizeof err) == APP_OK, err);
+              "%s", err);
+    CHECK_MSG(app_project_write(path, &p, err, sizeof err) == APP_OK, "%s", err);
     app_project back;
-    CHECK_MSG(app_project_read(path, &back, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_project_read(path, &back, err, sizeof err) == APP_OK, "%s", err);
     int bm = app_project_find_material(&back, "default");
     CHECK(bm >= 0);
     if (bm >= 0)
@@ -237,9 +238,9 @@ int main(void)
     for (int i = 0; i < 4; i++) {
         char line[160];
         snprintf(line, sizeof line, "probe default %s\n", policies[i]);
-        CHECK_MSG(run(&p, h, line, err, sizeof err) == APP_OK, err);
-        CHECK_MSG(app_project_write(path, &p, err, sizeof err) == APP_OK, err);
-        CHECK_MSG(app_project_read(path, &back, err, sizeof err) == APP_OK, err);
+        CHECK_MSG(run(&p, h, line, err, sizeof err) == APP_OK, "%s", err);
+        CHECK_MSG(app_project_write(path, &p, err, sizeof err) == APP_OK, "%s", err);
+        CHECK_MSG(app_project_read(path, &back, err, sizeof err) == APP_OK, "%s", err);
         bm = app_project_find_material(&back, "default");
         CHECK(bm >= 0);
         if (bm >= 0)
@@ -255,5 +256,5 @@ int main(void)
     app_project_free_all(&start);
     app_history_destroy(h);
     app_project_free_all(&p);
-    return tu_result("edit_probe");
+    return check_report("edit_probe");
 }

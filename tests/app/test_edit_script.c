@@ -87,7 +87,7 @@ static void test_replay(void)
     app_history *h = app_history_create(0);
     app_script_stats st;
     app_result r = run(&p, h, script, &st, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     printf("stats: %d lines, %d commands, %d undone, %d redone\n", st.lines, st.commands, st.undone,
            st.redone);
     CHECK(st.lines == 20 && st.commands == 18 && st.undone == 1 && st.redone == 1);
@@ -115,8 +115,8 @@ static void test_replay(void)
     /* Undoing everything inside a script returns the original document exactly. */
     char undo_all[64];
     snprintf(undo_all, sizeof undo_all, "undo %d\n", app_history_undo_count(h));
-    CHECK_MSG(run(&p, h, undo_all, &st, err, sizeof err) == APP_OK, err);
-    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), diff);
+    CHECK_MSG(run(&p, h, undo_all, &st, err, sizeof err) == APP_OK, "%s", err);
+    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), "%s", diff);
     CHECK(run(&p, h, "undo\n", &st, err, sizeof err) != APP_OK);
     CHECK(tu_contains(err, "test.script:1:") && tu_contains(err, "nothing to undo"));
     app_history_destroy(h);
@@ -137,11 +137,11 @@ static void expect_error(const char *text, const char *piece1, const char *piece
     app_result r = run(&p, h, text, NULL, err, sizeof err);
     printf("error: %s\n", err);
     CHECK(r != APP_OK);
-    CHECK_MSG(tu_contains(err, piece1), err);
-    CHECK_MSG(tu_contains(err, piece2), err);
+    CHECK_MSG(tu_contains(err, piece1), "%s", err);
+    CHECK_MSG(tu_contains(err, piece2), "%s", err);
     /* A failing line changes nothing (the lines before it stay applied). */
     if (strncmp(text, "move basin 1 2 3\n", 17) != 0)
-        CHECK_MSG(app_project_equal(&before, &p, diff, sizeof diff), diff);
+        CHECK_MSG(app_project_equal(&before, &p, diff, sizeof diff), "%s", diff);
     app_history_destroy(h);
     app_project_free_all(&before);
     app_project_free_all(&p);
@@ -331,14 +331,14 @@ static void test_random_lines(void)
             ok++;
         } else {
             failed++;
-            CHECK_MSG(!strncmp(err, "fuzz:1: ", 8), err);
+            CHECK_MSG(!strncmp(err, "fuzz:1: ", 8), "%s", err);
         }
     }
     printf("random lines: %d ran, %d refused\n", ok, failed);
     CHECK(ok > 50);
     while (app_history_undo_count(h) > 0)
         CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
-    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), diff);
+    CHECK_MSG(app_project_equal(&original, &p, diff, sizeof diff), "%s", diff);
     app_history_destroy(h);
     app_project_free_all(&original);
     app_project_free_all(&p);
@@ -349,5 +349,5 @@ int main(void)
     test_replay();
     test_errors();
     test_random_lines();
-    return tu_result("edit_script");
+    return check_report("edit_script");
 }

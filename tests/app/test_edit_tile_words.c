@@ -27,7 +27,7 @@ static void make_room(app_project *p)
     char err[1024];
     CHECK_MSG(app_project_read(TESSERA_SOURCE_DIR "/tests/cli/data/edit-room.json", p, err,
                                sizeof err) == APP_OK,
-              err);
+              "%s", err);
 }
 
 static app_result run(app_project *p, app_history *h, const char *text, char *err, size_t err_size)
@@ -45,8 +45,8 @@ static void refused(app_project *p, app_history *h, const char *line, const char
     int undo = app_history_undo_count(h);
     CHECK(run(p, h, line, err, sizeof err) != APP_OK);
     printf("refused: %s\n", err);
-    CHECK_MSG(tu_contains(err, piece), err);
-    CHECK_MSG(app_project_equal(&before, p, diff, sizeof diff), diff);
+    CHECK_MSG(tu_contains(err, piece), "%s", err);
+    CHECK_MSG(app_project_equal(&before, p, diff, sizeof diff), "%s", diff);
     CHECK(app_history_undo_count(h) == undo);
     app_project_free_all(&before);
 }
@@ -59,7 +59,7 @@ int main(void)
     app_history *h = app_history_create(0);
     CHECK_MSG(run(&p, h, "tile wall:1 with \"Fliesenwerk Altena\" FA-10110 GL\n", err,
                   sizeof err) == APP_OK,
-              err);
+              "%s", err);
     CHECK(p.tiling_count == 1 && p.tilings[0].from_mm == 0 && p.tilings[0].to_mm == 0);
     app_project tiled;
     CHECK(app_project_copy(&tiled, &p, err, sizeof err) == APP_OK);
@@ -74,7 +74,7 @@ int main(void)
     };
     for (int i = 0; i < 5; i++) {
         int undo = app_history_undo_count(h);
-        CHECK_MSG(run(&p, h, lines[i], err, sizeof err) == APP_OK, err);
+        CHECK_MSG(run(&p, h, lines[i], err, sizeof err) == APP_OK, "%s", err);
         CHECK(app_history_undo_count(h) == undo + 1);
         CHECK(app_history_last_changed(h) & APP_CHANGED_TILINGS);
     }
@@ -88,7 +88,7 @@ int main(void)
                   "tile wall:1 border add \"Fliesenwerk Altena\" FA-10132 at 600\n"
                   "tile wall:1 border remove 1\n",
                   err, sizeof err) == APP_OK,
-              err);
+              "%s", err);
     t = &p.tilings[0];
     CHECK(t->border_count == 2 && !strcmp(t->borders[0].product.article, "FA-10131") &&
           t->borders[0].bottom_mm == 300 && t->borders[1].bottom_mm == 600);
@@ -109,7 +109,7 @@ int main(void)
     for (int i = 2; i < APP_TILING_MAX_BORDERS; i++)
         CHECK_MSG(run(&p, h, "tile wall:1 border add \"Fliesenwerk Altena\" FA-10131 at 1500\n",
                       err, sizeof err) == APP_OK,
-                  err);
+                  "%s", err);
     CHECK(p.tilings[0].border_count == APP_TILING_MAX_BORDERS);
     refused(&p, h, "tile wall:1 border add \"Fliesenwerk Altena\" FA-10131 at 1600\n",
             "border rows already");
@@ -119,9 +119,9 @@ int main(void)
     int fd = mkstemp(path);
     CHECK(fd >= 0);
     close(fd);
-    CHECK_MSG(app_project_write(path, &p, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_project_write(path, &p, err, sizeof err) == APP_OK, "%s", err);
     app_project back;
-    CHECK_MSG(app_project_read(path, &back, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_project_read(path, &back, err, sizeof err) == APP_OK, "%s", err);
     CHECK(back.tiling_count == 1 && back.tilings[0].to_mm == 1250 &&
           back.tilings[0].border_count == APP_TILING_MAX_BORDERS &&
           back.tilings[0].borders[1].bottom_mm == 600);
@@ -131,11 +131,11 @@ int main(void)
     /* Undoing every step of the words gives the tiled document back exactly. */
     char undo_all[64];
     snprintf(undo_all, sizeof undo_all, "undo %d\n", app_history_undo_count(h) - 1);
-    CHECK_MSG(run(&p, h, undo_all, err, sizeof err) == APP_OK, err);
-    CHECK_MSG(app_project_equal(&tiled, &p, diff, sizeof diff), diff);
+    CHECK_MSG(run(&p, h, undo_all, err, sizeof err) == APP_OK, "%s", err);
+    CHECK_MSG(app_project_equal(&tiled, &p, diff, sizeof diff), "%s", diff);
 
     app_project_free_all(&tiled);
     app_history_destroy(h);
     app_project_free_all(&p);
-    return tu_result("edit_tile_words");
+    return check_report("edit_tile_words");
 }

@@ -25,7 +25,7 @@ static int fixed_parts(const char *path, int *chrome, int *parts)
     *chrome = 0;
     *parts = 0;
     if (cat_model_load(path, &m, err, sizeof err) != CAT_OK) {
-        CHECK_MSG(0, err);
+        CHECK_MSG(0, "%s", err);
         return -1;
     }
     app_model_materials mm;
@@ -64,16 +64,17 @@ int main(void)
     cat_gen_model gm;
     char err[1024];
     cat_result r = cat_gen_product(&req, &gm, err, sizeof err);
-    CHECK_MSG(r == CAT_OK, err);
+    CHECK_MSG(r == CAT_OK, "%s", err);
     if (r != CAT_OK)
-        return tu_result("model_materials");
+        return check_report("model_materials");
     CHECK(gm.model.mesh_count >= 2); /* the ceramic body and the chrome waste */
 
     char with[1200], plain[1200];
     snprintf(with, sizeof with, "%s/basin.glb", dir);
     snprintf(plain, sizeof plain, "%s/plain.glb", dir);
-    CHECK_MSG(cat_model_write_glb(with, &gm.model, gm.extras, err, sizeof err) == CAT_OK, err);
-    CHECK_MSG(cat_model_write_glb(plain, &gm.model, NULL, err, sizeof err) == CAT_OK, err);
+    CHECK_MSG(cat_model_write_glb(with, &gm.model, gm.extras, err, sizeof err) == CAT_OK, "%s",
+              err);
+    CHECK_MSG(cat_model_write_glb(plain, &gm.model, NULL, err, sizeof err) == CAT_OK, "%s", err);
 
     int chrome, parts;
     /* every part but the finish's keeps its own: here exactly the waste, in chrome */
@@ -93,5 +94,5 @@ int main(void)
     remove(with);
     remove(plain);
     rmdir(dir);
-    return tu_result("model_materials");
+    return check_report("model_materials");
 }

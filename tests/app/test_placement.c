@@ -55,10 +55,10 @@ static app_findings run_checks(const app_project *p, app_barrier_free bf)
     char err[512] = "";
     app_findings f = {0};
     app_result r = app_placement_fixtures(p, ptc_lookup, (void *)csv, &fx, &n, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     app_check_options opt = {bf};
     r = app_placement_check(p, fx, n, &opt, &f, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     free(fx);
     return f;
 }
@@ -434,5 +434,5 @@ int main(void)
     test_side_wall_and_barrier_free();
     test_primitives_group();
     test_snapping();
-    return tu_result("placement");
+    return check_report("placement");
 }

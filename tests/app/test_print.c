@@ -282,7 +282,7 @@ int main(void)
                            .verbose = 1};
     app_print_report rep;
     app_result r = app_print_pdf(&p, &o, pdf, &rep, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     /* Plan, 4 walls, 1 pre-wall front, no renders, the part list. */
     CHECK(rep.elevation_pages == 5);
     CHECK(rep.partlist_pages >= 1);
@@ -310,12 +310,12 @@ int main(void)
     app_bom bom = {0};
     r = app_project_tile_layouts(&p, db, app_room_region_provider, NULL, &layouts, &layout_count,
                                  err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r == APP_OK) {
         CHECK_MSG(app_quantities_compute(layouts, layout_count, NULL, &q, err, sizeof err) ==
                       APP_OK,
-                  err);
-        CHECK_MSG(app_bom_build(db, &p, &q, &bom, err, sizeof err) == APP_OK, err);
+                  "%s", err);
+        CHECK_MSG(app_bom_build(db, &p, &q, &bom, err, sizeof err) == APP_OK, "%s", err);
     }
     snprintf(cmd, sizeof cmd, "pdftotext '%s' -", pdf);
     char *text = run_capture(cmd);
@@ -324,18 +324,18 @@ int main(void)
         const char *articles[] = {"CE413001", "CE410001", "31000000", "TZ61000",
                                   "FA-10104", "FA-10103", "TZ61006",  "FA-10107"};
         for (size_t i = 0; i < sizeof articles / sizeof articles[0]; i++)
-            CHECK_MSG(strstr(text, articles[i]) != NULL, articles[i]);
+            CHECK_MSG(strstr(text, articles[i]) != NULL, "%s", articles[i]);
         CHECK(strstr(text, "Jane Customer") != NULL);
         CHECK(strstr(text, "1:20") != NULL);
         char page_text[32];
         snprintf(page_text, sizeof page_text, "%d of %d", rep.pages, rep.pages);
-        CHECK_MSG(strstr(text, page_text) != NULL, page_text);
+        CHECK_MSG(strstr(text, page_text) != NULL, "%s", page_text);
         char total[96], net[96];
         money(bom.gross_cents, total, sizeof total);
         money(bom.net_cents, net, sizeof net);
         CHECK(bom.gross_cents > 0);
-        CHECK_MSG(strstr(text, total) != NULL, total);
-        CHECK_MSG(strstr(text, net) != NULL, net);
+        CHECK_MSG(strstr(text, total) != NULL, "%s", total);
+        CHECK_MSG(strstr(text, net) != NULL, "%s", net);
     }
     free(text);
 
@@ -357,7 +357,7 @@ int main(void)
                     cut += q.lines[i].cut;
                     found = 1;
                 }
-            CHECK_MSG(found, by_elevation[e][a]);
+            CHECK_MSG(found, "%s", by_elevation[e][a]);
         }
         CHECK(rep.elevation_whole[e] == whole);
         CHECK(rep.elevation_cut[e] == cut);
@@ -367,7 +367,7 @@ int main(void)
 
     /* True scale, from the SVG's own coordinates: the room's inside is 3000 x 2400 mm. */
     r = app_print_svg(&p, &o, svg_dir, &rep, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     char svg[600];
     snprintf(svg, sizeof svg, "%s/page-01.svg", svg_dir);
     double w_mm = 0, h_mm = 0;
@@ -383,7 +383,7 @@ int main(void)
     o.paper = APP_PAPER_A4;
     o.landscape = 0;
     r = app_print_pdf(&p, &o, pdf, &rep, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     CHECK(rep.plan_scale == 20 || rep.plan_scale == 25);
 
     /* Bad input gives an error, not a crash. */
@@ -399,7 +399,7 @@ int main(void)
     /* The failed runs left the previous PDF whole and no temporary file behind. */
     snprintf(cmd, sizeof cmd, "pdfinfo '%s' >/dev/null 2>&1 && ls '%s' | grep -c part", pdf, dir);
     char *left = run_capture(cmd);
-    CHECK_MSG(left && atoi(left) == 0 && left[0] == '0', left ? left : "(none)");
+    CHECK_MSG(left && atoi(left) == 0 && left[0] == '0', "%s", left ? left : "(none)");
     free(left);
 
     app_bom_free(&bom);
@@ -413,5 +413,5 @@ int main(void)
     } else {
         fprintf(stderr, "kept %s\n", dir);
     }
-    return tu_result("print");
+    return check_report("print");
 }

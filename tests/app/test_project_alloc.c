@@ -29,13 +29,13 @@ static void test_own_allocations(void)
         app_project_test_fail_alloc_after(n);
         app_result r = app_project_read(DATA "/valid.json", &p, err, sizeof err);
         app_project_test_fail_alloc_after(-1);
-        CHECK_MSG(r == APP_OK || r == APP_ERR_OUT_OF_MEMORY, err);
+        CHECK_MSG(r == APP_OK || r == APP_ERR_OUT_OF_MEMORY, "%s", err);
         if (r == APP_OK) {
             app_project_free(&p);
             break;
         }
         saw_oom = 1;
-        CHECK_MSG(tu_contains(err, "valid.json: ") && tu_contains(err, "out of memory"), err);
+        CHECK_MSG(tu_contains(err, "valid.json: ") && tu_contains(err, "out of memory"), "%s", err);
         CHECK(p.materials == NULL && p.objects == NULL);
     }
     CHECK(saw_oom);
@@ -54,7 +54,7 @@ static void test_writer_allocations(void)
     char err[1024];
     app_project p;
     if (app_project_read(DATA "/valid.json", &p, err, sizeof err) != APP_OK) {
-        CHECK_MSG(0, err);
+        CHECK_MSG(0, "%s", err);
         return;
     }
     int n;
@@ -63,7 +63,7 @@ static void test_writer_allocations(void)
         app_project_test_fail_alloc_after(n);
         app_result r = app_project_write(path, &p, err, sizeof err);
         app_project_test_fail_alloc_after(-1);
-        CHECK_MSG(r == APP_OK || r == APP_ERR_OUT_OF_MEMORY, err);
+        CHECK_MSG(r == APP_OK || r == APP_ERR_OUT_OF_MEMORY, "%s", err);
         if (r == APP_OK)
             break;
         CHECK(access(path, F_OK) != 0); /* nothing half-written */
@@ -96,8 +96,8 @@ static void test_cjson_allocations(void)
             app_project_free(&p);
             break;
         }
-        CHECK_MSG(r == APP_ERR_PARSE || r == APP_ERR_OUT_OF_MEMORY, err);
-        CHECK_MSG(tu_contains(err, "valid.json: "), err);
+        CHECK_MSG(r == APP_ERR_PARSE || r == APP_ERR_OUT_OF_MEMORY, "%s", err);
+        CHECK_MSG(tu_contains(err, "valid.json: "), "%s", err);
     }
     CHECK(n > 0 && n < 100000);
     cJSON_InitHooks(NULL);
@@ -109,5 +109,5 @@ int main(void)
     test_own_allocations();
     test_writer_allocations();
     test_cjson_allocations();
-    return tu_result("project_alloc_failure");
+    return check_report("project_alloc_failure");
 }

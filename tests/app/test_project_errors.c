@@ -271,29 +271,29 @@ static const edit_case EDITS[] = {
 
 static int run_edit(const edit_case *c)
 {
-    int before = tu_failures;
+    int before = check_failures;
     char *text = tu_replace(BASE, c->find, c->replace);
-    CHECK_MSG(text != NULL, c->find); /* the case must still match the base */
+    CHECK_MSG(text != NULL, "%s", c->find); /* the case must still match the base */
     if (!text)
         return 0;
     char err[2048] = "";
     app_project p;
     app_result r = app_project_parse(text, strlen(text), CASE_FILE, &p, err, sizeof err);
-    CHECK_MSG(r == c->expect, err);
+    CHECK_MSG(r == c->expect, "%s", err);
     if (r != c->expect)
         fprintf(stderr, "    got %s, expected %s\n", app_result_name(r),
                 app_result_name(c->expect));
     if (getenv("TESSERA_TEST_VERBOSE"))
         printf("%-40s %-22s %s\n", c->name, app_result_name(r), err);
-    CHECK_MSG(tu_contains(err, CASE_FILE ": "), err);
-    CHECK_MSG(tu_contains(err, c->path), err);
-    CHECK_MSG(tu_contains(err, c->detail), err);
+    CHECK_MSG(tu_contains(err, CASE_FILE ": "), "%s", err);
+    CHECK_MSG(tu_contains(err, c->path), "%s", err);
+    CHECK_MSG(tu_contains(err, c->detail), "%s", err);
     /* a failed parse leaves the project zeroed */
     CHECK(p.materials == NULL && p.objects == NULL && p.material_count == 0);
     if (r == APP_OK)
         app_project_free(&p);
     free(text);
-    return tu_failures == before;
+    return check_failures == before;
 }
 
 /* ---- cases that are not one edit of the base -------------------------------------------- */
@@ -329,48 +329,48 @@ static const file_case FILES[] = {
 
 static int run_file(const file_case *c)
 {
-    int before = tu_failures;
+    int before = check_failures;
     char path[4096], err[2048] = "";
     snprintf(path, sizeof path, "%s/%s", DATA, c->file);
     app_project p;
     app_result r = app_project_read(path, &p, err, sizeof err);
-    CHECK_MSG(r == c->expect, err);
-    CHECK_MSG(tu_contains(err, path), err);
-    CHECK_MSG(tu_contains(err, c->path), err);
-    CHECK_MSG(tu_contains(err, c->detail), err);
+    CHECK_MSG(r == c->expect, "%s", err);
+    CHECK_MSG(tu_contains(err, path), "%s", err);
+    CHECK_MSG(tu_contains(err, c->path), "%s", err);
+    CHECK_MSG(tu_contains(err, c->detail), "%s", err);
     if (r == APP_OK)
         app_project_free(&p);
-    return tu_failures == before;
+    return check_failures == before;
 }
 
 static int case_missing_file(void)
 {
-    int before = tu_failures;
+    int before = check_failures;
     char err[1024];
     app_project p;
     app_result r = app_project_read(DATA "/no-such-project.json", &p, err, sizeof err);
     CHECK(r == APP_ERR_IO);
     CHECK_MSG(strcmp(err, DATA "/no-such-project.json: cannot open: No such file or directory") ==
                   0,
-              err);
-    return tu_failures == before;
+              "%s", err);
+    return check_failures == before;
 }
 
 static int case_directory(void)
 {
-    int before = tu_failures;
+    int before = check_failures;
     char err[1024];
     app_project p;
     app_result r = app_project_read(DATA, &p, err, sizeof err);
     CHECK(r == APP_ERR_IO);
-    CHECK_MSG(tu_contains(err, DATA ": ") && tu_contains(err, "is a directory"), err);
-    return tu_failures == before;
+    CHECK_MSG(tu_contains(err, DATA ": ") && tu_contains(err, "is a directory"), "%s", err);
+    return check_failures == before;
 }
 
 /* The missing file's absolute, normalised path is in the message. */
 static int case_missing_paths_are_absolute(void)
 {
-    int before = tu_failures;
+    int before = check_failures;
     char *text = tu_replace(BASE, "models/tap.glb", "./models/../models/gone.glb");
     char *dir = realpath(DATA, NULL);
     char expect[4096], err[2048] = "";
@@ -379,15 +379,15 @@ static int case_missing_paths_are_absolute(void)
     app_project p;
     app_result r = app_project_parse(text, strlen(text), CASE_FILE, &p, err, sizeof err);
     CHECK(r == APP_ERR_NOT_FOUND);
-    CHECK_MSG(tu_contains(err, expect), err);
+    CHECK_MSG(tu_contains(err, expect), "%s", err);
     free(text);
     free(dir);
-    return tu_failures == before;
+    return check_failures == before;
 }
 
 static int case_too_large(void)
 {
-    int before = tu_failures;
+    int before = check_failures;
     char *dir = tu_make_temp_dir();
     CHECK(dir != NULL);
     if (!dir)
@@ -401,16 +401,16 @@ static int case_too_large(void)
     app_project p;
     app_result r = app_project_read(path, &p, err, sizeof err);
     CHECK(r == APP_ERR_IO);
-    CHECK_MSG(tu_contains(err, path) && tu_contains(err, "too large"), err);
+    CHECK_MSG(tu_contains(err, path) && tu_contains(err, "too large"), "%s", err);
     tu_remove_tree(dir);
     free(dir);
-    return tu_failures == before;
+    return check_failures == before;
 }
 
 /* More objects than the limit: refused before any is read. */
 static int case_too_many_objects(void)
 {
-    int before = tu_failures;
+    int before = check_failures;
     const char *head =
         "{\"version\": 1, \"room\": {\"width\": 1, \"depth\": 1, \"height\": 1}, "
         "\"cameras\": [{\"position\": [0,0,0], \"target\": [1,0,0]}], \"objects\": [";
@@ -432,15 +432,16 @@ static int case_too_many_objects(void)
     app_project p;
     app_result r = app_project_parse(text, k, CASE_FILE, &p, err, sizeof err);
     CHECK(r == APP_ERR_SCHEMA);
-    CHECK_MSG(tu_contains(err, CASE_FILE ": $.objects: too many objects (more than 100000)"), err);
+    CHECK_MSG(tu_contains(err, CASE_FILE ": $.objects: too many objects (more than 100000)"), "%s",
+              err);
     free(text);
-    return tu_failures == before;
+    return check_failures == before;
 }
 
 /* Nesting deeper than the JSON parser allows is malformed JSON, not a crash. */
 static int case_deep_nesting(void)
 {
-    int before = tu_failures;
+    int before = check_failures;
     size_t depth = 5000;
     char *text = malloc(depth * 2 + 1);
     CHECK(text != NULL);
@@ -453,15 +454,15 @@ static int case_deep_nesting(void)
     app_result r = app_project_parse(text, depth * 2, CASE_FILE, &p, err, sizeof err);
     CHECK(r == APP_ERR_PARSE);
     CHECK_MSG(tu_contains(err, CASE_FILE ": line 1, column ") && tu_contains(err, "malformed"),
-              err);
+              "%s", err);
     free(text);
-    return tu_failures == before;
+    return check_failures == before;
 }
 
 /* An error buffer too small for the message is filled and terminated, never overrun. */
 static int case_small_error_buffer(void)
 {
-    int before = tu_failures;
+    int before = check_failures;
     char err[16];
     memset(err, 'x', sizeof err);
     app_project p;
@@ -469,7 +470,7 @@ static int case_small_error_buffer(void)
     CHECK(r == APP_ERR_VERSION);
     CHECK(strlen(err) == 7);
     CHECK(err[8] == 'x');
-    return tu_failures == before;
+    return check_failures == before;
 }
 
 typedef struct special_case {
@@ -499,7 +500,7 @@ int main(int argc, char **argv)
         char err[2048];
         app_project p;
         app_result r = app_project_parse(BASE, strlen(BASE), CASE_FILE, &p, err, sizeof err);
-        CHECK_MSG(r == APP_OK, err);
+        CHECK_MSG(r == APP_OK, "%s", err);
         if (r == APP_OK)
             app_project_free(&p);
     }
@@ -535,5 +536,5 @@ int main(int argc, char **argv)
         return 2;
     }
     printf("project_errors: %d cases, %d failed\n", ran, failed);
-    return tu_result("project_errors");
+    return check_report("project_errors");
 }

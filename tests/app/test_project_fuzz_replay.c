@@ -31,7 +31,7 @@ static void parse_one(const char *data, size_t len)
     app_result r = app_project_parse(data, len, DATA "/mutant.json", &p, err, sizeof err);
     if (r != APP_OK) {
         parsed_err++;
-        CHECK_MSG(tu_contains(err, DATA "/mutant.json: "), err);
+        CHECK_MSG(tu_contains(err, DATA "/mutant.json: "), "%s", err);
         CHECK(p.materials == NULL && p.objects == NULL && p.cameras == NULL);
         return;
     }
@@ -39,11 +39,11 @@ static void parse_one(const char *data, size_t len)
     char out[4096];
     snprintf(out, sizeof out, "%s/out.json", tmp_dir);
     r = app_project_write(out, &p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r == APP_OK) {
         app_project q;
         r = app_project_read(out, &q, err, sizeof err);
-        CHECK_MSG(r == APP_OK, err);
+        CHECK_MSG(r == APP_OK, "%s", err);
         if (r == APP_OK)
             app_project_free(&q);
     }
@@ -149,5 +149,5 @@ int main(void)
         tu_remove_tree(tmp_dir);
         free(tmp_dir);
     }
-    return tu_result("project_fuzz_replay");
+    return check_report("project_fuzz_replay");
 }

@@ -54,7 +54,7 @@ static int load_source(const char *maker, const char *article, cat_model *m, cha
         !cat_model_resolve(rel, NULL, path, size))
         return 0;
     if (cat_model_load(path, m, err, sizeof err) != CAT_OK) {
-        CHECK_MSG(0, err);
+        CHECK_MSG(0, "%s", err);
         return 0;
     }
     return 1;
@@ -67,7 +67,7 @@ static int own_materials(const char *path, const cat_model *m)
     cat_material_extras x[32];
     int n = 0, fixed = 0, slots = 0;
     char err[1024];
-    CHECK_MSG(cat_model_read_extras(path, x, 32, &n, err, sizeof err) == CAT_OK, err);
+    CHECK_MSG(cat_model_read_extras(path, x, 32, &n, err, sizeof err) == CAT_OK, "%s", err);
     CHECK(n == m->material_count);
     for (int i = 0; i < n; i++) {
         fixed += !x[i].variant_slot;
@@ -105,7 +105,7 @@ static void check_placed(const cat_model *src, const cat_model *out, int first, 
     }
     char msg[128];
     snprintf(msg, sizeof msg, "%s: largest vertex error %.4f mm", what, worst);
-    CHECK_MSG(worst < 0.01, msg);
+    CHECK_MSG(worst < 0.01, "%s", msg);
 }
 
 int main(void)
@@ -113,7 +113,7 @@ int main(void)
     char *dir = tu_make_temp_dir();
     CHECK(dir != NULL);
     if (!dir)
-        return tu_result("project_glb");
+        return check_report("project_glb");
     char db[1024], out[1024], err[2048];
     snprintf(db, sizeof db, "%s/catalog.sqlite", dir);
     snprintf(out, sizeof out, "%s/room.glb", dir);
@@ -121,12 +121,12 @@ int main(void)
 
     app_project p;
     if (app_project_read(DATA "/export_glb.json", &p, err, sizeof err) != APP_OK) {
-        CHECK_MSG(0, err);
-        return tu_result("project_glb");
+        CHECK_MSG(0, "%s", err);
+        return check_report("project_glb");
     }
     app_glb_stats st;
     app_result r = app_project_export_glb(&p, out, &st, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     CHECK(st.object_count == 3 && st.skipped_count == 0);
 
     cat_model wc_src = {0}, mixer_src = {0}, back = {0};
@@ -135,9 +135,9 @@ int main(void)
                    load_source("Aquavera", "31000000", &mixer_src, mixer_path, sizeof mixer_path);
     CHECK_MSG(have_src, "the build's generated models of CE412901 and 31000000");
     cat_result cr = cat_model_load(out, &back, err, sizeof err);
-    CHECK_MSG(cr == CAT_OK, err);
+    CHECK_MSG(cr == CAT_OK, "%s", err);
     if (r != APP_OK || cr != CAT_OK || !have_src)
-        return tu_result("project_glb");
+        return check_report("project_glb");
 
     /* every part came back; the materials: 4 of the project (floor, walls, ceiling, oak), the
      * tiling's grout and tile, and each product's own (its variant slot becomes the variant) */
@@ -174,7 +174,7 @@ int main(void)
                            "wc (Cerana CE412901 WH)",
                            "mixer (Aquavera 31000000"};
     for (size_t i = 0; i < sizeof names / sizeof *names; i++)
-        CHECK_MSG(node_named(nodes, names[i]) != NULL, names[i]);
+        CHECK_MSG(node_named(nodes, names[i]) != NULL, "%s", names[i]);
     CHECK(cJSON_GetArraySize(nodes) == st.node_count);
     /* the WC's node carries its placement: translation (200, 1050, 400) mm -> (0.2, 0.4, -1.05) m
      */
@@ -239,11 +239,11 @@ int main(void)
         if (x[sm].variant_slot) {
             slot++;
             slot_material = bm;
-            CHECK_MSG(!strncmp(b->name, "Aquavera 31000000", 17), b->name);
+            CHECK_MSG(!strncmp(b->name, "Aquavera 31000000", 17), "%s", b->name);
         } else {
             fixed++;
             fixed_material = bm;
-            CHECK_MSG(!strcmp(a->name, b->name), b->name);
+            CHECK_MSG(!strcmp(a->name, b->name), "%s", b->name);
             for (int k = 0; k < 4; k++)
                 CHECK(fabsf(a->base_color[k] - b->base_color[k]) < 1e-6f);
             CHECK(fabsf(a->metallic - b->metallic) < 1e-6f);
@@ -269,12 +269,13 @@ int main(void)
     /* an unwritable output: a clear error naming the file, nothing written */
     r = app_project_export_glb(&p, "/no/such/folder/x.glb", NULL, err, sizeof err);
     CHECK(r == APP_ERR_IO);
-    CHECK_MSG(tu_contains(err, "/no/such/folder/x.glb") && tu_contains(err, "cannot write"), err);
+    CHECK_MSG(tu_contains(err, "/no/such/folder/x.glb") && tu_contains(err, "cannot write"), "%s",
+              err);
 
     cat_model_free(&back);
     cat_model_free(&wc_src);
     cat_model_free(&mixer_src);
     app_project_free(&p);
     free(dir);
-    return tu_result("project_glb");
+    return check_report("project_glb");
 }

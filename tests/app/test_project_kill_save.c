@@ -52,14 +52,14 @@ int main(void)
     app_project p;
     char err[1024];
     if (app_project_read(DATA "/v2_l_room.json", &p, err, sizeof err) != APP_OK) {
-        CHECK_MSG(0, err);
-        return tu_result("project_kill_save");
+        CHECK_MSG(0, "%s", err);
+        return check_report("project_kill_save");
     }
     /* A large project, so that one save takes long enough to be killed in the middle. */
     app_object *objects = calloc(OBJECTS, sizeof *objects);
     CHECK(objects != NULL);
     if (!objects)
-        return tu_result("project_kill_save");
+        return check_report("project_kill_save");
     for (int i = 0; i < OBJECTS; i++) {
         objects[i] = p.objects[0];
         snprintf(objects[i].name, sizeof objects[i].name, "part-%d", i);
@@ -73,7 +73,7 @@ int main(void)
     char *dir = tu_make_temp_dir();
     CHECK(dir != NULL);
     if (!dir)
-        return tu_result("project_kill_save");
+        return check_report("project_kill_save");
     char path[1024], bak[1100];
     snprintf(path, sizeof path, "%s/big.json", dir);
     snprintf(bak, sizeof bak, "%s.bak", path);
@@ -111,11 +111,11 @@ int main(void)
         else
             CHECK_MSG(0, "the saving child ended by itself (a save failed)");
         if (!complete(path, err, sizeof err)) {
-            CHECK_MSG(0, err);
+            CHECK_MSG(0, "%s", err);
             broken++;
         }
         if (it % 4 == 0 && access(bak, F_OK) == 0 && !complete(bak, err, sizeof err)) {
-            CHECK_MSG(0, err);
+            CHECK_MSG(0, "%s", err);
             broken++;
         }
     }
@@ -128,5 +128,5 @@ int main(void)
     tu_remove_tree(dir);
     free(dir);
     app_project_free(&p);
-    return tu_result("project_kill_save");
+    return check_report("project_kill_save");
 }

@@ -23,7 +23,7 @@ static void make_dir(const char *rel)
     mkdir(path, 0755);
 }
 
-#define SAME_STR(a, b) CHECK_MSG(strcmp((a), (b)) == 0, (b))
+#define SAME_STR(a, b) CHECK_MSG(strcmp((a), (b)) == 0, "%s", (b))
 #define SAME_N(a, b, n) CHECK(memcmp((a), (b), (n) * sizeof *(a)) == 0)
 
 static int near3(const double *a, const double *b)
@@ -99,7 +99,7 @@ static int read_project(const char *path, app_project *p)
 {
     char err[2048];
     app_result r = app_project_read(path, p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     return r == APP_OK;
 }
 
@@ -107,7 +107,7 @@ static int write_project(const char *path, const app_project *p)
 {
     char err[2048];
     app_result r = app_project_write(path, p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     return r == APP_OK;
 }
 
@@ -139,7 +139,7 @@ static void test_roundtrip(void)
     if (text) {
         CHECK_MSG(tu_contains(text, "\"texture\":\t\"../") ||
                       tu_contains(text, "\"texture\": \"../"),
-                  text);
+                  "%s", text);
         CHECK(tu_contains(text, "textures/wall.png\""));
         CHECK(tu_contains(text, "models/tap.glb\""));
         CHECK(!tu_contains(text, "\"texture\":\t\"/"));
@@ -208,7 +208,7 @@ static void test_failed_write_keeps_old_file(void)
         app_result r = app_project_write(path, &a, err, sizeof err);
         app_project_test_fail_write_after(-1);
         CHECK(r == APP_ERR_IO);
-        CHECK_MSG(tu_contains(err, path) && tu_contains(err, "simulated failure"), err);
+        CHECK_MSG(tu_contains(err, path) && tu_contains(err, "simulated failure"), "%s", err);
         size_t len = 0;
         char *now = tu_read_file(path, &len);
         CHECK(now && len == old_len && memcmp(now, old_text, len) == 0);
@@ -249,10 +249,10 @@ static void expect_write_failure(const char *path, const app_project *p, app_res
 {
     char err[2048] = "";
     app_result r = app_project_write(path, p, err, sizeof err);
-    CHECK_MSG(r == expect, err);
-    CHECK_MSG(tu_contains(err, path), err);
-    CHECK_MSG(tu_contains(err, part1), err);
-    CHECK_MSG(tu_contains(err, part2), err);
+    CHECK_MSG(r == expect, "%s", err);
+    CHECK_MSG(tu_contains(err, path), "%s", err);
+    CHECK_MSG(tu_contains(err, part1), "%s", err);
+    CHECK_MSG(tu_contains(err, part2), "%s", err);
 }
 
 static void test_unwritable_places(void)
@@ -400,7 +400,7 @@ static void test_vanished_file_does_not_block_save(void)
     CHECK(r == APP_ERR_NOT_FOUND);
     CHECK_MSG(tu_contains(err, "$.materials[\"wall-tile\"].texture: file not found: ") &&
                   tu_contains(err, "gone.png"),
-              err);
+              "%s", err);
     app_project_free(&a);
 }
 
@@ -409,7 +409,7 @@ int main(void)
     tmp_root = tu_make_temp_dir();
     CHECK(tmp_root != NULL);
     if (!tmp_root)
-        return tu_result("project_roundtrip");
+        return check_report("project_roundtrip");
     test_roundtrip();
     test_numbers_exact();
     test_failed_write_keeps_old_file();
@@ -419,5 +419,5 @@ int main(void)
     test_vanished_file_does_not_block_save();
     tu_remove_tree(tmp_root);
     free(tmp_root);
-    return tu_result("project_roundtrip");
+    return check_report("project_roundtrip");
 }

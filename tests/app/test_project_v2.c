@@ -48,7 +48,7 @@ static void test_read_fixture(void)
     app_project p;
     char err[1024];
     app_result r = app_project_read(DATA "/v2_l_room.json", &p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r != APP_OK)
         return;
     CHECK(p.version == 2 && p.file_version == 2);
@@ -89,16 +89,16 @@ static void test_round_trip(const char *dir)
     app_project a, b;
     char err[1024];
     app_result r = app_project_read(DATA "/v2_l_room.json", &a, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r != APP_OK)
         return;
     char out1[1024], out2[1024];
     snprintf(out1, sizeof out1, "%s/rt1.json", dir);
     snprintf(out2, sizeof out2, "%s/rt2.json", dir);
     r = app_project_write(out1, &a, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     r = app_project_read(out1, &b, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r == APP_OK) {
         check_same(&a, &b);
         CHECK(app_project_write(out2, &b, err, sizeof err) == APP_OK);
@@ -117,7 +117,7 @@ static void test_migration(const char *dir)
     app_project p, q;
     char err[1024];
     app_result r = app_project_read(DATA "/valid.json", &p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r != APP_OK)
         return;
     CHECK(p.file_version == 1 && p.version == 2);
@@ -134,7 +134,7 @@ static void test_migration(const char *dir)
     snprintf(out, sizeof out, "%s/migrated.json", dir);
     CHECK(app_project_write(out, &p, err, sizeof err) == APP_OK);
     r = app_project_read(out, &q, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r == APP_OK) {
         CHECK(q.file_version == 2);
         check_same(&p, &q);
@@ -147,7 +147,7 @@ static void test_migration(const char *dir)
     memset(&p.plan, 0, sizeof p.plan);
     p.room.width_mm = 1234.5;
     r = app_project_write(out, &p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (app_project_read(out, &q, err, sizeof err) == APP_OK) {
         CHECK(q.plan.corner_count == 4 && q.plan.corners[2].x == 1234.5 &&
               q.plan.corners[2].y == 3000 && q.room.width_mm == 1234.5);
@@ -262,17 +262,17 @@ static void test_errors(void)
     for (size_t k = 0; k < sizeof bad_cases / sizeof bad_cases[0]; k++) {
         const bad_case *c = &bad_cases[k];
         char *bad = tu_replace(text, c->find, c->replace);
-        CHECK_MSG(bad != NULL, c->name);
+        CHECK_MSG(bad != NULL, "%s", c->name);
         if (!bad)
             continue;
         app_project p;
         char err[1024];
-        int before = tu_failures;
+        int before = check_failures;
         app_result r = app_project_parse(bad, strlen(bad), DATA "/case.json", &p, err, sizeof err);
-        CHECK_MSG(r == APP_ERR_SCHEMA, err);
-        CHECK_MSG(tu_contains(err, c->path), err);
-        CHECK_MSG(tu_contains(err, c->detail), err);
-        if (tu_failures != before) {
+        CHECK_MSG(r == APP_ERR_SCHEMA, "%s", err);
+        CHECK_MSG(tu_contains(err, c->path), "%s", err);
+        CHECK_MSG(tu_contains(err, c->detail), "%s", err);
+        if (check_failures != before) {
             fprintf(stderr, "FAIL %s\n", c->name);
             failed++;
         }
@@ -291,7 +291,7 @@ static void test_backup(const char *dir)
     app_project p;
     char err[1024];
     if (app_project_read(DATA "/v2_l_room.json", &p, err, sizeof err) != APP_OK) {
-        CHECK_MSG(0, err);
+        CHECK_MSG(0, "%s", err);
         return;
     }
     char path[1024], bak[1100];
@@ -309,7 +309,7 @@ static void test_backup(const char *dir)
         CHECK(!strcmp(q.name, "second"));
         app_project_free(&q);
     } else {
-        CHECK_MSG(0, err);
+        CHECK_MSG(0, "%s", err);
     }
     if (app_project_read(path, &q, err, sizeof err) == APP_OK) {
         CHECK(!strcmp(q.name, "third"));
@@ -337,7 +337,7 @@ int main(void)
     char *dir = tu_make_temp_dir();
     CHECK(dir != NULL);
     if (!dir)
-        return tu_result("project_v2");
+        return check_report("project_v2");
     test_read_fixture();
     test_round_trip(dir);
     test_migration(dir);
@@ -345,5 +345,5 @@ int main(void)
     test_backup(dir);
     tu_remove_tree(dir);
     free(dir);
-    return tu_result("project_v2");
+    return check_report("project_v2");
 }

@@ -39,7 +39,7 @@ static void test_valid(void)
     char err[1024];
     app_project p;
     app_result r = app_project_read(DATA "/valid.json", &p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r != APP_OK)
         return;
     char *real_file = realpath(DATA "/valid.json", NULL);
@@ -64,7 +64,7 @@ static void test_valid(void)
                            "ceramic",         "lamp-glass", "room.ceiling#material",
                            "mirror#material", "default"};
     for (int i = 0; i < 8 && i < p.material_count; i++)
-        CHECK_MSG(strcmp(p.materials[i].name, names[i]) == 0, names[i]);
+        CHECK_MSG(strcmp(p.materials[i].name, names[i]) == 0, "%s", names[i]);
     if (p.material_count == 8) {
         const app_material *m = &p.materials[0];
         CHECK(eq3f(m->diffuse, 0.8f, 0.8f, 0.78f));
@@ -230,7 +230,7 @@ static void test_minimal_defaults(void)
     char err[1024];
     app_project p;
     app_result r = app_project_read(DATA "/minimal.json", &p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r != APP_OK)
         return;
     CHECK(p.name[0] == '\0');
@@ -257,7 +257,7 @@ static void test_parse_from_memory(void)
     char err[256];
     app_project p;
     app_result r = app_project_parse(text, sizeof text - 1, NULL, &p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     CHECK(p.path[0] == '\0');
     app_project_free(&p);
 
@@ -266,12 +266,12 @@ static void test_parse_from_memory(void)
     memcpy(buf, text, sizeof text - 1);
     memset(buf + sizeof text - 1, 'x', 9);
     r = app_project_parse(buf, sizeof text - 1, NULL, &p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     app_project_free(&p);
 
     r = app_project_parse(text, 10, NULL, &p, err, sizeof err);
     CHECK(r == APP_ERR_PARSE);
-    CHECK_MSG(tu_contains(err, "<memory>: line 1, column 11: malformed JSON"), err);
+    CHECK_MSG(tu_contains(err, "<memory>: line 1, column 11: malformed JSON"), "%s", err);
 
     /* no error buffer at all is fine */
     CHECK(app_project_parse(text, 10, NULL, &p, NULL, 0) == APP_ERR_PARSE);
@@ -296,7 +296,7 @@ static void test_docs_example(void)
         app_project p;
         app_result r = app_project_parse(start, (size_t)(end - start), DATA "/docs-example.json",
                                          &p, err, sizeof err);
-        CHECK_MSG(r == APP_OK, err);
+        CHECK_MSG(r == APP_OK, "%s", err);
         if (r == APP_OK) {
             CHECK(strcmp(p.name, "Demo bathroom") == 0);
             CHECK(p.object_count == 4 && p.light_count == 3 && p.camera_count == 1);
@@ -326,5 +326,5 @@ int main(void)
     test_parse_from_memory();
     test_docs_example();
     test_free_is_safe();
-    return tu_result("project_valid");
+    return check_report("project_valid");
 }

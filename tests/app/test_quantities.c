@@ -56,12 +56,12 @@ static void test_boxes(void)
     app_point2 win[2] = {{700, 1000}, {1300, 1900}};
     app_tile_layout l;
     CHECK_MSG(lay(2000, 2500, APP_PATTERN_HALF_OFFSET, &f, win, &l, err, sizeof err) == APP_OK,
-              err);
+              "%s", err);
     app_quantity_options o = app_quantity_options_default();
     CHECK(o.surplus_percent == 10.0 && o.reuse_offcuts == 1);
     o.reuse_offcuts = 0;
     app_quantities q;
-    CHECK_MSG(app_quantities_compute(&l, 1, &o, &q, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_quantities_compute(&l, 1, &o, &q, err, sizeof err) == APP_OK, "%s", err);
     CHECK(q.line_count == 1);
     const app_tile_quantity *t = &q.lines[0];
     CHECK(t->whole == 12 && t->cut == 24 && t->reused == 0 && t->pieces_needed == 36);
@@ -116,10 +116,10 @@ static void test_offcuts(void)
     app_tile_spec f = spec(597, 297, APP_TILE_UNI, 8, 1.44);
     app_tile_layout l;
     CHECK_MSG(lay(1000, 600, APP_PATTERN_HALF_OFFSET, &f, NULL, &l, err, sizeof err) == APP_OK,
-              err);
+              "%s", err);
     CHECK(l.whole_count == 2 && l.cut_count == 3);
     app_quantities q;
-    CHECK_MSG(app_quantities_compute(&l, 1, NULL, &q, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_quantities_compute(&l, 1, NULL, &q, err, sizeof err) == APP_OK, "%s", err);
     CHECK(q.lines[0].reused == 1 && q.lines[0].pieces_needed == 4);
     CHECK(q.offcut_count == 1);
     if (q.offcut_count == 1) {
@@ -211,7 +211,7 @@ static void test_diagonal_halves(void)
     t.align = APP_ALIGN_CORNER;
     app_tile_layout_desc d = {&r, &t, &f, NULL, 0};
     app_tile_layout l;
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     CHECK(l.whole_count == 7 && l.cut_count == 10);
     app_quantity_options o = app_quantity_options_default();
     o.kerf_mm = 0;
@@ -246,7 +246,7 @@ static void test_catalog_and_bom(void)
     cat_db *db = NULL;
     CHECK_MSG(cat_catalog_open(path, TESSERA_SOURCE_DIR "/assets/catalog", &db, err, sizeof err) ==
                   CAT_DB_OK,
-              err);
+              "%s", err);
     if (!db)
         return;
     app_product_ref ref;
@@ -255,7 +255,7 @@ static void test_catalog_and_bom(void)
     snprintf(ref.article, sizeof ref.article, "TZ61000");
     app_tile_spec s;
     cat_product p;
-    CHECK_MSG(app_tile_spec_from_catalog(db, &ref, &s, &p, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_spec_from_catalog(db, &ref, &s, &p, err, sizeof err) == APP_OK, "%s", err);
     CHECK(s.type == APP_TILE_UNI && s.work_w_mm == 297 && s.work_h_mm == 597 && s.grout_mm == 3);
     CHECK(s.pieces_per_box == 8 && fabs(s.m2_per_box - 1.44) < 1e-9 && s.rotatable);
     CHECK(p.has_tile && !strcmp(p.article, "TZ61000"));
@@ -272,11 +272,11 @@ static void test_catalog_and_bom(void)
     app_project pr;
     CHECK_MSG(app_project_read(TESSERA_SOURCE_DIR "/tests/data/tiles/tiled_bathroom.json", &pr, err,
                                sizeof err) == APP_OK,
-              err);
+              "%s", err);
     app_tile_layout *ls = NULL;
     int n = 0;
     CHECK_MSG(app_project_tile_layouts(&pr, db, NULL, NULL, &ls, &n, err, sizeof err) == APP_OK,
-              err);
+              "%s", err);
     CHECK(n == pr.tiling_count && n == 7);
     app_quantities q;
     memset(&q, 0, sizeof q);
@@ -329,5 +329,5 @@ int main(void)
     test_rotation();
     test_diagonal_halves();
     test_catalog_and_bom();
-    return tu_result("quantities");
+    return check_report("quantities");
 }

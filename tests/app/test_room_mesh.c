@@ -14,7 +14,7 @@ static int parse(const char *json, app_project *p)
 {
     char err[1024];
     app_result r = app_project_parse(json, strlen(json), NULL, p, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     return r == APP_OK;
 }
 
@@ -71,7 +71,7 @@ static void test_l_shape(void)
     for (int i = 0; i < 6; i++) {
         char name[32];
         snprintf(name, sizeof name, "wall:%d", i);
-        CHECK_MSG(NEAR(area_of(&g, name), lengths[i] * 2.5, 1e-5), name);
+        CHECK_MSG(NEAR(area_of(&g, name), lengths[i] * 2.5, 1e-5), "%s", name);
     }
     CHECK(g.light_count == 0);
     check_winding(&g);
@@ -237,7 +237,7 @@ static void test_ear_clipping(void)
         }
         CHECK(t == shapes[k].n - 2);
         CHECK(positive);
-        CHECK_MSG(NEAR(sum, shapes[k].area, 1e-6), k == 0 ? "split L" : "U");
+        CHECK_MSG(NEAR(sum, shapes[k].area, 1e-6), "%s", k == 0 ? "split L" : "U");
     }
 }
 
@@ -248,5 +248,5 @@ int main(void)
     test_slope_prewall_niche();
     test_version1_box();
     test_ear_clipping();
-    return tu_result("room_mesh");
+    return check_report("room_mesh");
 }

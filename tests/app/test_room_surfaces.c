@@ -16,7 +16,7 @@ static double region_area(const app_project *p, const char *surface, const app_f
     app_surface_region r;
     char err[512];
     app_result res = app_room_surface_region(p, surface, fx, nfx, &r, frame, err, sizeof err);
-    CHECK_MSG(res == APP_OK, err);
+    CHECK_MSG(res == APP_OK, "%s", err);
     if (res != APP_OK)
         return -1;
     double a = app_surface_region_area(&r);
@@ -29,7 +29,7 @@ static double region_area(const app_project *p, const char *surface, const app_f
         double got_ = region_area(p, name, fx, nfx, NULL);                                         \
         char msg_[160];                                                                            \
         snprintf(msg_, sizeof msg_, "%s: %.1f mm2, want %.1f", name, got_, (double)(want));        \
-        CHECK_MSG(fabs(got_ - (want)) < 1.0, msg_);                                                \
+        CHECK_MSG(fabs(got_ - (want)) < 1.0, "%s", msg_);                                          \
     } while (0)
 
 int main(void)
@@ -37,8 +37,8 @@ int main(void)
     app_project p;
     char err[1024];
     if (app_project_read(DATA "/v2_l_room.json", &p, err, sizeof err) != APP_OK) {
-        CHECK_MSG(0, err);
-        return tu_result("room_surfaces");
+        CHECK_MSG(0, "%s", err);
+        return check_report("room_surfaces");
     }
     app_surface_frame *frames = NULL;
     int count = 0;
@@ -90,5 +90,5 @@ int main(void)
     CHECK(app_room_surface_region(&p, "prewall:wc-box:back", NULL, 0, &r, NULL, err, sizeof err) ==
           APP_ERR_NOT_FOUND);
     app_project_free(&p);
-    return tu_result("room_surfaces");
+    return check_report("room_surfaces");
 }

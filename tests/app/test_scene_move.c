@@ -29,9 +29,9 @@ static void check_list(const app_project *p)
     char err[2048];
     app_render_list plain, gpu;
     app_result r = app_render_list_build(p, 0, &plain, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     r = app_render_list_build(p, APP_RENDER_LIST_PROBE_MESHES, &gpu, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r != APP_OK)
         return;
     CHECK(plain.item_count == gpu.item_count);
@@ -95,12 +95,12 @@ static void check_move(rd_context *ctx, app_project *p, const char *name, const 
 {
     char err[2048];
     int object = find(p, name);
-    CHECK_MSG(object >= 0, name);
+    CHECK_MSG(object >= 0, "%s", name);
     if (object < 0)
         return;
     app_scene s, fresh;
     app_result r = app_scene_build(ctx, p, &s, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r != APP_OK)
         return;
     transforms before = transforms_of(&s);
@@ -112,19 +112,19 @@ static void check_move(rd_context *ctx, app_project *p, const char *name, const 
         CHECK(p->objects[object].position_mm[k] == at[k]);
     transforms moved = transforms_of(&s);
     r = app_scene_build(ctx, p, &fresh, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     transforms want = r == APP_OK ? transforms_of(&fresh) : (transforms){0};
     CHECK(moved.count == want.count && moved.count == before.count);
     int parts = 0;
     for (int i = 0; moved.m && want.m && before.m && i < moved.count && i < want.count; i++) {
-        CHECK_MSG(same(moved.m[i], want.m[i]), name);
+        CHECK_MSG(same(moved.m[i], want.m[i]), "%s", name);
         if (same(before.m[i], moved.m[i]))
             continue;
         parts++;
         for (int k = 0; k < 3; k++)
             CHECK(fabs(moved.m[i][12 + k] - before.m[i][12 + k] - delta[k] * 1e-3) < 1e-5);
     }
-    CHECK_MSG(parts > 0, name);
+    CHECK_MSG(parts > 0, "%s", name);
     /* no such object: nothing moves */
     CHECK(app_scene_move_object(&s, p, p->object_count, at) == APP_ERR_NOT_FOUND);
     CHECK(app_scene_move_object(&s, p, -1, at) == APP_ERR_NOT_FOUND);
@@ -141,7 +141,7 @@ int main(void)
     char *dir = tu_make_temp_dir();
     CHECK(dir != NULL);
     if (!dir)
-        return tu_result("scene_move");
+        return check_report("scene_move");
     char db[1024];
     snprintf(db, sizeof db, "%s/catalog.sqlite", dir);
     setenv("TESSERA_CATALOG", db, 1); /* built from the shipped CSVs on first use */
@@ -158,23 +158,23 @@ int main(void)
         check_move(ctx, &p, "towel-ring", (const double[3]){0, 250, -100});
         app_project_free(&p);
     } else {
-        CHECK_MSG(0, err);
+        CHECK_MSG(0, "%s", err);
     }
     if (app_project_read(CLI_DATA "/with-model.json", &p, err, sizeof err) == APP_OK) {
         check_move(ctx, &p, "mesh-instances", (const double[3]){120, -40, 15}); /* parts */
         app_project_free(&p);
     } else {
-        CHECK_MSG(0, err);
+        CHECK_MSG(0, "%s", err);
     }
     if (app_project_read(DATA "/v2_l_room.json", &p, err, sizeof err) == APP_OK) {
         /* a catalog box: drawn at its centre, moved with its document origin */
         check_move(ctx, &p, "wc", (const double[3]){300, -200, 0});
         app_project_free(&p);
     } else {
-        CHECK_MSG(0, err);
+        CHECK_MSG(0, "%s", err);
     }
     rd_context_destroy(ctx);
     tu_remove_tree(dir);
     free(dir);
-    return tu_result("scene_move");
+    return check_report("scene_move");
 }

@@ -18,7 +18,7 @@ int main(void)
     char *dir = tu_make_temp_dir();
     CHECK(dir != NULL);
     if (!dir)
-        return tu_result("scene_products");
+        return check_report("scene_products");
     char db[1024];
     snprintf(db, sizeof db, "%s/catalog.sqlite", dir);
     setenv("TESSERA_CATALOG", db, 1);
@@ -26,14 +26,14 @@ int main(void)
     app_project p;
     char err[1024];
     if (app_project_read(DATA "/v2_l_room.json", &p, err, sizeof err) != APP_OK) {
-        CHECK_MSG(0, err);
-        return tu_result("scene_products");
+        CHECK_MSG(0, "%s", err);
+        return check_report("scene_products");
     }
     /* add a bath (Nordkeram Fjord 1700 x 750 x 460) against wall 0 and an unknown product */
     app_object *objects = realloc(p.objects, (size_t)(p.object_count + 2) * sizeof *objects);
     CHECK(objects != NULL);
     if (!objects)
-        return tu_result("scene_products");
+        return check_report("scene_products");
     p.objects = objects;
     app_object *bath = &p.objects[p.object_count++];
     *bath = p.objects[1];
@@ -52,7 +52,7 @@ int main(void)
 
     app_scene_products q;
     app_result r = app_scene_resolve_products(&p, &q, err, sizeof err);
-    CHECK_MSG(r == APP_OK, err);
+    CHECK_MSG(r == APP_OK, "%s", err);
     if (r == APP_OK) {
         CHECK(q.owns == 1);
         const app_object *wc = &q.q.objects[1];
@@ -96,8 +96,9 @@ int main(void)
             char msg[160];
             snprintf(msg, sizeof msg, "tiles %.4f m2, grout backing %.4f m2, region %.4f m2", t, gr,
                      region);
-            CHECK_MSG(t < region && t > 0.97 * region, msg);   /* 3 mm joints on 300 x 600 */
-            CHECK_MSG(fabs(gr - region) < 2e-3 * region, msg); /* the backing fills the region */
+            CHECK_MSG(t < region && t > 0.97 * region, "%s", msg); /* 3 mm joints on 300 x 600 */
+            CHECK_MSG(fabs(gr - region) < 2e-3 * region, "%s",
+                      msg); /* the backing fills the region */
             CHECK(tiles->inline_material.texture[0] != '\0');
             CHECK(tiles->material == -1 && grout->inline_material.diffuse[0] == 0.3f);
             for (int i = 0; i < tiles->vertex_count; i++)
@@ -111,5 +112,5 @@ int main(void)
     app_project_free(&p);
     tu_remove_tree(dir);
     free(dir);
-    return tu_result("scene_products");
+    return check_report("scene_products");
 }

@@ -78,5 +78,5 @@ int main(void)
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     if (system(cmd) != 0)
         return 1;
-    return tu_result("share_page");
+    return check_report("share_page");
 }

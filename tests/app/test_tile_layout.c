@@ -89,7 +89,7 @@ static void test_wall_half_offset_window(void)
     app_tile_layout_desc d = {&r, &t, &f, NULL, 0};
     app_tile_layout l;
     app_result res = app_tile_layout_compute(&d, &l, err, sizeof err);
-    CHECK_MSG(res == APP_OK, err);
+    CHECK_MSG(res == APP_OK, "%s", err);
     printf("wall: %d whole, %d cut, tiled %.1f mm2, grout %.1f mm2\n", l.whole_count, l.cut_count,
            l.tiled_area_mm2, l.grout_area_mm2);
     CHECK(l.whole_count == 12);
@@ -124,7 +124,7 @@ static void test_wall_half_offset_window(void)
     /* The catalog gives this tile as 297 wide x 597 high (portrait): row patterns still lay
      * the long side along the rows, turned 90 degrees, with the same counts and area. */
     f = spec(297, 597, 3, APP_TILE_UNI);
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     CHECK(l.whole_count == 12 && l.cut_count == 24);
     CHECK(fabs(l.tiled_area_mm2 - 4397789.0) < 0.01);
     for (int i = 0; i < l.tile_count; i++)
@@ -149,7 +149,7 @@ static void test_floor_diagonal(void)
     app_tiling t = tiling(APP_PATTERN_DIAGONAL, APP_ALIGN_CORNER, 0);
     app_tile_layout_desc d = {&r, &t, &f, NULL, 0};
     app_tile_layout l;
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     printf("diagonal: %d whole, %d cut\n", l.whole_count, l.cut_count);
     CHECK(l.whole_count == 7);
     CHECK(l.cut_count == 10);
@@ -163,7 +163,7 @@ static void test_floor_diagonal(void)
     /* The same floor with 300 x 300 tiles and 3 mm grout, centred: the balance must hold. */
     f = spec(297, 297, 3, APP_TILE_UNI);
     t = tiling(APP_PATTERN_DIAGONAL, APP_ALIGN_CENTRED, 3);
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     check_balance(&l, 1800.0 * 1200, "diagonal grout");
     for (int i = 0; i < l.tile_count; i++)
         CHECK(fabs(l.tiles[i].rotation_deg - 45) < 1e-9);
@@ -189,7 +189,7 @@ static void test_floor_l_shape(void)
     app_tiling t = tiling(APP_PATTERN_STRAIGHT, APP_ALIGN_CORNER, 3);
     app_tile_layout_desc d = {&r, &t, &f, NULL, 0};
     app_tile_layout l;
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     printf("L floor: %d whole, %d cut, tiled %.1f\n", l.whole_count, l.cut_count, l.tiled_area_mm2);
     CHECK(l.whole_count == 16);
     CHECK(l.cut_count == 5);
@@ -208,7 +208,7 @@ static void test_floor_l_shape(void)
             t.rotation_deg = rot ? 17.0 : 0.0;
             t.origin_mm[0] = 123;
             t.origin_mm[1] = 77;
-            CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+            CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
             char what[64];
             snprintf(what, sizeof what, "L %s rot %d", app_tile_pattern_name((app_tile_pattern)p),
                      rot);
@@ -233,7 +233,7 @@ static void test_third_offset_and_herringbone(void)
     app_tiling t = tiling(APP_PATTERN_THIRD_OFFSET, APP_ALIGN_CORNER, 3);
     app_tile_layout_desc d = {&r, &t, &f, NULL, 0};
     app_tile_layout l;
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     /* 8 rows of 300. Row shifts 0, 200, 400: row 0 five whole tiles (0..2997); shifted rows
      * have 4 whole and 2 cut (200 + 400 = 600 of s in cut pieces). 3 rows shift 0 (j = 0, 3,
      * 6), 5 shifted: whole 3 x 5 + 5 x 4 = 35, cut 5 x 2 = 10. */
@@ -247,7 +247,7 @@ static void test_third_offset_and_herringbone(void)
 
     t = tiling(APP_PATTERN_HERRINGBONE, APP_ALIGN_CENTRED, 3);
     f = spec(597, 147, 3, APP_TILE_UNI); /* 4:1 */
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     int turned = 0, straight = 0;
     for (int i = 0; i < l.tile_count; i++) {
         if (!l.tiles[i].whole)
@@ -271,7 +271,7 @@ static void test_third_offset_and_herringbone(void)
     /* Vertical stack: 297 x 597 standing: 3000 / 300 = 10 columns, 2400 / 600 = 4 rows. */
     t = tiling(APP_PATTERN_VERTICAL_STACK, APP_ALIGN_CORNER, 3);
     f = spec(597, 297, 3, APP_TILE_UNI);
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     CHECK(l.whole_count == 40 && l.cut_count == 0);
     check_balance(&l, 3000.0 * 2400, "stack");
     app_tile_layout_free(&l);
@@ -295,7 +295,7 @@ static void test_band_and_border(void)
     t.borders[0].bottom_mm = 900;
     app_tile_layout_desc d = {&r, &t, &f, &b, 0};
     app_tile_layout l;
-    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+    CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
     /* Field: rows at 300 j..300 j + 297. Below: rows 0, 1, 2 whole (up to 897 - but the strip
      * starts at 897, so row 2 ending at 897 is whole), 4 tiles each: 12 whole. The strip is
      * 897..1000; row 3 (900..1197) is cut to 1000..1197: 4 cuts; row 4 (1200..1497) whole: 4.
@@ -357,7 +357,7 @@ static void test_random_regions(void)
         t.origin_mm[1] = 4000 * rnd();
         app_tile_layout_desc d = {&r, &t, &f, NULL, 0};
         app_tile_layout l;
-        CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, err);
+        CHECK_MSG(app_tile_layout_compute(&d, &l, err, sizeof err) == APP_OK, "%s", err);
         char what[64];
         snprintf(what, sizeof what, "random %d", iter);
         if (expect > 1e5)
@@ -414,8 +414,8 @@ static void test_regions_from_plan(void)
         app_surface_region r;
         CHECK_MSG(app_surface_region_from_plan(&plan, cases[i].surface, &r, err, sizeof err) ==
                       APP_OK,
-                  err);
-        CHECK_MSG(fabs(app_surface_region_area(&r) - cases[i].area) < 1e-6, cases[i].surface);
+                  "%s", err);
+        CHECK_MSG(fabs(app_surface_region_area(&r) - cases[i].area) < 1e-6, "%s", cases[i].surface);
         app_surface_region_free(&r);
     }
     app_surface_region r;
@@ -478,5 +478,5 @@ int main(void)
     test_random_regions();
     test_regions_from_plan();
     test_errors();
-    return tu_result("tile_layout");
+    return check_report("tile_layout");
 }

@@ -1,5 +1,5 @@
-/* A tiny test kit for the app tests: CHECK prints file:line and the failed expression and
- * counts the failure; the test's main returns tu_result(). */
+/* Helpers of the app tests: text and file handling, temporary folders. The assertions are
+ * tests/common/check.h's; the test's main returns check_report(). */
 #ifndef TESSERA_TEST_UTIL_H
 #define TESSERA_TEST_UTIL_H
 
@@ -7,44 +7,14 @@
 #define _XOPEN_SOURCE 700 /* mkdtemp, realpath */
 #endif
 
+#include "../common/check.h"
+
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-static int tu_failures;
-static int tu_checks;
-
-#define CHECK(expr)                                                                                \
-    do {                                                                                           \
-        tu_checks++;                                                                               \
-        if (!(expr)) {                                                                             \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #expr);               \
-            tu_failures++;                                                                         \
-        }                                                                                          \
-    } while (0)
-
-/* CHECK with the error message (or any string) printed on failure. */
-#define CHECK_MSG(expr, msg)                                                                       \
-    do {                                                                                           \
-        tu_checks++;                                                                               \
-        if (!(expr)) {                                                                             \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n    message: %s\n", __FILE__, __LINE__,      \
-                    #expr, (msg));                                                                 \
-            tu_failures++;                                                                         \
-        }                                                                                          \
-    } while (0)
-
-static inline int tu_result(const char *name)
-{
-    if (tu_failures)
-        fprintf(stderr, "%s: %d of %d checks FAILED\n", name, tu_failures, tu_checks);
-    else
-        printf("%s: all %d checks passed\n", name, tu_checks);
-    return tu_failures ? 1 : 0;
-}
 
 static inline int tu_contains(const char *hay, const char *needle)
 {

@@ -22,38 +22,37 @@ file(WRITE ${CAT_DB_CLI}/bad-rows.csv
      "Cli,C-1,4006381333931,basins,Good basin,600,550,175,259.00\n"
      "Cli,C-2,4006381333932,basins,Bad GTIN,600,550,175,259.00\n"
      "Cli,C-3,,sinks,Bad category,600,550,175,259.00\n")
-set(CAT_DB_EXPECT_ERROR ${CMAKE_SOURCE_DIR}/tests/cli/expect_error.sh)
-set(CAT_DB_SANITIZER "AddressSanitizer|LeakSanitizer|runtime error:")
-
-add_test(NAME catalog.db_cli_search
-         COMMAND tessera catalog search thermostatic bath --category taps_mixers --max-width 400
-                 --limit 5 --db ${CAT_DB_CLI}/search.sqlite)
-set_tests_properties(catalog.db_cli_search PROPERTIES LABELS unit FAIL_REGULAR_EXPRESSION "${CAT_DB_SANITIZER}"
-                     PASS_REGULAR_EXPRESSION "thermostatic bath mixer, exposed +taps_mixers +300 x 195 x 110")
-add_test(NAME catalog.db_cli_show
-         COMMAND tessera catalog show NK-51244.00 --manufacturer nordkeram
-                 --db ${CAT_DB_CLI}/show.sqlite)
-set_tests_properties(catalog.db_cli_show PROPERTIES LABELS unit FAIL_REGULAR_EXPRESSION "${CAT_DB_SANITIZER}"
-                     PASS_REGULAR_EXPRESSION "Fjord back-to-wall WC, rimless.*GTIN +7351234[0-9]+.*variants \\(3\\)")
-add_test(NAME catalog.db_cli_import_bad
-         COMMAND ${CAT_DB_EXPECT_ERROR}
-                 "bad-rows.csv:3: column gtin: check digit|bad-rows.csv:4: column category|2 problems in 3 rows; nothing was imported"
-                 $<TARGET_FILE:tessera> catalog import ${CAT_DB_CLI}/bad-rows.csv
-                 --db ${CAT_DB_CLI}/import.sqlite)
-set_tests_properties(catalog.db_cli_import_bad PROPERTIES LABELS unit)
-add_test(NAME catalog.db_cli_export_import
-         COMMAND sh -c "\"$0\" catalog export -o \"$1/export.csv\" --db \"$1/rt.sqlite\" && \"$0\" catalog import \"$1/export.csv\" --db \"$1/rt.sqlite\""
-                 $<TARGET_FILE:tessera> ${CAT_DB_CLI})
-set_tests_properties(catalog.db_cli_export_import PROPERTIES LABELS unit FAIL_REGULAR_EXPRESSION "${CAT_DB_SANITIZER}"
-                     PASS_REGULAR_EXPRESSION "rows, 0 products added, [1-9][0-9]* updated")
-add_test(NAME catalog.db_cli_bad_option
-         COMMAND ${CAT_DB_EXPECT_ERROR} "unknown option \"--colour\""
-                 $<TARGET_FILE:tessera> catalog search tap --colour red)
-set_tests_properties(catalog.db_cli_bad_option PROPERTIES LABELS unit)
-add_test(NAME catalog.db_cli_not_found
-         COMMAND ${CAT_DB_EXPECT_ERROR} "no product with article number or GTIN \"NO-SUCH-1\""
-                 $<TARGET_FILE:tessera> catalog show NO-SUCH-1 --db ${CAT_DB_CLI}/show.sqlite)
-set_tests_properties(catalog.db_cli_not_found PROPERTIES LABELS unit)
+# tessera_add_test (tests/common/tessera_test.cmake) checks the exit code with the output and
+# fails on any sanitizer report.
+tessera_add_test(NAME catalog.db_cli_search
+                 COMMAND tessera catalog search thermostatic bath --category taps_mixers
+                         --max-width 400 --limit 5 --db ${CAT_DB_CLI}/search.sqlite
+                 EXPECT_OUTPUT "thermostatic bath mixer, exposed +taps_mixers +300 x 195 x 110"
+                 LABELS unit)
+tessera_add_test(NAME catalog.db_cli_show
+                 COMMAND tessera catalog show NK-51244.00 --manufacturer nordkeram
+                         --db ${CAT_DB_CLI}/show.sqlite
+                 EXPECT_OUTPUT "Fjord back-to-wall WC, rimless.*GTIN +7351234[0-9]+.*variants \\(3\\)"
+                 LABELS unit)
+tessera_add_test(NAME catalog.db_cli_import_bad
+                 COMMAND tessera catalog import ${CAT_DB_CLI}/bad-rows.csv
+                         --db ${CAT_DB_CLI}/import.sqlite
+                 EXPECT_RC 1 2
+                 EXPECT_STDERR "bad-rows.csv:3: column gtin: check digit"
+                               "bad-rows.csv:4: column category"
+                               "2 problems in 3 rows; nothing was imported"
+                 LABELS unit)
+tessera_add_test(NAME catalog.db_cli_export_import
+                 COMMAND sh -c "\"$0\" catalog export -o \"$1/export.csv\" --db \"$1/rt.sqlite\" && \"$0\" catalog import \"$1/export.csv\" --db \"$1/rt.sqlite\""
+                         $<TARGET_FILE:tessera> ${CAT_DB_CLI}
+                 EXPECT_OUTPUT "rows, 0 products added, [1-9][0-9]* updated" LABELS unit)
+tessera_add_test(NAME catalog.db_cli_bad_option
+                 COMMAND tessera catalog search tap --colour red
+                 EXPECT_RC 1 2 EXPECT_STDERR "unknown option \"--colour\"" LABELS unit)
+tessera_add_test(NAME catalog.db_cli_not_found
+                 COMMAND tessera catalog show NO-SUCH-1 --db ${CAT_DB_CLI}/show.sqlite
+                 EXPECT_RC 1 2 EXPECT_STDERR "no product with article number or GTIN \"NO-SUCH-1\""
+                 LABELS unit)
 
 # clang: the fuzz targets compile the catalog's sources themselves, so they need SQLite too
 # (fuzz_gltf above), and the CSV import gets a libFuzzer target of its own, run like

@@ -17,9 +17,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#define CHECK_NEAR(a, b, tol)                                                                      \
-    CHECK_MSG(fabs((double)(a) - (double)(b)) <= (tol), "%.9g vs %.9g", (double)(a), (double)(b))
-
 static char g_tmp[4096];
 
 static inline int rm_entry(const char *path, const struct stat *st, int flag, struct FTW *ftw)

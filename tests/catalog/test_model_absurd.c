@@ -71,7 +71,5 @@ int main(void)
     test_sparse_count();
     test_instance_count();
     tmp_remove();
-    if (g_failures)
-        fprintf(stderr, "%d check(s) failed\n", g_failures);
-    return g_failures ? 1 : 0;
+    return check_report("test_model_absurd");
 }

@@ -18,7 +18,7 @@ static void replay(const char *path)
         g_loaded++;
         if (model_broken(&m)) {
             fprintf(stderr, "%s: loaded but breaks the model invariants\n", path);
-            g_failures++;
+            check_failures++;
         }
         cat_model_free(&m);
         return;
@@ -27,7 +27,7 @@ static void replay(const char *path)
     if (r < CAT_ERR_IO || r > CAT_ERR_TOO_LARGE || strncmp(err, path, strlen(path)) != 0 ||
         strlen(err) <= strlen(path) + 2) {
         fprintf(stderr, "%s: bad failure report %d: \"%s\"\n", path, (int)r, err);
-        g_failures++;
+        check_failures++;
     }
     CHECK(m.meshes == NULL && m.mesh_count == 0 && m.materials == NULL);
 }
@@ -157,7 +157,5 @@ int main(void)
 
     printf("corpus replay: %d loaded, %d refused\n", g_loaded, g_refused);
     tmp_remove();
-    if (g_failures)
-        fprintf(stderr, "%d check(s) failed\n", g_failures);
-    return g_failures ? 1 : 0;
+    return check_report("test_model_corpus");
 }

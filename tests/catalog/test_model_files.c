@@ -511,7 +511,5 @@ int main(void)
     test_huge_data_uri();
     test_api_edges();
     tmp_remove();
-    if (g_failures)
-        fprintf(stderr, "%d check(s) failed\n", g_failures);
-    return g_failures ? 1 : 0;
+    return check_report("test_model_files");
 }

@@ -301,7 +301,5 @@ int main(void)
     test_non_manifold();
     test_hostile_meshes();
     test_samples();
-    if (g_failures)
-        fprintf(stderr, "%d check(s) failed\n", g_failures);
-    return g_failures ? 1 : 0;
+    return check_report("test_model_lod");
 }

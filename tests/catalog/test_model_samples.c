@@ -13,12 +13,12 @@ static int load_sample(const char *name, cat_model *m)
     cat_result r = cat_model_load(path, m, err, sizeof err);
     if (r != CAT_OK) {
         fprintf(stderr, "loading %s failed: %s: %s\n", name, cat_result_name(r), err);
-        g_failures++;
+        check_failures++;
         return 0;
     }
     if (model_broken(m)) {
         fprintf(stderr, "%s: loaded model breaks the invariants\n", name);
-        g_failures++;
+        check_failures++;
     }
     return 1;
 }
@@ -250,7 +250,7 @@ static void test_orientation(void)
         if (!(cosine > 0.988)) { /* right: 0.9935 for all six; a transposed matrix: < 0.98 */
             fprintf(stderr, "%s points away from its target (cosine %.4f)\n", arrows[i].name,
                     cosine);
-            g_failures++;
+            check_failures++;
         }
     }
     /* The base cube: 10 m, centred at the origin. */
@@ -308,7 +308,5 @@ int main(void)
     test_orientation();
     test_texture_coordinates();
     test_rigged_simple();
-    if (g_failures)
-        fprintf(stderr, "%d check(s) failed\n", g_failures);
-    return g_failures ? 1 : 0;
+    return check_report("test_model_samples");
 }

@@ -15,7 +15,7 @@
 
 static int check_product(const cat_product *p, int round_trip)
 {
-    int before = g_failures;
+    int before = check_failures;
     char name[CAT_PATH_BYTES + 1], path[4096], err[2048];
     CHECK(p->model[0] != 0);
     CHECK(cat_model_file_name(p->manufacturer, p->article, name, sizeof name));
@@ -93,7 +93,7 @@ static int check_product(const cat_product *p, int round_trip)
         fprintf(stderr, "%s\n", err);
     }
     cat_model_free(&m);
-    if (g_failures != before)
+    if (check_failures != before)
         fprintf(stderr, "  ^ %s %s (%s, %s)\n", p->manufacturer, p->article,
                 cat_category_name(p->category), p->name);
     return 0;
@@ -130,6 +130,6 @@ int main(void)
     CHECK(products >= 300);
     cat_db_close(db);
     tmp_remove();
-    printf("test_model_shipped: %d products checked, %d failure(s)\n", products, g_failures);
-    return g_failures ? 1 : 0;
+    printf("test_model_shipped: %d products checked, %d failure(s)\n", products, check_failures);
+    return check_report("test_model_shipped");
 }

@@ -444,7 +444,5 @@ int main(void)
     if (d)
         closedir(d);
     tmp_remove();
-    if (g_failures)
-        fprintf(stderr, "test_model_write: %d failure(s)\n", g_failures);
-    return g_failures ? 1 : 0;
+    return check_report("test_model_write");
 }

@@ -1,9 +1,11 @@
-/* Small helpers shared by the catalog tests: a CHECK macro that prints file:line, a temporary
- * folder, file writing, base64 and GLB assembly, and the invariants every loaded model keeps. */
+/* Small helpers shared by the catalog tests: a temporary folder, file writing, base64 and GLB
+ * assembly, and the invariants every loaded model keeps. The assertions are
+ * tests/common/check.h's (CHECK_LOAD_FAILS below counts with them). */
 #ifndef TESSERA_TESTS_CATALOG_TEST_UTIL_H
 #define TESSERA_TESTS_CATALOG_TEST_UTIL_H
 
 #define _XOPEN_SOURCE 700 /* mkdtemp, nftw, realpath */
+#include "../common/check.h"
 #include "catalog/model.h"
 
 #include <ftw.h>
@@ -13,26 +15,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-static int g_failures;
-
-#define CHECK(cond)                                                                                \
-    do {                                                                                           \
-        if (!(cond)) {                                                                             \
-            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);               \
-            g_failures++;                                                                          \
-        }                                                                                          \
-    } while (0)
-
-#define CHECK_NEAR(a, b, tol)                                                                      \
-    do {                                                                                           \
-        double a_ = (a), b_ = (b);                                                                 \
-        if (!(fabs(a_ - b_) <= (tol))) {                                                           \
-            fprintf(stderr, "%s:%d: CHECK_NEAR failed: %s = %.9g, %s = %.9g (tolerance %g)\n",     \
-                    __FILE__, __LINE__, #a, a_, #b, b_, (double)(tol));                            \
-            g_failures++;                                                                          \
-        }                                                                                          \
-    } while (0)
 
 /* Checks a load's result code and that the message names the file and contains needle. */
 #define CHECK_LOAD_FAILS(path, code, needle)                                                       \
@@ -47,10 +29,11 @@ static inline void check_load_fails(const char *file, int line, const char *path
     cat_result r = cat_model_load(path, &m, err, sizeof err);
     int ok = r == code && strncmp(err, path, strlen(path)) == 0 && strstr(err, needle) &&
              m.meshes == NULL && m.mesh_count == 0 && m.materials == NULL;
+    check_count++;
     if (!ok) {
         fprintf(stderr, "%s:%d: load of %s: expected %s with \"%s\", got %s: %s\n", file, line,
                 path, cat_result_name(code), needle, cat_result_name(r), err);
-        g_failures++;
+        check_failures++;
     }
     if (r == CAT_OK)
         cat_model_free(&m);

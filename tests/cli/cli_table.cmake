@@ -22,7 +22,6 @@ tessera_cli_error(stats_unwritable "/no/such/folder/s.json|cannot write"
                   render ${DATA}/minimal.json -o ${OUT}/stats-x.png --stats /no/such/folder/s.json)
 
 # --stats: the settings a render resolved to and what its stages did.
-set(STATS_CHECK ${CMAKE_CURRENT_SOURCE_DIR}/stats_check.py)
 set(STATS_DEMO ${CMAKE_SOURCE_DIR}/assets/projects/demo-bathroom.json)
 add_test(NAME cli.stats.room_probe_off
          COMMAND ${STATS_CHECK} ${OUT}/room-off.json settings.quality=print settings.room_probe=off

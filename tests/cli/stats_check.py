@@ -1,22 +1,24 @@
 #!/usr/bin/env python3
-"""Runs a tessera command that writes --stats FILE.json and checks the file's values.
+"""Runs tessera commands that write --stats FILE.json and checks each file's values.
 
 usage: stats_check.py FILE.json KEY=VALUE... -- COMMAND [ARGS...]
+                      [--then FILE.json KEY=VALUE... -- COMMAND [ARGS...]]...
 KEY is a dotted path into the JSON object (settings.room_probe, frame.room_probe); VALUE is
-compared as text ("on", "0"), or ">0" for any positive number. The command must exit 0 and
-write the file anew."""
+compared as text ("on", "0"), or ">0" for any positive number. Each command must exit 0 and
+write its file anew. With --then, several runs (a switch on, then off) are checked in turn, so
+one test can show that a stage ran in one render and not in the other."""
 import json
 import os
 import subprocess
 import sys
 
 
-def main():
-    args = sys.argv[1:]
+def check_run(args):
     sep = args.index("--")
     path, checks, command = args[0], args[1:sep], args[sep + 1:]
     if os.path.exists(path):
         os.remove(path)
+    print(f"--- {' '.join(command)}", flush=True)
     rc = subprocess.call(command)
     if rc != 0:
         print(f"FAIL: exit code {rc} from {' '.join(command)}")
@@ -33,6 +35,24 @@ def main():
         ok = (isinstance(value, (int, float)) and value > 0) if want == ">0" else text == want
         print(f"{'ok' if ok else 'FAIL'}: {key} = {text} (want {want})")
         status |= not ok
+    return status
+
+
+def main():
+    runs, current = [], []
+    for arg in sys.argv[1:]:
+        if arg == "--then":
+            runs.append(current)
+            current = []
+        else:
+            current.append(arg)
+    runs.append(current)
+    status = 0
+    for run in runs:
+        if "--" not in run or run.index("--") < 1:
+            print(__doc__)
+            return 2
+        status |= check_run(run)
     return status
 
 

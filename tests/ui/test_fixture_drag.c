@@ -14,9 +14,6 @@
 #include <string.h>
 #include <unistd.h>
 
-#define CHECK_NEAR(a, b, tol)                                                                      \
-    CHECK_MSG(fabs((a) - (b)) <= (tol), "%g against %g", (double)(a), (double)(b))
-
 static app_fixture box(double cx, double cy, double hx, double hy, double angle, double z0,
                        double z1)
 {
