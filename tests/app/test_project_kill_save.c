@@ -1,4 +1,4 @@
-/* kill -9 during save: a child process saves a large project over and over,
+/* kill -9 during save: a child process saves a project of 150 objects over and over,
  * the parent kills it with SIGKILL after a random delay, and then PATH must read back as a
  * complete project (the old one or a new one, all objects present) and PATH.bak, when there,
  * too (every 4th time, to keep the test short). Repeated many times with delays spread over the
@@ -17,7 +17,7 @@
 
 #define DATA TESSERA_PROJECT_TEST_DATA
 #define ITERATIONS 200
-#define OBJECTS 600
+#define OBJECTS 150
 
 static double now_ms(void)
 {
@@ -55,7 +55,8 @@ int main(void)
         CHECK_MSG(0, "%s", err);
         return check_report("project_kill_save");
     }
-    /* A large project, so that one save takes long enough to be killed in the middle. */
+    /* A project large enough that one save takes milliseconds, so that it can be killed in the
+     * middle of each phase (the delays below scale with it). */
     app_object *objects = calloc(OBJECTS, sizeof *objects);
     CHECK(objects != NULL);
     if (!objects)
@@ -78,9 +79,14 @@ int main(void)
     snprintf(path, sizeof path, "%s/big.json", dir);
     snprintf(bak, sizeof bak, "%s.bak", path);
     snprintf(p.name, sizeof p.name, "save-initial");
-    double t0 = now_ms();
-    CHECK(app_project_write(path, &p, err, sizeof err) == APP_OK);
-    double save_ms = now_ms() - t0;
+    /* The fastest of three saves: the first one alone is slowed by cold caches and would
+     * spread the kills past the saves they are meant to land in. */
+    double save_ms = INFINITY;
+    for (int k = 0; k < 3; k++) {
+        double t0 = now_ms();
+        CHECK(app_project_write(path, &p, err, sizeof err) == APP_OK);
+        save_ms = fmin(save_ms, now_ms() - t0);
+    }
     if (save_ms < 1)
         save_ms = 1;
 

@@ -37,7 +37,8 @@ typedef struct setup {
     ref_image traced;
 } setup;
 
-static int open_setup(const char *path, float yaw_deg, setup *out)
+/* trace 0: no reference image (a setup only compared GPU against GPU). */
+static int open_setup(const char *path, float yaw_deg, int trace, setup *out)
 {
     char err[2048];
     memset(out, 0, sizeof *out);
@@ -56,6 +57,8 @@ static int open_setup(const char *path, float yaw_deg, setup *out)
     float dx = t[0] - e[0], dy = t[1] - e[1];
     t[0] = e[0] + c * dx - s * dy;
     t[1] = e[1] + s * dx + c * dy;
+    if (!trace)
+        return 1;
     ref_scene *rs = NULL;
     CHECK_MSG(app_ref_scene_build(&out->project, &rs, err, sizeof err) == APP_OK, "%s", err);
     out->mask = malloc((size_t)W * H * sizeof *out->mask);
@@ -119,7 +122,7 @@ static void planar_vs_depth(rd_context *ctx, const char *path, float yaw, double
     setup su;
     float *img = malloc((size_t)W * H * 4 * sizeof *img);
     out[0] = out[1] = out[2] = NAN;
-    if (img && open_setup(path, yaw, &su)) {
+    if (img && open_setup(path, yaw, 1, &su)) {
         if (render(ctx, &su, 1, APP_CORRECTION_DEFAULT, 0, img))
             out[0] = psnr(&su, img);
         if (render(ctx, &su, 0, APP_CORRECTION_DEPTH, 0, img))
@@ -159,7 +162,7 @@ int main(void)
      * planar mirrors off gives (nothing else changes). */
     setup su;
     float *a = malloc((size_t)W * H * 4 * sizeof *a), *b = malloc((size_t)W * H * 4 * sizeof *b);
-    if (a && b && open_setup(mirror, 180.0f, &su)) {
+    if (a && b && open_setup(mirror, 180.0f, 0, &su)) {
         if (render(ctx, &su, 1, APP_CORRECTION_DEFAULT, 0, a) &&
             render(ctx, &su, 0, APP_CORRECTION_DEFAULT, 0, b)) {
             int same = memcmp(a, b, (size_t)W * H * 4 * sizeof *a) == 0;
@@ -173,7 +176,8 @@ int main(void)
     /* The demo: its mirror over the basin. */
     setup demo;
     float *img = malloc((size_t)W * H * 4 * sizeof *img);
-    if (img && open_setup(TESSERA_SOURCE_DIR "/assets/projects/demo-bathroom.json", 0.0f, &demo)) {
+    if (img &&
+        open_setup(TESSERA_SOURCE_DIR "/assets/projects/demo-bathroom.json", 0.0f, 1, &demo)) {
         double on = NAN, off = NAN;
         if (render(ctx, &demo, 1, APP_CORRECTION_DEFAULT, 0, img))
             on = psnr(&demo, img);

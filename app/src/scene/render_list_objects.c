@@ -7,6 +7,8 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
 
 /* M = T(position) * Rz * Ry * Rx * S(scale * size), column-major, metres. */
 void app_object_transform(const app_object *o, const double size_m[3], float out[16])
@@ -166,6 +168,53 @@ static app_result add_primitive(app_list_builder *b, const app_project *p, int i
 #define LOD_MIN_TRIANGLES 1500
 #define LOD_FRACTION 0.25f
 
+/* Decimated copies for the life of the process, by model file: the planner rebuilds its scene
+ * after every edit, and decimating a detailed model costs more than loading it. A file is known
+ * by its path, size and modification time, so one rewritten on disk is decimated again. Scenes
+ * are built on one thread. */
+enum { LOD_CACHE_SIZE = 64 };
+static struct lod_cache_entry {
+    char path[sizeof((app_object *)0)->model];
+    off_t size;
+    struct timespec mtime;
+    cat_model lod;
+} lod_cache[LOD_CACHE_SIZE];
+static int lod_cache_count;
+
+static struct lod_cache_entry *lod_cache_find(const char *path, const struct stat *st)
+{
+    for (int i = 0; i < lod_cache_count; i++) {
+        struct lod_cache_entry *e = &lod_cache[i];
+        if (e->size == st->st_size && e->mtime.tv_sec == st->st_mtim.tv_sec &&
+            e->mtime.tv_nsec == st->st_mtim.tv_nsec && !strcmp(e->path, path))
+            return e;
+    }
+    return NULL;
+}
+
+/* The level of detail of m into *l, from the cache when it holds the file; st: the file as it
+ * was before m was loaded from it (known 0: not cached). */
+static cat_result make_lod(const char *path, int known, const struct stat *st, const cat_model *m,
+                           cat_model *l)
+{
+    char lerr[256];
+    known = known && strlen(path) < sizeof lod_cache[0].path;
+    struct lod_cache_entry *e = known ? lod_cache_find(path, st) : NULL;
+    if (e) /* fraction 1 copies */
+        return cat_model_make_lod(&e->lod, 1.0f, l, lerr, sizeof lerr);
+    cat_result r = cat_model_make_lod(m, LOD_FRACTION, l, lerr, sizeof lerr);
+    if (r == CAT_OK && known && lod_cache_count < LOD_CACHE_SIZE) {
+        e = &lod_cache[lod_cache_count];
+        if (cat_model_make_lod(l, 1.0f, &e->lod, lerr, sizeof lerr) == CAT_OK) {
+            snprintf(e->path, sizeof e->path, "%s", path);
+            e->size = st->st_size;
+            e->mtime = st->st_mtim;
+            lod_cache_count++;
+        }
+    }
+    return r;
+}
+
 /* The model's file loaded into the store (and, with probe meshes asked for, its decimated
  * copy: RENDERING.md section 8 lets probes draw lower-detail geometry; catalog/mesh_lod.h). A
  * model that cannot be decimated is captured as it is (*lod NULL). */
@@ -179,6 +228,8 @@ static app_result load_model(app_list_builder *b, const app_project *p, int inde
         return APP_ERR_OUT_OF_MEMORY;
     cat_model *m = &s->models[s->model_count], *l = &s->models[s->model_count + 1];
     char cerr[768];
+    struct stat st;
+    int known = stat(p->objects[index].model, &st) == 0;
     if (cat_model_load(p->objects[index].model, m, cerr, sizeof cerr) != CAT_OK) {
         snprintf(err, err_size, "%s: $.objects[%d].model: %s", p->path, index, cerr);
         return APP_ERR_IO;
@@ -186,12 +237,11 @@ static app_result load_model(app_list_builder *b, const app_project *p, int inde
     s->model_count++;
     *model = m;
     *lod = NULL;
-    char lerr[256];
     memset(l, 0, sizeof *l);
     if (!(b->flags & APP_RENDER_LIST_PROBE_MESHES) ||
         cat_model_triangle_count(m) < LOD_MIN_TRIANGLES)
         return APP_OK;
-    if (cat_model_make_lod(m, LOD_FRACTION, l, lerr, sizeof lerr) != CAT_OK) {
+    if (make_lod(p->objects[index].model, known, &st, m, l) != CAT_OK) {
         cat_model_free(l);
         return APP_OK;
     }

@@ -170,6 +170,10 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
                            size_t err_size)
 {
     memset(out, 0, sizeof *out);
+    if (!ctx) { /* no scene without a context: say so before every model is loaded and decimated */
+        snprintf(err, err_size, "%s: rd_scene_create: no context", p->path);
+        return APP_ERR_OUT_OF_MEMORY;
+    }
     app_render_list l;
     app_result r = app_render_list_build(p, APP_RENDER_LIST_PROBE_MESHES, &l, err, err_size);
     if (r != APP_OK)
