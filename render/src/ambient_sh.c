@@ -9,6 +9,7 @@
 #include "render/reflect_ref.h"
 
 #include <math.h>
+#include <string.h>
 #include <stdlib.h>
 
 #define AMBIENT_PROBE_SIZE 32
@@ -89,6 +90,12 @@ rd_result rd_ambient_update(rd_context *ctx, rd_scene *s, rd_frame_stats *stats)
     if (!isfinite(p->centre[0] + p->centre[1] + p->centre[2]))
         return rd_fail(RD_ERR_INVALID_ARGUMENT, "SH9 ambient needs a scene with bounds");
     p->captured_stamp = s->change_counter;
+    /* The capture sees the room lit by its lights alone, as a still's first frame does (no
+     * coefficients exist yet) and as the tracer's capture does (ref_scene_set_ambient_sh9):
+     * lit with the last frame's coefficients, each capture would add another bounce of
+     * ambient to the next, and the room would brighten frame by frame toward a many-bounce
+     * ambient that neither a still nor the tracer has. */
+    memset(s->sh9, 0, sizeof s->sh9);
     for (int f = 0; f < 6; f++) {
         rd_result r = rd_probe_capture_face(ctx, s, p, f, far_m);
         if (r != RD_OK)

@@ -12,6 +12,12 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* Texture units of the lit program: 0-2 its own, 3-4 the probe's distances and surface, 5 the
+ * shadow atlas (shadow.c), 6-8 the room probe, 9-14 the self-reflection trace (self_trace.c);
+ * the planar capture takes the last unit GL 3.3 guarantees. A unit shared with the atlas would
+ * leave the capture bound where every later object reads its shadows. */
+#define PLANAR_UNIT 15
+
 /* The lights of `mask` (bit i: scene light i), packed in scene order: the light loop of
  * lit.frag runs over exactly these. */
 static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned mask)
@@ -181,9 +187,9 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_CUBE_MAP, probe->planar ? 0 : rd_probe_texture(s, probe));
     if (probe->planar) {
-        glActiveTexture(GL_TEXTURE5);
+        glActiveTexture(GL_TEXTURE0 + PLANAR_UNIT);
         glBindTexture(GL_TEXTURE_2D, probe->planar_texture);
-        glUniform1i(p->u_planar, 5);
+        glUniform1i(p->u_planar, PLANAR_UNIT);
         glUniformMatrix4fv(p->u_planar_view_proj, 1, GL_FALSE, probe->planar_view_proj);
         glActiveTexture(GL_TEXTURE1);
     }

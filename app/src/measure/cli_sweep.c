@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 typedef struct sweep_setting {
     const char *factor, *label;
@@ -25,31 +26,42 @@ typedef struct sweep_setting {
     int every_n; /* 1 every frame, N every N-th, 0 once (static), -1 time-sliced */
     int per_vertex;
     rd_ambient_model ambient;
-    int max_resolution;  /* cap of auto; 0 = the renderer's */
-    int no_specular;     /* probes capture without highlights */
-    int supersample;     /* 1 = none (the reference is traced at the same) */
-    int planar;          /* flat mirrors as planar reflections (probe_planar.c) */
-    int room_off;        /* "depth" searches the own probe only (no room probe) */
-    int lamps_in_probes; /* sharp lookups read lamps from their probes (not emitters.c) */
-    int self_rays;       /* lobe rays a sample of the self-reflection trace; 0 off */
+    int max_resolution;         /* cap of auto; 0 = the renderer's */
+    int no_specular;            /* probes capture without highlights */
+    int supersample;            /* 1 = none (the reference is traced at the same) */
+    int planar;                 /* flat mirrors as planar reflections (probe_planar.c) */
+    int room_off;               /* "depth" searches the own probe only (no room probe) */
+    int lamps_in_probes;        /* sharp lookups read lamps from their probes (not emitters.c) */
+    int self_rays;              /* lobe rays a sample of the self-reflection trace; 0 off */
+    int faces_per_frame;        /* probe faces refreshed a frame at most; 0 no limit */
+    rd_shadow_settings shadows; /* the GPU's and the reference's */
 } sweep_setting;
 
-enum { FACTOR_SETTINGS = 24, PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
+/* Probe resolutions 16 to 512 texels a face side: 512 already costs seconds a frame under
+ * llvmpipe (every probe's six faces every frame), and 1024, four times its texels, would take
+ * the designed demo's sweep past five minutes (docs/accuracy.md). */
+enum { RESOLUTIONS = 6, FACTOR_SETTINGS = 1 + RESOLUTIONS + 16 };
+enum { PRESETS = 4, SETTINGS = FACTOR_SETTINGS + PRESETS };
 
-/* The baseline is what the renderer does by default; every other setting changes one factor. */
-static void make_settings(sweep_setting out[SETTINGS])
+/* The baseline is what the renderer does by default with the project's render settings (its
+ * ambient model, the session's shadows, its supersampling): the reference is traced with the
+ * same, so every other setting differs from both in the one factor it names. The presets
+ * bring their own supersampling and shadows, and their reference is traced with those. */
+static void make_settings(sweep_setting out[SETTINGS], const rd_reflection_defaults *scene,
+                          const rd_shadow_settings *shadows, int supersample)
 {
     const sweep_setting base = {.factor = "baseline",
                                 .label = "auto",
                                 .correction = RD_CORRECTION_BOX,
                                 .blur = RD_BLUR_PREFILTERED,
                                 .every_n = 1,
-                                .ambient = RD_AMBIENT_CONSTANT,
-                                .supersample = 1};
-    static const char *const res_labels[7] = {"16", "32", "64", "128", "256", "512", "1024"};
+                                .ambient = scene->ambient,
+                                .supersample = supersample,
+                                .shadows = *shadows};
+    static const char *const res_labels[RESOLUTIONS] = {"16", "32", "64", "128", "256", "512"};
     int k = 0;
     out[k++] = base;
-    for (int i = 0; i < 7; i++) {
+    for (int i = 0; i < RESOLUTIONS; i++) {
         out[k] = base;
         out[k].factor = "resolution";
         out[k].label = res_labels[i];
@@ -57,61 +69,69 @@ static void make_settings(sweep_setting out[SETTINGS])
     }
     const struct {
         const char *factor, *label;
-    } named[10] = {{"correction", "none"}, {"correction", "sphere"},  {"blur", "box-mips"},
-                   {"blur", "reference"},  {"update", "every 4"},     {"update", "every 16"},
-                   {"update", "static"},   {"update", "time-sliced"}, {"per-vertex", "per-vertex"},
-                   {"ambient", "sh9"}};
+    } named[10] = {{"correction", "none"},
+                   {"correction", "sphere"},
+                   {"blur", "box-mips"},
+                   {"blur", "reference"},
+                   {"update", "every 4"},
+                   {"update", "every 16"},
+                   {"update", "static"},
+                   {"update", "time-sliced"},
+                   {"per-vertex", "per-vertex"},
+                   {"ambient", scene->ambient == RD_AMBIENT_SH9 ? "constant" : "sh9"}};
+    sweep_setting *named_at = &out[k];
     for (int i = 0; i < 10; i++) {
         out[k] = base;
         out[k].factor = named[i].factor;
         out[k].label = named[i].label;
         k++;
     }
-    out[8].correction = RD_CORRECTION_NONE;
-    out[9].correction = RD_CORRECTION_SPHERE;
-    out[10].blur = RD_BLUR_BOX_MIPS;
-    out[11].blur = RD_BLUR_REFERENCE;
-    out[12].every_n = 4;
-    out[13].every_n = 16;
-    out[14].every_n = 0;
-    out[15].every_n = -1; /* time-sliced */
-    out[16].per_vertex = 1;
-    out[17].ambient = RD_AMBIENT_SH9;
-    out[18] = base;
-    out[18].factor = "highlights";
-    out[18].label = "not in probes";
-    out[18].no_specular = 1;
+    named_at[0].correction = RD_CORRECTION_NONE;
+    named_at[1].correction = RD_CORRECTION_SPHERE;
+    named_at[2].blur = RD_BLUR_BOX_MIPS;
+    named_at[3].blur = RD_BLUR_REFERENCE;
+    named_at[4].every_n = 4;
+    named_at[5].every_n = 16;
+    named_at[6].every_n = 0;
+    named_at[7].every_n = -1; /* time-sliced */
+    named_at[8].per_vertex = 1;
+    named_at[9].ambient = scene->ambient == RD_AMBIENT_SH9 ? RD_AMBIENT_CONSTANT : RD_AMBIENT_SH9;
+    out[k] = base;
+    out[k].factor = "highlights";
+    out[k].label = "not in probes";
+    out[k++].no_specular = 1;
     /* Distance impostors: the probe's stored distances instead of the proxy (reflect.glsl). */
-    out[19] = base;
-    out[19].factor = "correction";
-    out[19].label = "depth";
-    out[19].correction = RD_CORRECTION_DEPTH;
+    sweep_setting *depth = &out[k];
+    out[k] = base;
+    out[k].factor = "correction";
+    out[k].label = "depth";
+    out[k++].correction = RD_CORRECTION_DEPTH;
     /* Flat mirrors captured from the eye's mirror image (probe_planar.c). */
-    out[20] = base;
-    out[20].factor = "mirrors";
-    out[20].label = "planar";
-    out[20].planar = 1;
+    out[k] = base;
+    out[k].factor = "mirrors";
+    out[k].label = "planar";
+    out[k++].planar = 1;
     /* Depth with the object's own probe alone: what the room probe buys (probe.c). */
-    out[21] = out[19];
-    out[21].label = "depth, own probe only";
-    out[21].room_off = 1;
+    out[k] = *depth;
+    out[k].label = "depth, own probe only";
+    out[k++].room_off = 1;
     /* Lamps left in the probes of mirrors and glass: what their exact intersection buys
      * (emitters.c). */
-    out[22] = base;
-    out[22].factor = "lamps";
-    out[22].label = "in the probes";
-    out[22].lamps_in_probes = 1;
+    out[k] = base;
+    out[k].factor = "lamps";
+    out[k].label = "in the probes";
+    out[k++].lamps_in_probes = 1;
     /* Fixtures' reflections of themselves and their neighbours traced (self_trace.c). */
-    out[23] = base;
-    out[23].factor = "self-reflections";
-    out[23].label = "traced";
-    out[23].self_rays = APP_SELF_REFLECTION_RAYS;
-    /* The quality presets (app/quality.c), measured like the rest, at their own supersampling
-     * against a reference traced with the same. */
+    out[k] = base;
+    out[k].factor = "self-reflections";
+    out[k].label = "traced";
+    out[k++].self_rays = APP_SELF_REFLECTION_RAYS;
+    /* The quality presets (app/scene/quality.c), measured like the rest, at their own
+     * supersampling and shadows against a reference traced with the same. */
     static const char *const presets[PRESETS] = {"draft", "interactive", "final", "print"};
     for (int i = 0; i < PRESETS; i++) {
         const app_quality *q = app_quality_find(presets[i]);
-        sweep_setting *st = &out[FACTOR_SETTINGS + i];
+        sweep_setting *st = &out[k++];
         *st = base;
         st->factor = "preset";
         st->label = q->name;
@@ -126,14 +146,17 @@ static void make_settings(sweep_setting out[SETTINGS])
         st->planar = q->planar_mirrors == RD_SWITCH_ON;
         st->self_rays = q->self_reflections;
         st->room_off = q->room_probe == RD_SWITCH_OFF;
+        st->faces_per_frame = q->probe_faces_per_frame;
+        st->shadows = rd_shadow_settings_resolve(&(rd_shadow_settings){
+            .mode = q->shadows, .map_size = q->shadow_map_size, .taps = q->shadow_taps});
     }
 }
 
 /* Frames run before the measured one. A moving object slides in a straight line and arrives
  * at its place in the project on the measured frame, so every probe captured earlier is
  * stale by how long ago it was captured: 0 frames for every frame, 3 for every 4th, 15 for
- * every 16th, 63 for once. */
-#define ANIMATION_FRAMES 64
+ * every 16th, 31 for once. */
+#define ANIMATION_FRAMES 32
 #define SLIDE_PER_FRAME_M 0.005f
 
 static void apply(rd_scene *scene, const rd_reflection_defaults *base, const sweep_setting *s)
@@ -154,7 +177,9 @@ static void apply(rd_scene *scene, const rd_reflection_defaults *base, const swe
     d.room_probe = s->room_off ? RD_SWITCH_OFF : RD_SWITCH_ON;
     d.exact_lamps = s->lamps_in_probes ? RD_SWITCH_OFF : RD_SWITCH_ON;
     d.self_reflections = s->self_rays;
+    d.max_faces_per_frame = s->faces_per_frame;
     rd_scene_set_reflection_defaults(scene, &d);
+    rd_scene_set_shadows(scene, &s->shadows);
 }
 
 /* The project object to move: --animate NAME, else the largest one without reflections. */
@@ -187,6 +212,28 @@ static void place(cli_session *s, int object, const double rest_mm[3], float off
     app_scene_move_object(&s->scene, &s->project, object, at);
 }
 
+/* The defaults: what finishes the designed demo within five minutes on two cores
+ * (docs/accuracy.md, "The speed/accuracy front"). */
+#define SWEEP_WIDTH 480
+#define SWEEP_HEIGHT 270
+#define SWEEP_SAMPLES 16
+
+/* A reference image and what it was traced with. */
+typedef struct sweep_truth {
+    int supersample;
+    rd_shadow_settings shadows;
+    ref_image image;
+} sweep_truth;
+enum { TRUTHS = PRESETS + 1 };
+
+static int same_truth(const sweep_truth *t, const sweep_setting *st)
+{
+    const rd_shadow_settings *a = &t->shadows, *b = &st->shadows;
+    return t->supersample == st->supersample && a->mode == b->mode &&
+           (a->mode == RD_SHADOWS_OFF ||
+            (a->map_size == b->map_size && a->taps == b->taps && a->softness_m == b->softness_m));
+}
+
 typedef struct sweep_row {
     double ms_mean, ms_median, psnr_all, psnr_reflective, rmse_reflective;
 } sweep_row;
@@ -212,8 +259,9 @@ static int write_markdown(const char *path, const app_sweep_point *p, const swee
 
 void cli_defaults_sweep(cli_options *o)
 {
-    o->frames = 6;
-    o->warmup = 2;
+    o->frames = 3;
+    o->warmup = 1;
+    o->samples = SWEEP_SAMPLES;
 }
 
 int cli_cmd_sweep(const cli_options *args)
@@ -227,17 +275,17 @@ int cli_cmd_sweep(const cli_options *args)
     if (rc != CLI_OK)
         return rc;
     rd_view view;
-    rc = cli_session_view(&s, &o, o.camera, 640, 360, &view);
-    view.supersample = 1;
+    rc = cli_session_view(&s, &o, o.camera, SWEEP_WIDTH, SWEEP_HEIGHT, &view);
     char err[2048];
     ref_scene *ref = NULL;
     if (rc == CLI_OK && app_ref_scene_build(&s.project, &ref, err, sizeof err) != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         rc = CLI_FAILED;
     }
-    /* The ground truth of the project as it stands (the moving object at rest). */
-    /* The ground truth per supersampling (the presets use their own), traced on first use. */
-    ref_image truth[5] = {{0}};
+    /* The ground truth of the project as it stands (the moving object at rest), one per
+     * supersampling and shadows (the presets bring their own), traced on first use. */
+    sweep_truth truth[TRUTHS] = {{0}};
+    int truths = 0;
     size_t n = (size_t)view.width * (size_t)view.height;
     float *image = malloc(n * 4 * sizeof *image), *mask = malloc(n * sizeof *mask);
     double rest[3] = {0};
@@ -263,23 +311,34 @@ int cli_cmd_sweep(const cli_options *args)
     sweep_row rows[SETTINGS];
     int count = 0;
     rd_reflection_defaults base = rd_scene_reflection_defaults(s.scene.scene);
+    rd_shadow_settings shadows = rd_scene_shadows(s.scene.scene);
     sweep_setting settings[SETTINGS];
-    make_settings(settings);
+    make_settings(settings, &base, &shadows, view.supersample > 1 ? view.supersample : 1);
+    int progress = isatty(STDERR_FILENO);
     if (rc == CLI_OK)
-        printf("%-11s %-11s %9s %9s %9s %9s %9s\n", "factor", "setting", "ms mean", "ms median",
+        printf("%-16s %-21s %9s %9s %9s %9s %9s\n", "factor", "setting", "ms mean", "ms median",
                "PSNR all", "PSNR refl", "RMSE refl");
     for (int k = 0; rc == CLI_OK && k < SETTINGS; k++) {
         const sweep_setting *st = &settings[k];
         apply(s.scene.scene, &base, st);
         rd_view view_k = view;
         view_k.supersample = st->supersample;
-        ref_image *tr = &truth[st->supersample];
-        if (!tr->linear) {
+        int t_k = 0;
+        while (t_k < truths && !same_truth(&truth[t_k], st))
+            t_k++;
+        ref_image *tr = &truth[t_k].image;
+        if (t_k == truths) {
+            truths++;
+            truth[t_k].supersample = st->supersample;
+            truth[t_k].shadows = st->shadows;
+            if (progress)
+                fprintf(stderr, "\r\033[K");
             fprintf(stderr,
-                    "\rtessera sweep: reference %dx%d, %dx%d supersampling, %d samples "
+                    "tessera sweep: reference %dx%d, %dx%d supersampling, shadows %s, %d samples "
                     "per glossy lookup\n",
                     view.width, view.height, st->supersample, st->supersample,
-                    o.samples ? o.samples : 64);
+                    rd_shadow_mode_name(st->shadows.mode), o.samples);
+            ref_scene_set_shadows(ref, &st->shadows);
             ref_render_desc rdesc = {
                 .view = view_k, .samples = o.samples, .seed = 1, .progress = 1};
             if (ref_render(ref, &rdesc, tr) != REF_OK) {
@@ -288,6 +347,8 @@ int cli_cmd_sweep(const cli_options *args)
                 break;
             }
         }
+        if (progress) /* ended below, before the row is printed */
+            fprintf(stderr, "\rsetting %d of %d: %s %s ", k + 1, SETTINGS, st->factor, st->label);
         for (size_t i = 0; i < n; i++)
             mask[i] = tr->mask[i] ? 1.0f : 0.0f;
         /* The update policies are measured with the object moving over ANIMATION_FRAMES; the
@@ -327,17 +388,19 @@ int cli_cmd_sweep(const cli_options *args)
         double mean = sum / (double)(frames - from);
         double median = app_stats_of(t + from, frames - from).median;
         free(t);
+        if (progress) { /* the progress line erased, so the row starts a clean line */
+            fprintf(stderr, "\r\033[K");
+            fflush(stderr);
+        }
         rows[count] = (sweep_row){mean, median, all.psnr, refl.psnr, refl.rmse};
         points[count++] = (app_sweep_point){st->factor, st->label, mean, refl.psnr, 0};
-        printf("%-11s %-11s %9.2f %9.2f %9.2f %9.2f %9.5f\n", st->factor, st->label, mean, median,
+        printf("%-16s %-21s %9.2f %9.2f %9.2f %9.2f %9.5f\n", st->factor, st->label, mean, median,
                all.psnr, refl.psnr, refl.rmse);
         if (csv)
             fprintf(csv, "%s,%s,%.3f,%.3f,%.6f,%.3f,%.6f,%.3f,%lld\n", st->factor, st->label, mean,
                     median, all.rmse, all.psnr, refl.rmse, refl.psnr, refl.pixels);
         fflush(stdout);
-        fprintf(stderr, "\rsetting %d of %d", k + 1, SETTINGS);
     }
-    fprintf(stderr, "\n");
     if (csv)
         fclose(csv);
     if (rc == CLI_OK) {
@@ -347,14 +410,14 @@ int cli_cmd_sweep(const cli_options *args)
         printf("\nPareto front (faster or more accurate than every other setting):\n");
         for (int i = 0; i < count; i++)
             if (points[i].on_front)
-                printf("  %-11s %-11s %8.2f ms  %6.2f dB\n", points[i].factor, points[i].label,
+                printf("  %-16s %-21s %8.2f ms  %6.2f dB\n", points[i].factor, points[i].label,
                        points[i].ms, points[i].psnr);
         fflush(stdout);
         if (o.plot) {
             char title[512];
             snprintf(title, sizeof title, "%s, %dx%d, %s: reference %d samples", s.project.name,
                      view.width, view.height, rd_backend_name(rd_context_backend(s.ctx)),
-                     o.samples ? o.samples : 64);
+                     o.samples);
             if (app_sweep_plot(o.plot, points, count, title, err, (int)sizeof err) != 0) {
                 fprintf(stderr, "tessera: %s\n", err);
                 rc = CLI_FAILED;
@@ -365,8 +428,8 @@ int cli_cmd_sweep(const cli_options *args)
     }
     free(image);
     free(mask);
-    for (int i = 0; i < 5; i++)
-        ref_image_free(&truth[i]);
+    for (int i = 0; i < truths; i++)
+        ref_image_free(&truth[i].image);
     ref_scene_destroy(ref);
     cli_session_close(&s);
     return rc;

@@ -1,5 +1,7 @@
 #include "app/measure/sweep_plot.h"
 
+#include "app/measure/label_place.h"
+
 #include <cairo.h>
 #include <math.h>
 #include <stdio.h>
@@ -137,19 +139,57 @@ int app_sweep_plot(const char *path, const app_sweep_point *p, int n, const char
         cairo_stroke(cr);
     }
     free(front);
-    /* points and labels */
+    /* Points, then their labels, placed so that none covers another label or a point
+     * (label_place.c): the front's first, then the presets', then the rest; a label moved
+     * away from its point is joined to it by a leader line. */
     cairo_set_font_size(cr, 11);
+    app_label *labels = calloc((size_t)n, sizeof *labels);
+    int *order = calloc((size_t)n, sizeof *order);
+    int nl = 0;
+    for (int pass = 0; labels && order && pass < 3; pass++)
+        for (int i = 0; i < n; i++) {
+            if (!isfinite(p[i].ms) || !isfinite(p[i].psnr))
+                continue;
+            int preset = !strcmp(p[i].factor, "preset");
+            if ((pass == 0) != (p[i].on_front != 0) || (pass > 0 && (pass == 1) != preset))
+                continue;
+            cairo_text_extents_t te;
+            cairo_text_extents(cr, p[i].label, &te);
+            order[nl] = i;
+            labels[nl++] = (app_label){
+                .px = PX(p[i].ms), .py = PY(p[i].psnr), .w = ceil(te.x_advance) + 2, .h = 13};
+        }
     for (int i = 0; i < n; i++) {
         if (!isfinite(p[i].ms) || !isfinite(p[i].psnr))
             continue;
         const double *c = colours[factor_index(p[i].factor)];
-        double x = PX(p[i].ms), y = PY(p[i].psnr);
         cairo_set_source_rgb(cr, c[0], c[1], c[2]);
-        cairo_arc(cr, x, y, p[i].on_front ? 6 : 4, 0, 2 * PI);
+        cairo_arc(cr, PX(p[i].ms), PY(p[i].psnr), p[i].on_front ? 6 : 4, 0, 2 * PI);
         cairo_fill(cr);
-        cairo_move_to(cr, x + 7, y - 5);
-        cairo_show_text(cr, p[i].label);
     }
+    const app_label_box area = {L + 1, T + 1, W - L - R - 2, H - T - B - 2};
+    app_labels_place(labels, nl, 6.0, &area);
+    for (int k = 0; k < nl; k++) {
+        const app_label *l = &labels[k];
+        if (!l->placed)
+            continue;
+        const double *c = colours[factor_index(p[order[k]].factor)];
+        if (l->moved) {
+            /* From the point to the nearest spot of the label's box. */
+            double qx = fmin(fmax(l->px, l->box.x), l->box.x + l->box.w);
+            double qy = fmin(fmax(l->py, l->box.y), l->box.y + l->box.h);
+            cairo_set_source_rgba(cr, c[0], c[1], c[2], 0.6);
+            cairo_set_line_width(cr, 0.8);
+            cairo_move_to(cr, l->px, l->py);
+            cairo_line_to(cr, qx, qy);
+            cairo_stroke(cr);
+        }
+        cairo_set_source_rgb(cr, c[0] * 0.8, c[1] * 0.8, c[2] * 0.8);
+        cairo_move_to(cr, l->box.x + 1, l->box.y + 10);
+        cairo_show_text(cr, p[order[k]].label);
+    }
+    free(labels);
+    free(order);
     /* legend */
     cairo_set_font_size(cr, 13);
     for (int k = 0; k < FACTORS; k++) {

@@ -98,10 +98,11 @@ ref_result ref_ambient_prepare(ref_scene *s);
 
 /* ---- shadows (ref_shadow.c) --------------------------------------------------------------- */
 
-/* The fraction of each light that reaches point p (shading normal n): 1 everywhere when the
- * scene's shadows are off. */
-void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3], float rotation,
-                           float vis[RD_MAX_LIGHTS], ref_trace_stats *stats);
+/* The fraction of each light that reaches point p (shading normal n, unit geometric normal ng
+ * of the triangle hit, on n's side): 1 everywhere when the scene's shadows are off. */
+void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3],
+                           const float ng[3], float rotation, float vis[RD_MAX_LIGHTS],
+                           ref_trace_stats *stats);
 
 /* ---- camera (ref_camera.c) ---------------------------------------------------------------- */
 

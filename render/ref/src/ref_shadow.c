@@ -2,7 +2,7 @@
  * the GPU compares a tap's distance to the light with the nearest caster in the shadow map
  * (render/shaders/shadow.glsl), this file traces a ray from the same tap toward the light. The
  * taps are the same: a normal offset, then the Vogel disk (rd_shadow_disk_tap) of softness_m
- * in the receiver's tangent plane, as many per sample, turned by a random angle per sample (the
+ * in the receiver's plane, as many per sample, turned by a random angle per sample (the
  * GPU hashes the sample's position, this tracer its random key: the same kernel in
  * expectation); they differ otherwise only by the map's resolution and bias. */
 #include "ref_internal.h"
@@ -64,6 +64,10 @@ static int occluded(const ref_scene *s, const float org[3], const float dir[3], 
     return ray.tfar < 0.0f; /* Embree sets tfar to -inf on a hit */
 }
 
+/* How far shadow-ray origins leave the triangle along its geometric normal, in the scene's ray
+ * epsilons (ref_scene.c: 1e-5 of its diagonal), so 1e-3 of the diagonal: 4 mm in a 4 m room. */
+#define SHADOW_LIFT_EPSILONS 100.0f
+
 /* An orthonormal basis around unit a (Duff et al. 2017), as shadow.glsl builds it. */
 static void basis(const float a[3], float t[3], float b[3])
 {
@@ -100,20 +104,36 @@ static float tap_visible(const ref_scene *s, const rd_light *l, const float q[3]
     return occluded(s, q, d, tfar, stats) ? 0.0f : 1.0f;
 }
 
-void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3], float rotation,
-                           float vis[RD_MAX_LIGHTS], ref_trace_stats *stats)
+void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3],
+                           const float ng[3], float rotation, float vis[RD_MAX_LIGHTS],
+                           ref_trace_stats *stats)
 {
     for (int i = 0; i < RD_MAX_LIGHTS; i++)
         vis[i] = 1.0f;
     if (s->shadows.mode == RD_SHADOWS_OFF)
         return;
     int taps = s->shadows.mode == RD_SHADOWS_SOFT ? s->shadow_taps : 1;
+    /* The taps leave from the plane of the triangle that was hit, lifted off it along its
+     * geometric normal, not from the tangent plane of the interpolated normal 4 ray epsilons
+     * out. On a faceted curved surface (a basin's rim, a seat's torus) the interpolated normal
+     * tilts by up to half a facet's angle from the triangle's, so a tap a few centimetres out
+     * in its tangent plane lies up to softness * sin(tilt), millimetres, below the triangle,
+     * inside the solid, and its ray meets the neighbouring facets; and a receiver beside a part
+     * a millimetre or two proud of it (a wall round a mirror, a basin's rim round its bowl)
+     * has taps under that part. Both are shadow acne: speckle and bands the GPU never shows,
+     * because its lookups sit a texel off the surface and compare with a bias of 1.5 to 6
+     * texels (shadow.glsl), 2 to 4 mm for a 1024-texel map a metre or two from its light. The
+     * lift is of that scale, 1e-3 of the scene's diagonal (SHADOW_LIFT_EPSILONS ray epsilons,
+     * ref_scene.c), and along the geometric normal, the one direction that leaves the
+     * triangle's plane (Wächter and Binder 2019, "A fast and robust method for avoiding
+     * self-intersection", Ray Tracing Gems ch. 6: offset a ray's origin along the geometric,
+     * not the shading, normal). The disk keeps its radius and turn; only its plane follows the
+     * triangle, a few degrees from the GPU's. */
     float t[3], b[3];
-    basis(n, t, b);
-    /* Off the surface along its normal, by a little more than the ray epsilon. */
+    basis(ng, t, b);
     float base[3];
     for (int k = 0; k < 3; k++)
-        base[k] = p[k] + n[k] * 4.0f * s->epsilon;
+        base[k] = p[k] + ng[k] * SHADOW_LIFT_EPSILONS * s->epsilon;
     for (int i = 0; i < s->light_count; i++) {
         const rd_light *l = &s->lights[i];
         float to_light[3];

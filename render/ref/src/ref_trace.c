@@ -232,8 +232,13 @@ static void shade_direct(const ref_scene *s, const surface *sf, const float eye[
     rd_light dimmed[RD_MAX_LIGHTS];
     if (shadowed && s->shadows.mode != RD_SHADOWS_OFF) {
         /* Shadows scale each light's direct terms by the fraction of it that arrives. */
-        float vis[RD_MAX_LIGHTS];
-        ref_shadow_visibility(s, sf->p, sf->n, shadow_turn, vis, stats);
+        /* The triangle's unit normal on the viewer's side, as n is (n where it is degenerate). */
+        float vis[RD_MAX_LIGHTS], ng[3];
+        const float *tri_n = m->tri_normals + 3 * (size_t)sf->prim;
+        float len = sqrtf(ref_dot(tri_n, tri_n));
+        for (int k = 0; k < 3; k++)
+            ng[k] = len > 1e-30f ? (sf->front ? tri_n[k] : -tri_n[k]) / len : sf->n[k];
+        ref_shadow_visibility(s, sf->p, sf->n, ng, shadow_turn, vis, stats);
         for (int i = 0; i < s->light_count; i++) {
             dimmed[i] = s->lights[i];
             for (int k = 0; k < 3; k++) {
