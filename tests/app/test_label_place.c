@@ -89,5 +89,5 @@ int main(void)
     app_labels_place(many, M, r, &small);
     int placed = check_placement(many, M, r, &small);
     CHECK(placed > 10 && placed < M);
-    return tu_result("label_place");
+    return check_report("label_place");
 }
