@@ -10,6 +10,7 @@ tessera=$1
 out=$2
 check=$3
 demo=$4
+. "$(dirname "$0")/session_lib.sh"
 rm -rf "$out"
 mkdir -p "$out"
 cp "$demo" "$out/demo.json" # a copy: no autosave beside the shipped demo
@@ -32,13 +33,8 @@ undo
 save $out/wall-undone.json
 quit
 SCRIPT
-xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open "$out/demo.json" --size 800x450 \
-    --script "$out/drag.txt" --frame-log "$out/frames.csv" 2>"$out/stderr.txt" || {
-    cat "$out/stderr.txt"
-    echo "FAIL: the session did not exit 0"
-    exit 1
-}
-cat "$out/stderr.txt"
+session_window "$out/demo.json" 800x450 "$out/drag.txt" "$out/stderr.txt" \
+    --frame-log "$out/frames.csv"
 # Each step changed the picture (the basin moved, then came back).
 "$check" "$out/before.png" "$out/moved.png" "$out/undone.png"
 # One move edit, snapped to the wall; the saved basin is where it was let go, the undone one

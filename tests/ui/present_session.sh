@@ -11,6 +11,7 @@ tessera=$1
 out=$2
 check=$3
 demo=$4
+. "$(dirname "$0")/session_lib.sh"
 rm -rf "$out"
 mkdir -p "$out"
 cp "$demo" "$out/demo.json" # a copy: no autosave beside the shipped demo
@@ -33,16 +34,8 @@ wait 2
 screenshot $out/after.png
 quit
 SCRIPT
-xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open "$out/demo.json" --size 256x144 \
-    --script "$out/present.txt" 2>"$out/stderr.txt" || {
-    cat "$out/stderr.txt"
-    echo "FAIL: the session did not exit 0"
-    exit 1
-}
-cat "$out/stderr.txt"
-for shot in basin present print-shot after; do
-    test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
-done
+session_window "$out/demo.json" 256x144 "$out/present.txt" "$out/stderr.txt"
+session_shots basin present print-shot after
 # The print screenshot is twice the window's size.
 grep -q 'print-quality screenshot .*print-shot.png (512x288)' "$out/stderr.txt" ||
     { echo "FAIL: the print screenshot is not 512x288"; exit 1; }

@@ -10,6 +10,7 @@ tessera=$1
 out=$2
 check=$3
 demo=$4
+. "$(dirname "$0")/session_lib.sh"
 rm -rf "$out"
 mkdir -p "$out"
 mat='"Cerana CE411001 BK"'
@@ -40,8 +41,7 @@ screenshot $out/reflect-$size.png
 save $out/saved-$size.json
 quit
 SCRIPT
-    xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open "$out/demo-$size.json" --size "$size" \
-        --script "$out/probe-$size.txt"
+    session_window "$out/demo-$size.json" "$size" "$out/probe-$size.txt" "$out/stderr-$size.txt"
     "$check" "$out/probe-$size.png"
     "$check" "$out/reflect-$size.png"
     # The material's block in the saved file (two tabs of indentation, cJSON's layout).

@@ -12,6 +12,7 @@ tessera=$1
 out=$2
 check=$3
 golden=$4
+. "$(dirname "$0")/session_lib.sh"
 rm -rf "$out"
 mkdir -p "$out"
 # The shipped demo as `tessera open` alone would open it, but a copy: the session edits it, and
@@ -66,11 +67,9 @@ screenshot $out/elevation.png
 save $out/saved-tiles.json
 quit
 SCRIPT
-xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open "$out/demo.json" --size 800x450 --script "$out/session.txt" \
+session_window "$out/demo.json" 800x450 "$out/session.txt" "$out/stderr.txt" \
     --frame-log "$out/frames.csv"
-for shot in open orbit walk plan placed dragged tiled draft; do
-    test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
-done
+session_shots open orbit walk plan placed dragged tiled draft
 # Each screenshot shows a room or a plan, and each action changed the picture.
 "$check" "$out/open.png" "$out/orbit.png" "$out/walk.png" "$out/plan.png" "$out/placed.png" \
     "$out/dragged.png" "$out/tiled.png" "$out/draft.png"

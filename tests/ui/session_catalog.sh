@@ -10,6 +10,7 @@ tessera=$1
 out=$2
 check=$3
 src=$4
+. "$(dirname "$0")/session_lib.sh"
 rm -rf "$out"
 mkdir -p "$out"
 # A copy: the session edits it, and an autosave must not land beside the shipped demo.
@@ -53,16 +54,8 @@ wait 1
 screenshot $out/reopened.png
 quit
 SCRIPT
-xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open "$out/demo.json" \
-    --size 1280x720 --script "$out/session.txt" 2>"$out/stderr.txt" || {
-    cat "$out/stderr.txt"
-    echo "FAIL: the session did not exit 0"
-    exit 1
-}
-cat "$out/stderr.txt"
-for shot in browser dragging dropped new reopened; do
-    test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
-done
+session_window "$out/demo.json" 1280x720 "$out/session.txt" "$out/stderr.txt"
+session_shots browser dragging dropped new reopened
 # Each screenshot shows a room or a plan, and each step changed the picture.
 "$check" "$out/browser.png" "$out/dragging.png" "$out/dropped.png" "$out/new.png" \
     "$out/reopened.png"

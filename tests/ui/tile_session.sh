@@ -12,6 +12,7 @@ tessera=$1
 out=$2
 check=$3
 demo=$4
+. "$(dirname "$0")/session_lib.sh"
 rm -rf "$out"
 mkdir -p "$out"
 # A copy, so no autosave of the shipped demo (another session's) is offered, and ours stays here.
@@ -60,16 +61,8 @@ wait 3
 screenshot $out/room-diagonal.png
 quit
 SCRIPT
-xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open "$out/demo.json" --size 1280x720 \
-    --script "$out/tiles.txt" 2>"$out/log.txt" || {
-    cat "$out/log.txt"
-    echo "FAIL: the tile session did not finish"
-    exit 1
-}
-cat "$out/log.txt"
-for shot in elevation changed clicked border floor room room-diagonal; do
-    test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
-done
+session_window "$out/demo.json" 1280x720 "$out/tiles.txt" "$out/log.txt"
+session_shots elevation changed clicked border floor room room-diagonal
 # Each screenshot shows a drawing, and each change changed the picture.
 "$check" "$out/elevation.png" "$out/changed.png" "$out/clicked.png" "$out/border.png" \
     "$out/floor.png"

@@ -1,0 +1,23 @@
+# Sourced by the Xvfb session scripts after they set $tessera and $out.
+
+# session_window PROJECT SIZE SCRIPT LOG [MORE OPTIONS]: the planner window on PROJECT (empty:
+# none) under Xvfb, driven by SCRIPT, stderr into LOG; the test fails unless it exits 0.
+session_window() {
+    project=$1 size=$2 script=$3 log=$4
+    shift 4
+    # shellcheck disable=SC2086 # an empty project is no argument
+    xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open $project --size "$size" \
+        --script "$script" "$@" 2>"$log" || {
+        cat "$log"
+        echo "FAIL: the session $script did not exit 0"
+        exit 1
+    }
+    cat "$log"
+}
+
+# session_shots NAME...: each screenshot $out/NAME.png was written.
+session_shots() {
+    for shot in "$@"; do
+        test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
+    done
+}
