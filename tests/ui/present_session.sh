@@ -39,6 +39,8 @@ session_shots basin present print-shot after
 # The print screenshot is twice the window's size.
 grep -q 'print-quality screenshot .*print-shot.png (512x288)' "$out/stderr.txt" ||
     { echo "FAIL: the print screenshot is not 512x288"; exit 1; }
-# Each screenshot shows the room, and each step changed the picture.
-"$check" "$out/basin.png" "$out/present.png" "$out/print-shot.png" "$out/after.png"
+# Each screenshot shows the room, and each step changed the picture; the print screenshot,
+# at another size, is checked on its own (a difference across sizes would prove nothing).
+"$check" "$out/basin.png" "$out/present.png" "$out/after.png"
+"$check" "$out/print-shot.png"
 echo "present session: ok"
