@@ -142,16 +142,20 @@ static void test_wc_beside_basin(void)
     print_findings("WC 100 mm beside the basin", &f);
     const app_finding *d = find(&f, APP_FINDING_DISTANCE, basin, wc);
     CHECK(d != NULL);
-    CHECK(d && d->severity == APP_SEVERITY_WARNING);
+    /* DOMAIN.md "Clearances": the 200 mm are a rule, so a shorter distance is an error. */
+    CHECK(d && d->severity == APP_SEVERITY_ERROR);
+    CHECK(app_findings_errors(&f) >= 1);
     CHECK(d && tu_contains(d->message, "100 mm apart"));
     CHECK(d && tu_contains(d->message, "200 mm"));
     CHECK(d && fabs(d->position_mm[0] - 1350) < 1 && d->position_mm[1] < 551);
     CHECK(count_kind(&f, APP_FINDING_COLLISION) == 0);
     app_findings_free(&f);
-    /* 250 mm apart: no distance finding any more. */
+    /* 250 mm apart: no distance finding any more, and no error at all. */
     p.objects[wc].position_mm[0] = 1730;
     f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC 250 mm beside the basin", &f);
     CHECK(find(&f, APP_FINDING_DISTANCE, basin, wc) == NULL);
+    CHECK(app_findings_errors(&f) == 0);
     app_findings_free(&f);
     app_project_free_all(&p);
 }
@@ -285,6 +289,7 @@ static void test_side_wall_and_barrier_free(void)
     print_findings("WC 100 mm from the side wall", &f);
     const app_finding *d = find(&f, APP_FINDING_DISTANCE, wc, -1);
     CHECK(d && tu_contains(d->message, "left side"));
+    CHECK(d && d->severity == APP_SEVERITY_ERROR);
     app_findings_free(&f);
     /* Centred on the wall: fine, and barrier-free (1200 x 1200) fits in a 2500 deep room. */
     p.objects[wc].position_mm[0] = 1500;
