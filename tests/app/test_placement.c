@@ -364,6 +364,61 @@ static void test_primitives_group(void)
     app_project_free_all(&p);
 }
 
+/* DOMAIN.md "Clearances": no furniture may stand in a free area, whatever its product group;
+ * a vanity unit is exempt only from the basin it carries. */
+static void test_vanity_carries_basin_only(void)
+{
+    app_project p;
+    make_room(&p);
+    /* Cerana CE419501: vanity unit 800 x 460 x 520 hung at 160, its top at 680, carrying
+     * Cerana CE410401 (800 x 480 furniture basin) from 680: no finding. */
+    int vanity = add_product(&p, "vanity", "Cerana", "CE419501", 1500, 0, 160, 0);
+    int basin = add_product(&p, "basin", "Cerana", "CE410401", 1500, 0, 680, 0);
+    app_findings f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("basin on its vanity unit", &f);
+    CHECK(f.count == 0);
+    app_findings_free(&f);
+    /* Holmwood HW1522, a tall cabinet 350 x 330 x 1700 of the same product group, 450 mm in
+     * front of the basin (y 930..1260): it stands in the 1100 x 550 free area (y 480..1030),
+     * which cannot slide past it. */
+    int tall = add_product(&p, "tall-cabinet", "Holmwood", "HW1522", 1500, 480 + 450, 0, 0);
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("tall cabinet 450 mm in front of the basin", &f);
+    const app_finding *a = find(&f, APP_FINDING_FREE_AREA, basin, tall);
+    CHECK(a != NULL);
+    CHECK(a && a->severity == APP_SEVERITY_ERROR);
+    CHECK(a && tu_contains(a->message, "100 mm into it"));
+    CHECK(find(&f, APP_FINDING_FREE_AREA, basin, vanity) == NULL);
+    CHECK(find(&f, APP_FINDING_COLLISION, basin, vanity) == NULL);
+    app_findings_free(&f);
+    /* The vanity unit moved out from under the basin, 450 mm in front of it: it no longer
+     * carries it, so it blocks the free area like any cabinet. */
+    p.objects[tall].position_mm[0] = 2700;
+    p.objects[vanity].position_mm[1] = 480 + 450;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("vanity unit in front of the basin", &f);
+    CHECK(find(&f, APP_FINDING_FREE_AREA, basin, vanity) != NULL);
+    app_findings_free(&f);
+    /* Back under the basin, sunk to the floor: it still stands under it (no collision, no
+     * distance, no free-area finding). */
+    p.objects[vanity].position_mm[1] = 0;
+    p.objects[vanity].position_mm[2] = 0;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("vanity unit on the floor under the basin", &f);
+    CHECK(f.count == 0);
+    app_findings_free(&f);
+    /* The tall cabinet under the basin reaches above its rim: it does not carry it, the two
+     * collide. */
+    p.objects[tall].position_mm[0] = 1500;
+    p.objects[tall].position_mm[1] = 0;
+    p.objects[vanity].position_mm[0] = 600;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("tall cabinet under the basin", &f);
+    CHECK(find(&f, APP_FINDING_COLLISION, basin, tall) != NULL);
+    app_findings_free(&f);
+    app_project_free_all(&p);
+}
+
 static int near(double a, double b)
 {
     return fabs(a - b) < 1e-6;
@@ -437,6 +492,7 @@ int main(void)
     test_bath_blocks_basin_area();
     test_walls_prewalls_doors();
     test_side_wall_and_barrier_free();
+    test_vanity_carries_basin_only();
     test_primitives_group();
     test_snapping();
     return check_report("placement");

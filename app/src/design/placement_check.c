@@ -81,11 +81,28 @@ static int takes_room(const app_fixture *f)
     return f->role == APP_ROLE_FIXTURE && f->z1 > FLOOR_COVERING_MM;
 }
 
-/* A vanity unit carries its basin: the two may overlap and touch. */
-static int carries(int a, int b)
+/* A vanity unit carries its basin (the two may overlap and touch) only when it stands under
+ * it: the basin's plan centre lies on the unit and the unit reaches no higher than the
+ * basin's rim. Being a vanity unit is not enough: a tall cabinet of that product group
+ * standing in front of a basin is furniture in its free area (DOMAIN.md "Clearances"). */
+static int carries_basin(const app_fixture *unit, const pl_rect *unit_rect,
+                         const app_fixture *basin)
 {
-    return (a == CAT_CATEGORY_BASINS && b == CAT_CATEGORY_VANITY_UNITS) ||
-           (b == CAT_CATEGORY_BASINS && a == CAT_CATEGORY_VANITY_UNITS);
+    if (unit->category != CAT_CATEGORY_VANITY_UNITS || basin->category != CAT_CATEGORY_BASINS)
+        return 0;
+    double dx = basin->centre[0] - unit_rect->c[0], dy = basin->centre[1] - unit_rect->c[1];
+    double u = dx * unit_rect->ax[0] + dy * unit_rect->ax[1];
+    double v = dx * unit_rect->ay[0] + dy * unit_rect->ay[1];
+    if (fabs(u) > unit_rect->h[0] + PL_TOLERANCE_MM || fabs(v) > unit_rect->h[1] + PL_TOLERANCE_MM)
+        return 0;
+    return unit->z1 <= basin->z1 + PL_TOLERANCE_MM;
+}
+
+/* Whether fixture i and fixture j are a basin and the vanity unit carrying it. */
+static int carries(const check_ctx *c, int i, int j)
+{
+    return carries_basin(&c->fx[i], &c->rects[i], &c->fx[j]) ||
+           carries_basin(&c->fx[j], &c->rects[j], &c->fx[i]);
 }
 
 static const char *category_label(int c)
@@ -160,8 +177,7 @@ static app_result check_collisions(check_ctx *c)
         const pl_rect ra = c->rects[i];
         for (int j = i + 1; j < c->count; j++) {
             const app_fixture *b = &c->fx[j];
-            if (!takes_room(b) || carries(a->category, b->category) ||
-                (!a->has_product && !b->has_product) ||
+            if (!takes_room(b) || carries(c, i, j) || (!a->has_product && !b->has_product) ||
                 apart(c->aabb[i], c->aabb[j], SIDE_DISTANCE_MM))
                 continue;
             const pl_rect rb = c->rects[j];
@@ -333,8 +349,8 @@ static app_result check_free_areas(check_ctx *c)
             return r;
         for (int j = 0; j < c->count; j++) {
             const app_fixture *b = &c->fx[j];
-            if (j == i || !takes_room(b) || b->z0 >= FREE_AREA_HEADROOM_MM ||
-                carries(f->category, b->category) || apart(abox, c->aabb[j], 0))
+            if (j == i || !takes_room(b) || b->z0 >= FREE_AREA_HEADROOM_MM || carries(c, i, j) ||
+                apart(abox, c->aabb[j], 0))
                 continue;
             const pl_rect rb = c->rects[j];
             double pen = pl_rect_penetration(&area, &rb);
