@@ -419,6 +419,53 @@ static void test_vanity_carries_basin_only(void)
     app_project_free_all(&p);
 }
 
+/* DOMAIN.md "Clearances": a free area lies in front of its fixture and may slide sideways to
+ * stay inside the room; only when no sideways position fits is it an error. */
+static void test_free_area_slides(void)
+{
+    app_project p;
+    make_room(&p);
+    /* Cerana CE412901 (360 x 530) 200 mm from the left wall (x 200..560), as the side-distance
+     * rule allows: centred, its 800 x 550 area would reach 20 mm into the wall (x -20..780);
+     * slid 20 mm it fits (x 0..800). */
+    int wc = add_product(&p, "wc", "Cerana", "CE412901", 200 + 180, 0, 60, 0);
+    app_findings f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC 200 mm from the side wall", &f);
+    CHECK(f.count == 0);
+    app_findings_free(&f);
+    /* Barrier-free (1200 x 1200) slides the same way: x 0..1200. */
+    f = run_checks(&p, APP_BARRIER_FREE_ON);
+    print_findings("WC 200 mm from the side wall, barrier-free", &f);
+    CHECK(f.count == 0);
+    app_findings_free(&f);
+    /* A tall cabinet (Holmwood HW1522, 350 wide) in front of the WC at x 800..1150, y 600:
+     * the slid area touches it, which is not overlapping. */
+    int cab = add_product(&p, "tall-cabinet", "Holmwood", "HW1522", 975, 600, 0, 0);
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC area beside a cabinet", &f);
+    CHECK(find(&f, APP_FINDING_FREE_AREA, wc, cab) == NULL);
+    app_findings_free(&f);
+    /* 100 mm further left (x 700..1050): the wall on one side and the cabinet on the other
+     * leave no position for the 800 mm area. */
+    p.objects[cab].position_mm[0] = 875;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC area between wall and cabinet", &f);
+    const app_finding *a = find(&f, APP_FINDING_FREE_AREA, wc, cab);
+    CHECK(a && a->severity == APP_SEVERITY_ERROR);
+    app_findings_free(&f);
+    p.objects[cab].position_mm[0] = 2500;
+    /* A room 760 wide (the WC 200 mm from both walls) has no sideways position for it. */
+    p.plan.corners[1].x = p.plan.corners[2].x = 760;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC in a 760 mm wide room", &f);
+    const app_finding *w = find(&f, APP_FINDING_FREE_AREA, wc, -1);
+    CHECK(w && w->severity == APP_SEVERITY_ERROR);
+    CHECK(w && tu_contains(w->message, "every sideways position"));
+    CHECK(find(&f, APP_FINDING_DISTANCE, wc, -1) == NULL);
+    app_findings_free(&f);
+    app_project_free_all(&p);
+}
+
 static int near(double a, double b)
 {
     return fabs(a - b) < 1e-6;
@@ -493,6 +540,7 @@ int main(void)
     test_walls_prewalls_doors();
     test_side_wall_and_barrier_free();
     test_vanity_carries_basin_only();
+    test_free_area_slides();
     test_primitives_group();
     test_snapping();
     return check_report("placement");

@@ -323,30 +323,158 @@ static app_result check_room(check_ctx *c)
     return APP_OK;
 }
 
+/* The free area of fixture f shifted sideways by s along the fixture's width. */
+static pl_rect free_area_at(const app_fixture *f, double s, double aw, double ad)
+{
+    double fd = 2 * f->half[1];
+    return pl_rect_local(f, s - 0.5 * aw, s + 0.5 * aw, fd, fd + ad);
+}
+
+/* Whether no furniture other than fixture i (and the vanity unit carrying it) stands in the
+ * area. */
+static int area_clear_of_furniture(const check_ctx *c, int i, const pl_rect *area)
+{
+    double abox[4];
+    bounds_of(area, abox);
+    for (int j = 0; j < c->count; j++) {
+        const app_fixture *b = &c->fx[j];
+        if (j == i || !takes_room(b) || b->z0 >= FREE_AREA_HEADROOM_MM || carries(c, i, j) ||
+            apart(abox, c->aabb[j], 0))
+            continue;
+        if (pl_rect_penetration(area, &c->rects[j]) > PL_TOLERANCE_MM)
+            return 0;
+    }
+    return 1;
+}
+
+/* Adds the sideways offsets at which an edge of the area meets the point p (projected on the
+ * fixture's width axis), within [-slide, slide]. */
+static int add_edge_offsets(const pl_rect *fr, const double p[2], double aw, double slide,
+                            double *s, int n)
+{
+    double x = (p[0] - fr->c[0]) * fr->ax[0] + (p[1] - fr->c[1]) * fr->ax[1];
+    double cand[2] = {x + 0.5 * aw, x - 0.5 * aw};
+    for (int k = 0; k < 2; k++)
+        if (fabs(cand[k]) <= slide)
+            s[n++] = cand[k];
+    return n;
+}
+
+static int by_magnitude(const void *a, const void *b)
+{
+    double x = fabs(*(const double *)a), y = fabs(*(const double *)b);
+    return (x > y) - (x < y);
+}
+
+/* DOMAIN.md "Clearances": a free area lies in front of its fixture and may slide sideways to
+ * stay inside the room; it fits when some sideways position is clear of walls, pre-walls and
+ * furniture (free areas may overlap each other, furniture may not stand in one). The area
+ * keeps covering the fixture's front (or, narrower than the fixture, stays within it), so it
+ * slides at most half the difference of the two widths. The positions tried are the centred
+ * one, the two ends and those where an area edge meets a corner of a wall, pre-wall or
+ * fixture nearby: where walls and fixtures stand square to the fixture (the common case) the
+ * ends of every clear stretch are among them; past a slanted one a narrow fit may be missed
+ * and reported as blocked, never the other way round. They are tried from the
+ * least shift outwards; *s receives the first clear one, or, when none is, the least shifted
+ * inside the room (*room_ok = 1) or the centred one (*room_ok = 0). Returns 1 when a clear
+ * position exists, 0 when none does, -1 when out of memory. */
+static int place_free_area(const check_ctx *c, int i, double aw, double ad, double *s, int *room_ok)
+{
+    const app_fixture *f = &c->fx[i];
+    const pl_rect fr = c->rects[i];
+    double slide = 0.5 * fabs(aw - 2 * f->half[0]);
+    const app_room_plan *plan = &c->p->plan;
+    int prewalls = plan->corner_count >= 3 ? plan->prewall_count : 0;
+    size_t cap = 3 + 2 * (size_t)c->poly_n + 8 * (size_t)prewalls + 8 * (size_t)c->count;
+    double *cand = malloc(cap * sizeof *cand);
+    if (!cand)
+        return -1;
+    int n = 0;
+    cand[n++] = 0;
+    cand[n++] = -slide;
+    cand[n++] = slide;
+    if (slide > 0) {
+        /* The sweep of every position: only what reaches into it can block one. */
+        pl_rect sweep = free_area_at(f, 0, aw + 2 * slide, ad);
+        double sbox[4];
+        bounds_of(&sweep, sbox);
+        for (int k = 0; k < c->poly_n; k++) {
+            double p[2] = {c->poly[k].x, c->poly[k].y};
+            n = add_edge_offsets(&fr, p, aw, slide, cand, n);
+        }
+        for (int k = 0; k < prewalls; k++) {
+            pl_rect pw = pl_prewall_rect(plan, k);
+            double pc[4][2];
+            pl_rect_corners(&pw, pc);
+            for (int q = 0; q < 4; q++)
+                n = add_edge_offsets(&fr, pc[q], aw, slide, cand, n);
+        }
+        for (int j = 0; j < c->count; j++) {
+            if (j == i || apart(sbox, c->aabb[j], 0))
+                continue;
+            double pc[4][2];
+            pl_rect_corners(&c->rects[j], pc);
+            for (int q = 0; q < 4; q++)
+                n = add_edge_offsets(&fr, pc[q], aw, slide, cand, n);
+        }
+    }
+    qsort(cand, (size_t)n, sizeof *cand, by_magnitude);
+    int found = 0, have_room = 0;
+    double room_s = 0;
+    for (int k = 0; k < n && !found; k++) {
+        pl_rect area = free_area_at(f, cand[k], aw, ad);
+        char what[160];
+        double where[2];
+        if (rect_blocked_by_room(c, &area, 0, FREE_AREA_HEADROOM_MM, what, sizeof what, where))
+            continue;
+        if (!have_room) {
+            have_room = 1;
+            room_s = cand[k];
+        }
+        if (area_clear_of_furniture(c, i, &area)) {
+            found = 1;
+            room_s = cand[k];
+        }
+    }
+    free(cand);
+    *s = have_room ? room_s : 0;
+    *room_ok = have_room;
+    return found;
+}
+
 static app_result check_free_areas(check_ctx *c)
 {
     for (int i = 0; i < c->count; i++) {
         const app_fixture *f = &c->fx[i];
-        double aw, ad;
+        double aw, ad, s;
+        int room_ok;
         if (f->role != APP_ROLE_FIXTURE || !app_free_area_size(f, c->bf, &aw, &ad))
             continue;
-        double fd = 2 * f->half[1];
-        pl_rect area = pl_rect_local(f, -0.5 * aw, 0.5 * aw, fd, fd + ad);
-        double abox[4];
-        bounds_of(&area, abox);
+        int fits = place_free_area(c, i, aw, ad, &s, &room_ok);
+        if (fits < 0)
+            return APP_ERR_OUT_OF_MEMORY;
+        if (fits)
+            continue;
+        pl_rect area = free_area_at(f, s, aw, ad);
         app_finding_kind kind =
             c->bf != APP_BARRIER_FREE_OFF ? APP_FINDING_BARRIER_FREE : APP_FINDING_FREE_AREA;
         const char *source = c->bf == APP_BARRIER_FREE_OFF ? "VDI 6000 sheet 1" : "DIN 18040-2";
         char what[160];
         double where[2];
         app_result r = APP_OK;
-        if (rect_blocked_by_room(c, &area, 0, FREE_AREA_HEADROOM_MM, what, sizeof what, where))
+        if (!room_ok) {
+            rect_blocked_by_room(c, &area, 0, FREE_AREA_HEADROOM_MM, what, sizeof what, where);
             r = pl_add_finding(c->out, kind, APP_SEVERITY_ERROR, f->object, -1, where,
                                "the %.0f x %.0f mm free area in front of %s \"%s\" is blocked by "
-                               "%s (%s)",
+                               "%s at every sideways position (%s)",
                                aw, ad, category_label(f->category), f->name, what, source);
-        if (r != APP_OK)
-            return r;
+            if (r != APP_OK)
+                return r;
+            continue;
+        }
+        /* Inside the room but not clear: name the furniture in the least shifted position. */
+        double abox[4];
+        bounds_of(&area, abox);
         for (int j = 0; j < c->count; j++) {
             const app_fixture *b = &c->fx[j];
             if (j == i || !takes_room(b) || b->z0 >= FREE_AREA_HEADROOM_MM || carries(c, i, j) ||
