@@ -142,16 +142,20 @@ static void test_wc_beside_basin(void)
     print_findings("WC 100 mm beside the basin", &f);
     const app_finding *d = find(&f, APP_FINDING_DISTANCE, basin, wc);
     CHECK(d != NULL);
-    CHECK(d && d->severity == APP_SEVERITY_WARNING);
+    /* DOMAIN.md "Clearances": the 200 mm are a rule, so a shorter distance is an error. */
+    CHECK(d && d->severity == APP_SEVERITY_ERROR);
+    CHECK(app_findings_errors(&f) >= 1);
     CHECK(d && tu_contains(d->message, "100 mm apart"));
     CHECK(d && tu_contains(d->message, "200 mm"));
     CHECK(d && fabs(d->position_mm[0] - 1350) < 1 && d->position_mm[1] < 551);
     CHECK(count_kind(&f, APP_FINDING_COLLISION) == 0);
     app_findings_free(&f);
-    /* 250 mm apart: no distance finding any more. */
+    /* 250 mm apart: no distance finding any more, and no error at all. */
     p.objects[wc].position_mm[0] = 1730;
     f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC 250 mm beside the basin", &f);
     CHECK(find(&f, APP_FINDING_DISTANCE, basin, wc) == NULL);
+    CHECK(app_findings_errors(&f) == 0);
     app_findings_free(&f);
     app_project_free_all(&p);
 }
@@ -285,6 +289,7 @@ static void test_side_wall_and_barrier_free(void)
     print_findings("WC 100 mm from the side wall", &f);
     const app_finding *d = find(&f, APP_FINDING_DISTANCE, wc, -1);
     CHECK(d && tu_contains(d->message, "left side"));
+    CHECK(d && d->severity == APP_SEVERITY_ERROR);
     app_findings_free(&f);
     /* Centred on the wall: fine, and barrier-free (1200 x 1200) fits in a 2500 deep room. */
     p.objects[wc].position_mm[0] = 1500;
@@ -356,6 +361,108 @@ static void test_primitives_group(void)
     CHECK(app_placement_fixtures(&p, ptc_lookup, (void *)csv, &fx, &n, err, sizeof err) ==
           APP_ERR_NOT_FOUND);
     CHECK(tu_contains(err, "ghost") && tu_contains(err, "X-1"));
+    app_project_free_all(&p);
+}
+
+/* DOMAIN.md "Clearances": no furniture may stand in a free area, whatever its product group;
+ * a vanity unit is exempt only from the basin it carries. */
+static void test_vanity_carries_basin_only(void)
+{
+    app_project p;
+    make_room(&p);
+    /* Cerana CE419501: vanity unit 800 x 460 x 520 hung at 160, its top at 680, carrying
+     * Cerana CE410401 (800 x 480 furniture basin) from 680: no finding. */
+    int vanity = add_product(&p, "vanity", "Cerana", "CE419501", 1500, 0, 160, 0);
+    int basin = add_product(&p, "basin", "Cerana", "CE410401", 1500, 0, 680, 0);
+    app_findings f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("basin on its vanity unit", &f);
+    CHECK(f.count == 0);
+    app_findings_free(&f);
+    /* Holmwood HW1522, a tall cabinet 350 x 330 x 1700 of the same product group, 450 mm in
+     * front of the basin (y 930..1260): it stands in the 1100 x 550 free area (y 480..1030),
+     * which cannot slide past it. */
+    int tall = add_product(&p, "tall-cabinet", "Holmwood", "HW1522", 1500, 480 + 450, 0, 0);
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("tall cabinet 450 mm in front of the basin", &f);
+    const app_finding *a = find(&f, APP_FINDING_FREE_AREA, basin, tall);
+    CHECK(a != NULL);
+    CHECK(a && a->severity == APP_SEVERITY_ERROR);
+    CHECK(a && tu_contains(a->message, "100 mm into it"));
+    CHECK(find(&f, APP_FINDING_FREE_AREA, basin, vanity) == NULL);
+    CHECK(find(&f, APP_FINDING_COLLISION, basin, vanity) == NULL);
+    app_findings_free(&f);
+    /* The vanity unit moved out from under the basin, 450 mm in front of it: it no longer
+     * carries it, so it blocks the free area like any cabinet. */
+    p.objects[tall].position_mm[0] = 2700;
+    p.objects[vanity].position_mm[1] = 480 + 450;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("vanity unit in front of the basin", &f);
+    CHECK(find(&f, APP_FINDING_FREE_AREA, basin, vanity) != NULL);
+    app_findings_free(&f);
+    /* Back under the basin, sunk to the floor: it still stands under it (no collision, no
+     * distance, no free-area finding). */
+    p.objects[vanity].position_mm[1] = 0;
+    p.objects[vanity].position_mm[2] = 0;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("vanity unit on the floor under the basin", &f);
+    CHECK(f.count == 0);
+    app_findings_free(&f);
+    /* The tall cabinet under the basin reaches above its rim: it does not carry it, the two
+     * collide. */
+    p.objects[tall].position_mm[0] = 1500;
+    p.objects[tall].position_mm[1] = 0;
+    p.objects[vanity].position_mm[0] = 600;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("tall cabinet under the basin", &f);
+    CHECK(find(&f, APP_FINDING_COLLISION, basin, tall) != NULL);
+    app_findings_free(&f);
+    app_project_free_all(&p);
+}
+
+/* DOMAIN.md "Clearances": a free area lies in front of its fixture and may slide sideways to
+ * stay inside the room; only when no sideways position fits is it an error. */
+static void test_free_area_slides(void)
+{
+    app_project p;
+    make_room(&p);
+    /* Cerana CE412901 (360 x 530) 200 mm from the left wall (x 200..560), as the side-distance
+     * rule allows: centred, its 800 x 550 area would reach 20 mm into the wall (x -20..780);
+     * slid 20 mm it fits (x 0..800). */
+    int wc = add_product(&p, "wc", "Cerana", "CE412901", 200 + 180, 0, 60, 0);
+    app_findings f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC 200 mm from the side wall", &f);
+    CHECK(f.count == 0);
+    app_findings_free(&f);
+    /* Barrier-free (1200 x 1200) slides the same way: x 0..1200. */
+    f = run_checks(&p, APP_BARRIER_FREE_ON);
+    print_findings("WC 200 mm from the side wall, barrier-free", &f);
+    CHECK(f.count == 0);
+    app_findings_free(&f);
+    /* A tall cabinet (Holmwood HW1522, 350 wide) in front of the WC at x 800..1150, y 600:
+     * the slid area touches it, which is not overlapping. */
+    int cab = add_product(&p, "tall-cabinet", "Holmwood", "HW1522", 975, 600, 0, 0);
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC area beside a cabinet", &f);
+    CHECK(find(&f, APP_FINDING_FREE_AREA, wc, cab) == NULL);
+    app_findings_free(&f);
+    /* 100 mm further left (x 700..1050): the wall on one side and the cabinet on the other
+     * leave no position for the 800 mm area. */
+    p.objects[cab].position_mm[0] = 875;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC area between wall and cabinet", &f);
+    const app_finding *a = find(&f, APP_FINDING_FREE_AREA, wc, cab);
+    CHECK(a && a->severity == APP_SEVERITY_ERROR);
+    app_findings_free(&f);
+    p.objects[cab].position_mm[0] = 2500;
+    /* A room 760 wide (the WC 200 mm from both walls) has no sideways position for it. */
+    p.plan.corners[1].x = p.plan.corners[2].x = 760;
+    f = run_checks(&p, APP_BARRIER_FREE_OFF);
+    print_findings("WC in a 760 mm wide room", &f);
+    const app_finding *w = find(&f, APP_FINDING_FREE_AREA, wc, -1);
+    CHECK(w && w->severity == APP_SEVERITY_ERROR);
+    CHECK(w && tu_contains(w->message, "every sideways position"));
+    CHECK(find(&f, APP_FINDING_DISTANCE, wc, -1) == NULL);
+    app_findings_free(&f);
     app_project_free_all(&p);
 }
 
@@ -432,6 +539,8 @@ int main(void)
     test_bath_blocks_basin_area();
     test_walls_prewalls_doors();
     test_side_wall_and_barrier_free();
+    test_vanity_carries_basin_only();
+    test_free_area_slides();
     test_primitives_group();
     test_snapping();
     return check_report("placement");

@@ -11,7 +11,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* DOMAIN.md "Clearances": at least 200 mm between objects and to side walls. */
+/* DOMAIN.md "Clearances": at least 200 mm between objects and to side walls. It is a rule of
+ * the trade, not advice: a shorter distance is an error like a blocked free area. */
 #define SIDE_DISTANCE_MM 200.0
 /* Free areas are for standing and moving: anything reaching below this height blocks them. */
 #define FREE_AREA_HEADROOM_MM 2000.0
@@ -80,11 +81,28 @@ static int takes_room(const app_fixture *f)
     return f->role == APP_ROLE_FIXTURE && f->z1 > FLOOR_COVERING_MM;
 }
 
-/* A vanity unit carries its basin: the two may overlap and touch. */
-static int carries(int a, int b)
+/* A vanity unit carries its basin (the two may overlap and touch) only when it stands under
+ * it: the basin's plan centre lies on the unit and the unit reaches no higher than the
+ * basin's rim. Being a vanity unit is not enough: a tall cabinet of that product group
+ * standing in front of a basin is furniture in its free area (DOMAIN.md "Clearances"). */
+static int carries_basin(const app_fixture *unit, const pl_rect *unit_rect,
+                         const app_fixture *basin)
 {
-    return (a == CAT_CATEGORY_BASINS && b == CAT_CATEGORY_VANITY_UNITS) ||
-           (b == CAT_CATEGORY_BASINS && a == CAT_CATEGORY_VANITY_UNITS);
+    if (unit->category != CAT_CATEGORY_VANITY_UNITS || basin->category != CAT_CATEGORY_BASINS)
+        return 0;
+    double dx = basin->centre[0] - unit_rect->c[0], dy = basin->centre[1] - unit_rect->c[1];
+    double u = dx * unit_rect->ax[0] + dy * unit_rect->ax[1];
+    double v = dx * unit_rect->ay[0] + dy * unit_rect->ay[1];
+    if (fabs(u) > unit_rect->h[0] + PL_TOLERANCE_MM || fabs(v) > unit_rect->h[1] + PL_TOLERANCE_MM)
+        return 0;
+    return unit->z1 <= basin->z1 + PL_TOLERANCE_MM;
+}
+
+/* Whether fixture i and fixture j are a basin and the vanity unit carrying it. */
+static int carries(const check_ctx *c, int i, int j)
+{
+    return carries_basin(&c->fx[i], &c->rects[i], &c->fx[j]) ||
+           carries_basin(&c->fx[j], &c->rects[j], &c->fx[i]);
 }
 
 static const char *category_label(int c)
@@ -159,8 +177,7 @@ static app_result check_collisions(check_ctx *c)
         const pl_rect ra = c->rects[i];
         for (int j = i + 1; j < c->count; j++) {
             const app_fixture *b = &c->fx[j];
-            if (!takes_room(b) || carries(a->category, b->category) ||
-                (!a->has_product && !b->has_product) ||
+            if (!takes_room(b) || carries(c, i, j) || (!a->has_product && !b->has_product) ||
                 apart(c->aabb[i], c->aabb[j], SIDE_DISTANCE_MM))
                 continue;
             const pl_rect rb = c->rects[j];
@@ -186,7 +203,7 @@ static app_result check_collisions(check_ctx *c)
             double dist = pl_rect_distance(&ra, &rb, at);
             if (dist < SIDE_DISTANCE_MM - PL_TOLERANCE_MM) {
                 app_result r = pl_add_finding(
-                    c->out, APP_FINDING_DISTANCE, APP_SEVERITY_WARNING, a->object, b->object, at,
+                    c->out, APP_FINDING_DISTANCE, APP_SEVERITY_ERROR, a->object, b->object, at,
                     "\"%s\" and \"%s\" are %.0f mm apart; at least %.0f mm between objects "
                     "(VDI 6000 sheet 1)",
                     a->name, b->name, dist, SIDE_DISTANCE_MM);
@@ -306,34 +323,162 @@ static app_result check_room(check_ctx *c)
     return APP_OK;
 }
 
+/* The free area of fixture f shifted sideways by s along the fixture's width. */
+static pl_rect free_area_at(const app_fixture *f, double s, double aw, double ad)
+{
+    double fd = 2 * f->half[1];
+    return pl_rect_local(f, s - 0.5 * aw, s + 0.5 * aw, fd, fd + ad);
+}
+
+/* Whether no furniture other than fixture i (and the vanity unit carrying it) stands in the
+ * area. */
+static int area_clear_of_furniture(const check_ctx *c, int i, const pl_rect *area)
+{
+    double abox[4];
+    bounds_of(area, abox);
+    for (int j = 0; j < c->count; j++) {
+        const app_fixture *b = &c->fx[j];
+        if (j == i || !takes_room(b) || b->z0 >= FREE_AREA_HEADROOM_MM || carries(c, i, j) ||
+            apart(abox, c->aabb[j], 0))
+            continue;
+        if (pl_rect_penetration(area, &c->rects[j]) > PL_TOLERANCE_MM)
+            return 0;
+    }
+    return 1;
+}
+
+/* Adds the sideways offsets at which an edge of the area meets the point p (projected on the
+ * fixture's width axis), within [-slide, slide]. */
+static int add_edge_offsets(const pl_rect *fr, const double p[2], double aw, double slide,
+                            double *s, int n)
+{
+    double x = (p[0] - fr->c[0]) * fr->ax[0] + (p[1] - fr->c[1]) * fr->ax[1];
+    double cand[2] = {x + 0.5 * aw, x - 0.5 * aw};
+    for (int k = 0; k < 2; k++)
+        if (fabs(cand[k]) <= slide)
+            s[n++] = cand[k];
+    return n;
+}
+
+static int by_magnitude(const void *a, const void *b)
+{
+    double x = fabs(*(const double *)a), y = fabs(*(const double *)b);
+    return (x > y) - (x < y);
+}
+
+/* DOMAIN.md "Clearances": a free area lies in front of its fixture and may slide sideways to
+ * stay inside the room; it fits when some sideways position is clear of walls, pre-walls and
+ * furniture (free areas may overlap each other, furniture may not stand in one). The area
+ * keeps covering the fixture's front (or, narrower than the fixture, stays within it), so it
+ * slides at most half the difference of the two widths. The positions tried are the centred
+ * one, the two ends and those where an area edge meets a corner of a wall, pre-wall or
+ * fixture nearby: where walls and fixtures stand square to the fixture (the common case) the
+ * ends of every clear stretch are among them; past a slanted one a narrow fit may be missed
+ * and reported as blocked, never the other way round. They are tried from the
+ * least shift outwards; *s receives the first clear one, or, when none is, the least shifted
+ * inside the room (*room_ok = 1) or the centred one (*room_ok = 0). Returns 1 when a clear
+ * position exists, 0 when none does, -1 when out of memory. */
+static int place_free_area(const check_ctx *c, int i, double aw, double ad, double *s, int *room_ok)
+{
+    const app_fixture *f = &c->fx[i];
+    const pl_rect fr = c->rects[i];
+    double slide = 0.5 * fabs(aw - 2 * f->half[0]);
+    const app_room_plan *plan = &c->p->plan;
+    int prewalls = plan->corner_count >= 3 ? plan->prewall_count : 0;
+    size_t cap = 3 + 2 * (size_t)c->poly_n + 8 * (size_t)prewalls + 8 * (size_t)c->count;
+    double *cand = malloc(cap * sizeof *cand);
+    if (!cand)
+        return -1;
+    int n = 0;
+    cand[n++] = 0;
+    cand[n++] = -slide;
+    cand[n++] = slide;
+    if (slide > 0) {
+        /* The sweep of every position: only what reaches into it can block one. */
+        pl_rect sweep = free_area_at(f, 0, aw + 2 * slide, ad);
+        double sbox[4];
+        bounds_of(&sweep, sbox);
+        for (int k = 0; k < c->poly_n; k++) {
+            double p[2] = {c->poly[k].x, c->poly[k].y};
+            n = add_edge_offsets(&fr, p, aw, slide, cand, n);
+        }
+        for (int k = 0; k < prewalls; k++) {
+            pl_rect pw = pl_prewall_rect(plan, k);
+            double pc[4][2];
+            pl_rect_corners(&pw, pc);
+            for (int q = 0; q < 4; q++)
+                n = add_edge_offsets(&fr, pc[q], aw, slide, cand, n);
+        }
+        for (int j = 0; j < c->count; j++) {
+            if (j == i || apart(sbox, c->aabb[j], 0))
+                continue;
+            double pc[4][2];
+            pl_rect_corners(&c->rects[j], pc);
+            for (int q = 0; q < 4; q++)
+                n = add_edge_offsets(&fr, pc[q], aw, slide, cand, n);
+        }
+    }
+    qsort(cand, (size_t)n, sizeof *cand, by_magnitude);
+    int found = 0, have_room = 0;
+    double room_s = 0;
+    for (int k = 0; k < n && !found; k++) {
+        pl_rect area = free_area_at(f, cand[k], aw, ad);
+        char what[160];
+        double where[2];
+        if (rect_blocked_by_room(c, &area, 0, FREE_AREA_HEADROOM_MM, what, sizeof what, where))
+            continue;
+        if (!have_room) {
+            have_room = 1;
+            room_s = cand[k];
+        }
+        if (area_clear_of_furniture(c, i, &area)) {
+            found = 1;
+            room_s = cand[k];
+        }
+    }
+    free(cand);
+    *s = have_room ? room_s : 0;
+    *room_ok = have_room;
+    return found;
+}
+
 static app_result check_free_areas(check_ctx *c)
 {
     for (int i = 0; i < c->count; i++) {
         const app_fixture *f = &c->fx[i];
-        double aw, ad;
+        double aw, ad, s;
+        int room_ok;
         if (f->role != APP_ROLE_FIXTURE || !app_free_area_size(f, c->bf, &aw, &ad))
             continue;
-        double fd = 2 * f->half[1];
-        pl_rect area = pl_rect_local(f, -0.5 * aw, 0.5 * aw, fd, fd + ad);
-        double abox[4];
-        bounds_of(&area, abox);
+        int fits = place_free_area(c, i, aw, ad, &s, &room_ok);
+        if (fits < 0)
+            return APP_ERR_OUT_OF_MEMORY;
+        if (fits)
+            continue;
+        pl_rect area = free_area_at(f, s, aw, ad);
         app_finding_kind kind =
             c->bf != APP_BARRIER_FREE_OFF ? APP_FINDING_BARRIER_FREE : APP_FINDING_FREE_AREA;
         const char *source = c->bf == APP_BARRIER_FREE_OFF ? "VDI 6000 sheet 1" : "DIN 18040-2";
         char what[160];
         double where[2];
         app_result r = APP_OK;
-        if (rect_blocked_by_room(c, &area, 0, FREE_AREA_HEADROOM_MM, what, sizeof what, where))
+        if (!room_ok) {
+            rect_blocked_by_room(c, &area, 0, FREE_AREA_HEADROOM_MM, what, sizeof what, where);
             r = pl_add_finding(c->out, kind, APP_SEVERITY_ERROR, f->object, -1, where,
                                "the %.0f x %.0f mm free area in front of %s \"%s\" is blocked by "
-                               "%s (%s)",
+                               "%s at every sideways position (%s)",
                                aw, ad, category_label(f->category), f->name, what, source);
-        if (r != APP_OK)
-            return r;
+            if (r != APP_OK)
+                return r;
+            continue;
+        }
+        /* Inside the room but not clear: name the furniture in the least shifted position. */
+        double abox[4];
+        bounds_of(&area, abox);
         for (int j = 0; j < c->count; j++) {
             const app_fixture *b = &c->fx[j];
-            if (j == i || !takes_room(b) || b->z0 >= FREE_AREA_HEADROOM_MM ||
-                carries(f->category, b->category) || apart(abox, c->aabb[j], 0))
+            if (j == i || !takes_room(b) || b->z0 >= FREE_AREA_HEADROOM_MM || carries(c, i, j) ||
+                apart(abox, c->aabb[j], 0))
                 continue;
             const pl_rect rb = c->rects[j];
             double pen = pl_rect_penetration(&area, &rb);
@@ -393,7 +538,7 @@ static app_result check_side_walls(check_ctx *c)
             if (!rect_blocked_by_room(c, &s, f->z0, f->z1, what, sizeof what, where))
                 continue;
             app_result r = pl_add_finding(
-                c->out, APP_FINDING_DISTANCE, APP_SEVERITY_WARNING, f->object, -1, where,
+                c->out, APP_FINDING_DISTANCE, APP_SEVERITY_ERROR, f->object, -1, where,
                 "\"%s\" is less than %.0f mm from %s on its %s side "
                 "(VDI 6000 sheet 1)",
                 f->name, SIDE_DISTANCE_MM, what, side < 0 ? "left" : "right");

@@ -154,8 +154,10 @@ app_result app_placement_check(const app_project *p, const app_fixture *fx, int 
                                size_t err_size);
 
 /* The free area in front of a fixture (DOMAIN.md "Clearances"), in the fixture's local frame
- * x in [-w/2, w/2], y from the fixture's front edge to front + d. Returns 0 when the fixture
- * has none (a mirror, a primitive). */
+ * x in [-w/2, w/2], y from the fixture's front edge to front + d, when centred on it. The
+ * checks slide it sideways (by at most half the difference of the area's and the fixture's
+ * widths) to keep it inside the room and clear of furniture. Returns 0 when the fixture has
+ * none (a mirror, a primitive). */
 int app_free_area_size(const app_fixture *f, app_barrier_free bf, double *w, double *d);
 
 /* ---- snapping ---------------------------------------------------------------------------- */
