@@ -471,6 +471,58 @@ static int near(double a, double b)
     return fabs(a - b) < 1e-6;
 }
 
+/* The free areas the drawings show are the ones the checks place (app_free_areas). */
+static void test_free_areas_as_placed(void)
+{
+    app_project p;
+    make_room(&p);
+    /* The WC of test_free_area_slides 200 mm from the left wall: its 800 x 550 area slides
+     * 20 mm right (x 0..800) to stay inside the room; a second WC centred on the wall keeps
+     * its area centred (x 1100..1900). Both stand with their backs on wall 0 and are 530 deep,
+     * so the areas run from y 530 to 1080. */
+    int slid = add_product(&p, "wc-side", "Cerana", "CE412901", 200 + 180, 0, 60, 0);
+    int centred = add_product(&p, "wc-centre", "Cerana", "CE412901", 1500, 0, 60, 0);
+    int mirror = add_product(&p, "mirror", "Vitrelux", "VX20051", 1500, 0, 1100, 0);
+    app_fixture *fx = NULL;
+    int n = 0;
+    char err[256] = "";
+    CHECK_MSG(app_placement_fixtures(&p, ptc_lookup, (void *)csv, &fx, &n, err, sizeof err) ==
+                  APP_OK,
+              "%s", err);
+    app_free_area *areas = calloc((size_t)(n > 0 ? n : 1), sizeof *areas);
+    CHECK_MSG(app_free_areas(&p, fx, n, APP_BARRIER_FREE_OFF, areas, err, sizeof err) == APP_OK,
+              "%s", err);
+    for (int i = 0; i < n; i++) {
+        const app_free_area *a = &areas[i];
+        if (fx[i].object == mirror) {
+            CHECK(!a->has_area);
+            continue;
+        }
+        CHECK(a->has_area && a->clear);
+        CHECK(near(a->width_mm, 800) && near(a->depth_mm, 550));
+        double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+        for (int k = 0; k < 4; k++) {
+            x0 = fmin(x0, a->corners[k][0]);
+            x1 = fmax(x1, a->corners[k][0]);
+            y0 = fmin(y0, a->corners[k][1]);
+            y1 = fmax(y1, a->corners[k][1]);
+        }
+        printf("free area of %s: x %.1f..%.1f, y %.1f..%.1f, shift %.1f\n", fx[i].name, x0, x1, y0,
+               y1, a->shift_mm);
+        CHECK(near(y0, 530) && near(y1, 1080));
+        if (fx[i].object == slid) {
+            /* Every corner inside the 3000 x 2500 room. */
+            CHECK(x0 >= -1e-6 && x1 <= 3000 + 1e-6 && y0 >= -1e-6 && y1 <= 2500 + 1e-6);
+            CHECK(near(a->shift_mm, 20) && near(x0, 0) && near(x1, 800));
+        } else if (fx[i].object == centred) {
+            CHECK(near(a->shift_mm, 0) && near(x0, 1100) && near(x1, 1900));
+        }
+    }
+    free(areas);
+    free(fx);
+    app_project_free_all(&p);
+}
+
 static void test_snapping(void)
 {
     app_project p;
@@ -543,5 +595,6 @@ int main(void)
     test_free_area_slides();
     test_primitives_group();
     test_snapping();
+    test_free_areas_as_placed();
     return check_report("placement");
 }

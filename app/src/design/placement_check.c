@@ -612,41 +612,61 @@ static app_result check_barrier_free_doors(check_ctx *c)
     return APP_OK;
 }
 
-app_result app_placement_check(const app_project *p, const app_fixture *fx, int count,
-                               const app_check_options *options, app_findings *out, char *err,
-                               size_t err_size)
+/* Sets up c for the fixtures of p: the room polygon and each fixture's footprint. */
+static app_result ctx_init(check_ctx *c, const app_project *p, const app_fixture *fx, int count,
+                           app_barrier_free bf, app_findings *out, char *err, size_t err_size)
 {
-    check_ctx c;
-    memset(&c, 0, sizeof c);
-    c.p = p;
-    c.fx = fx;
-    c.count = count;
-    c.bf = options ? options->barrier_free : APP_BARRIER_FREE_OFF;
-    c.out = out;
+    memset(c, 0, sizeof *c);
+    c->p = p;
+    c->fx = fx;
+    c->count = count;
+    c->bf = bf;
+    c->out = out;
     if (p->plan.corner_count >= 3 && p->plan.corners) {
-        c.poly = p->plan.corners;
-        c.poly_n = p->plan.corner_count;
+        c->poly = p->plan.corners;
+        c->poly_n = p->plan.corner_count;
     } else {
         /* A version 1 project built in memory: its room box (project.h). */
-        c.box[1].x = c.box[2].x = p->room.width_mm;
-        c.box[2].y = c.box[3].y = p->room.depth_mm;
-        c.poly = c.box;
-        c.poly_n = 4;
+        c->box[1].x = c->box[2].x = p->room.width_mm;
+        c->box[2].y = c->box[3].y = p->room.depth_mm;
+        c->poly = c->box;
+        c->poly_n = 4;
     }
-    c.rects = malloc((size_t)(count > 0 ? count : 1) * sizeof *c.rects);
-    c.aabb = malloc((size_t)(count > 0 ? count : 1) * sizeof *c.aabb);
-    if (!c.rects || !c.aabb) {
-        free(c.rects);
-        free(c.aabb);
+    c->rects = malloc((size_t)(count > 0 ? count : 1) * sizeof *c->rects);
+    c->aabb = malloc((size_t)(count > 0 ? count : 1) * sizeof *c->aabb);
+    if (!c->rects || !c->aabb) {
+        free(c->rects);
+        free(c->aabb);
+        c->rects = NULL;
+        c->aabb = NULL;
         if (err && err_size)
             snprintf(err, err_size, "out of memory for %d fixtures", count);
         return APP_ERR_OUT_OF_MEMORY;
     }
     for (int i = 0; i < count; i++) {
-        c.rects[i] = pl_rect_of_fixture(&fx[i]);
-        bounds_of(&c.rects[i], c.aabb[i]);
+        c->rects[i] = pl_rect_of_fixture(&fx[i]);
+        bounds_of(&c->rects[i], c->aabb[i]);
     }
-    app_result r = check_room(&c);
+    return APP_OK;
+}
+
+static void ctx_free(check_ctx *c)
+{
+    free(c->rects);
+    free(c->aabb);
+}
+
+app_result app_placement_check(const app_project *p, const app_fixture *fx, int count,
+                               const app_check_options *options, app_findings *out, char *err,
+                               size_t err_size)
+{
+    check_ctx c;
+    app_result r =
+        ctx_init(&c, p, fx, count, options ? options->barrier_free : APP_BARRIER_FREE_OFF, out, err,
+                 err_size);
+    if (r != APP_OK)
+        return r;
+    r = check_room(&c);
     if (r == APP_OK)
         r = check_collisions(&c);
     if (r == APP_OK)
@@ -657,9 +677,43 @@ app_result app_placement_check(const app_project *p, const app_fixture *fx, int 
         r = check_wheelchair_wc(&c);
     if (r == APP_OK && c.bf != APP_BARRIER_FREE_OFF)
         r = check_barrier_free_doors(&c);
-    free(c.rects);
-    free(c.aabb);
+    ctx_free(&c);
     if (r != APP_OK && err && err_size)
         snprintf(err, err_size, "out of memory for the placement findings");
+    return r;
+}
+
+app_result app_free_areas(const app_project *p, const app_fixture *fx, int count,
+                          app_barrier_free bf, app_free_area *out, char *err, size_t err_size)
+{
+    check_ctx c;
+    app_result r = ctx_init(&c, p, fx, count, bf, NULL, err, err_size);
+    if (r != APP_OK)
+        return r;
+    for (int i = 0; i < count; i++) {
+        const app_fixture *f = &fx[i];
+        app_free_area *a = &out[i];
+        memset(a, 0, sizeof *a);
+        double aw, ad, s;
+        int room_ok;
+        if (f->role != APP_ROLE_FIXTURE || !app_free_area_size(f, bf, &aw, &ad))
+            continue;
+        /* The same placement the free-area check makes, so the drawing shows what it checked. */
+        int fits = place_free_area(&c, i, aw, ad, &s, &room_ok);
+        if (fits < 0) {
+            r = APP_ERR_OUT_OF_MEMORY;
+            if (err && err_size)
+                snprintf(err, err_size, "out of memory placing the free areas");
+            break;
+        }
+        pl_rect area = free_area_at(f, s, aw, ad);
+        a->has_area = 1;
+        a->clear = fits;
+        a->width_mm = aw;
+        a->depth_mm = ad;
+        a->shift_mm = s;
+        pl_rect_corners(&area, a->corners);
+    }
+    ctx_free(&c);
     return r;
 }

@@ -160,6 +160,25 @@ app_result app_placement_check(const app_project *p, const app_fixture *fx, int 
  * none (a mirror, a primitive). */
 int app_free_area_size(const app_fixture *f, app_barrier_free bf, double *w, double *d);
 
+/* A fixture's free area where the checks place it (DOMAIN.md "Clearances"): the drawings of
+ * the plan show these, so what is drawn is what app_placement_check checked. */
+typedef struct app_free_area {
+    int has_area;              /* 0: the fixture has none; the fields below are zero */
+    int clear;                 /* 1: clear of walls and furniture (no finding for it) */
+    double width_mm, depth_mm; /* app_free_area_size */
+    double shift_mm;           /* sideways offset from the centred position, along local x */
+    /* Plan mm: [0], [1] on the fixture's front edge (local -x, +x), [2], [3] at the far
+     * edge (+x, -x). When no position is clear: the least shifted one inside the room, else
+     * the centred one, as the finding reports it. */
+    double corners[4][2];
+} app_free_area;
+
+/* Places the free area of each of the count fixtures fx (from app_placement_fixtures) with
+ * the checks' own placement and writes it to out[i] (count entries). Fails only when out of
+ * memory. */
+app_result app_free_areas(const app_project *p, const app_fixture *fx, int count,
+                          app_barrier_free bf, app_free_area *out, char *err, size_t err_size);
+
 /* ---- snapping ---------------------------------------------------------------------------- */
 
 typedef struct app_pose {
