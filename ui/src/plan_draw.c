@@ -203,8 +203,8 @@ static void outline(const float xy[8], unsigned colour, float thickness)
                          thickness);
 }
 
-static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx, int n,
-                          const ui_plan_overlay *o)
+static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx,
+                          const app_free_area *areas, int n, const ui_plan_overlay *o)
 {
     for (int i = 0; i < n; i++) {
         const app_fixture *f = &fx[i];
@@ -214,10 +214,13 @@ static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx, int
             cy = o->drag_mm[1];
         }
         float xy[8];
-        double fw, fd;
-        if (f->has_product && app_free_area_size(f, APP_BARRIER_FREE_OFF, &fw, &fd)) {
-            /* The free area lies in front of the fixture: local +y from its front edge. */
-            rect_corners(f, cx, cy, fw / 2, fd / 2, f->half[1] + fd / 2, t, xy);
+        if (areas && areas[i].has_area) {
+            /* Where the checks placed it (app_free_areas), so the drawing shows what was
+             * checked; a fixture being dragged carries its area along until it is dropped and
+             * checked again. */
+            double dx = cx - f->centre[0], dy = cy - f->centre[1];
+            for (int k = 0; k < 4; k++)
+                to_screen(t, areas[i].corners[k][0] + dx, areas[i].corners[k][1] + dy, &xy[2 * k]);
             outline(xy, rgba(60, 120, 220, 160), 1.0f);
         }
         rect_corners(f, cx, cy, f->half[0], f->half[1], 0, t, xy);
@@ -249,14 +252,15 @@ static void draw_findings(const ui_plan_transform *t, const app_findings *f)
 }
 
 void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fixture *fx,
-                  int fixture_count, const app_findings *findings, const ui_plan_overlay *o)
+                  const app_free_area *areas, int fixture_count, const app_findings *findings,
+                  const ui_plan_overlay *o)
 {
     float bg[8] = {0, 0, t->width, 0, t->width, t->height, 0, t->height};
     ui_gui_draw_quad_filled(bg, rgba(246, 244, 238, 255));
     if (p->plan.corner_count < 3)
         return;
     draw_prewalls(t, p, o);
-    draw_fixtures(t, fx, fixture_count, o);
+    draw_fixtures(t, fx, areas, fixture_count, o);
     draw_walls(t, p, o);
     draw_openings(t, p, o);
     draw_findings(t, findings);

@@ -19,7 +19,9 @@ typedef struct ui_plan_overlay {
     double drag_wall_mm;
 } ui_plan_overlay;
 
+/* areas: fixture_count free areas from app_free_areas (NULL: none drawn). */
 void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fixture *fx,
-                  int fixture_count, const app_findings *findings, const ui_plan_overlay *o);
+                  const app_free_area *areas, int fixture_count, const app_findings *findings,
+                  const ui_plan_overlay *o);
 
 #endif

@@ -61,6 +61,9 @@ typedef struct planner {
     app_fixture *fixtures;
     int fixture_count;
     app_findings findings;
+    /* fixture_count entries: each fixture's free area as the checks placed it, NULL when the
+     * fixtures could not be built or placed. */
+    app_free_area *free_areas;
     int dirty;
     double last_autosave;
     char status[320];

@@ -31,6 +31,8 @@ static void refresh_findings(planner *p)
     free(p->fixtures);
     p->fixtures = NULL;
     p->fixture_count = 0;
+    free(p->free_areas);
+    p->free_areas = NULL;
     app_findings_free(&p->findings);
     char err[1024];
     if (app_placement_fixtures(&p->project, app_placement_lazy_lookup, &p->catalog, &p->fixtures,
@@ -40,8 +42,24 @@ static void refresh_findings(planner *p)
     }
     app_check_options opt = {.barrier_free = APP_BARRIER_FREE_OFF};
     if (app_placement_check(&p->project, p->fixtures, p->fixture_count, &opt, &p->findings, err,
-                            sizeof err) != APP_OK)
+                            sizeof err) != APP_OK) {
         planner_status(p, "%s", err);
+        return;
+    }
+    /* The plan draws the free areas where the check placed them (slid sideways to stay inside
+     * the room, DOMAIN.md "Clearances"), not centred on their fixtures. */
+    p->free_areas =
+        malloc((size_t)(p->fixture_count > 0 ? p->fixture_count : 1) * sizeof *p->free_areas);
+    if (!p->free_areas) {
+        planner_status(p, "out of memory for the free areas");
+        return;
+    }
+    if (app_free_areas(&p->project, p->fixtures, p->fixture_count, opt.barrier_free, p->free_areas,
+                       err, sizeof err) != APP_OK) {
+        planner_status(p, "%s", err);
+        free(p->free_areas);
+        p->free_areas = NULL;
+    }
 }
 
 int planner_rebuild_scene(planner *p)
@@ -95,6 +113,8 @@ void planner_doc_close(planner *p)
     p->history = NULL;
     free(p->fixtures);
     p->fixtures = NULL;
+    free(p->free_areas);
+    p->free_areas = NULL;
     app_findings_free(&p->findings);
     app_placement_lazy_close(&p->catalog);
 }

@@ -309,7 +309,8 @@ void planner_plan_frame(planner *p, int width, int height)
     }
     if (!p->script.count || p->action >= p->script.count)
         handle_plan_input(p);
-    ui_plan_draw(&p->plan_t, &p->project, p->fixtures, p->fixture_count, &p->findings, &p->plan_o);
+    ui_plan_draw(&p->plan_t, &p->project, p->fixtures, p->free_areas, p->fixture_count,
+                 &p->findings, &p->plan_o);
     wall_panel(p);
 }
 
