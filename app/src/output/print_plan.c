@@ -5,11 +5,12 @@
  * and each fixture's distance to its nearest walls. Drawn at a true scale 1:N. */
 #include "print_internal.h"
 
+#include "app/design/placement.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 
 typedef struct pr_view {
     double ox, oy; /* paper position of world (0, 0) */
@@ -219,59 +220,6 @@ static void draw_walls(pr_doc *d, const pr_view *v, const app_point2 *outer)
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
 }
 
-/* Category of a fixture for its clearance (DOMAIN.md table): from the catalog, else guessed
- * from its name. 0 = none. */
-typedef struct clearance {
-    double w, d;
-    const char *what;
-} clearance;
-
-static int name_has(const char *name, const char *word)
-{
-    size_t n = strlen(word);
-    for (const char *s = name; *s; s++)
-        if (!strncasecmp(s, word, n))
-            return 1;
-    return 0;
-}
-
-static int clearance_of(const pr_fixture *f, clearance *c)
-{
-    double w = f->max[0] - f->min[0], dd = f->max[1] - f->min[1];
-    double wide = w > dd ? w : dd;
-    cat_category cat = f->found ? f->product.category : CAT_CATEGORY_ANY;
-    if (cat == CAT_CATEGORY_ANY) {
-        if (name_has(f->name, "wc") || name_has(f->name, "toilet"))
-            cat = CAT_CATEGORY_WCS_BIDETS;
-        else if (name_has(f->name, "basin") && !name_has(f->name, "mixer"))
-            cat = CAT_CATEGORY_BASINS;
-        else if ((name_has(f->name, "bath") && !name_has(f->name, "mixer") &&
-                  !name_has(f->name, "mat")) ||
-                 name_has(f->name, "tub"))
-            cat = CAT_CATEGORY_BATHS;
-        else if (name_has(f->name, "tray"))
-            cat = CAT_CATEGORY_SHOWER_TRAYS;
-    }
-    switch (cat) {
-    case CAT_CATEGORY_BASINS:
-        *c = wide > 1000 ? (clearance){1500, 550, "basin"}
-                         : (wide < 500 ? (clearance){700, 450, "hand basin"}
-                                       : (clearance){900, 550, "basin"});
-        return 1;
-    case CAT_CATEGORY_WCS_BIDETS:
-        *c = (clearance){800, 550, "WC"};
-        return 1;
-    case CAT_CATEGORY_BATHS:
-        *c = (clearance){900, 750, "bath"};
-        return 1;
-    case CAT_CATEGORY_SHOWER_TRAYS:
-        *c = (clearance){wide, 750, "shower"};
-        return 1;
-    default:
-        return 0;
-    }
-}
-
 /* Hull of a fixture's footprint (all parts below 1800 mm, else all). */
 static int fixture_hull(const pr_fixture *f, app_point2 **out)
 {
@@ -338,63 +286,64 @@ static int nearest_wall(const app_room_plan *pl, const app_point2 *hull, int h, 
     return best;
 }
 
-/* The free area in front of each fixture (DOMAIN.md "Clearances"). The front is the
- * product's facing direction (app/design/placement.h: local +y, turned by rotation_deg[2]), or for
- * a primitive fixture away from the wall it stands against. */
+/* The free area in front of each fixture (DOMAIN.md "Clearances") where `tessera check`
+ * places it (app_free_areas): the checks' sizes, slid sideways to stay inside the room and
+ * clear of furniture, so the drawing shows what the check accepted. Without the catalog's
+ * product sizes the fixtures cannot be built and no area is drawn (nor could it be checked). */
 static void draw_clearances(pr_doc *d, const pr_view *v)
 {
     cairo_t *cr = d->cr;
-    for (int i = 0; i < d->fixture_count; i++) {
-        const pr_fixture *f = &d->fixtures[i];
-        clearance c;
-        if (!clearance_of(f, &c))
+    app_fixture *fx = NULL;
+    app_free_area *areas = NULL;
+    int n = 0;
+    char err[1024];
+    app_result r = app_placement_fixtures(d->p, d->db ? app_placement_catalog_lookup : NULL, d->db,
+                                          &fx, &n, err, sizeof err);
+    if (r == APP_OK) {
+        areas = malloc((size_t)(n > 0 ? n : 1) * sizeof *areas);
+        if (!areas) {
+            r = APP_ERR_OUT_OF_MEMORY;
+            snprintf(err, sizeof err, "out of memory");
+        }
+    }
+    if (r == APP_OK)
+        r = app_free_areas(d->p, fx, n, APP_BARRIER_FREE_OFF, areas, err, sizeof err);
+    if (r != APP_OK) {
+        if (d->o->verbose)
+            fprintf(stderr, "tessera print: no clearance areas: %s\n", err);
+        free(areas);
+        free(fx);
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        const app_free_area *a = &areas[i];
+        if (!a->has_area)
             continue;
-        app_point2 *hull = NULL;
-        int h = fixture_hull(f, &hull);
-        app_point2 fr = {0, 0};
-        if (f->has_product) {
-            double a = d->p->objects[f->first_object].rotation_deg[2] * PR_PI / 180.0;
-            fr = (app_point2){-sin(a), cos(a)};
-        } else if (h > 2) {
-            double dist, lo, hi;
-            int w = nearest_wall(&d->plan, hull, h, -1, &dist, &lo, &hi);
-            if (w >= 0) {
-                app_point2 o, u;
-                double len;
-                wall_frame(&d->plan, w, &o, &u, &fr, &len);
-            }
+        cairo_new_path(cr);
+        for (int k = 0; k < 4; k++)
+            cairo_line_to(cr, px(v, a->corners[k][0]), py(v, a->corners[k][1]));
+        cairo_close_path(cr);
+        cairo_set_source_rgb(cr, 0.55, 0.7, 0.85);
+        cairo_set_line_width(cr, PR_LINE_THIN);
+        pr_hatch_path(cr, 2.0, 135);
+        const double dash[2] = {2.0, 1.0};
+        cairo_set_dash(cr, dash, 2, 0);
+        cairo_stroke(cr);
+        cairo_set_dash(cr, NULL, 0, 0);
+        double cx = 0, cy = 0;
+        for (int k = 0; k < 4; k++) {
+            cx += a->corners[k][0] / 4;
+            cy += a->corners[k][1] / 4;
         }
-        if (h > 2 && (fr.x != 0 || fr.y != 0)) {
-            app_point2 ac = {fr.y, -fr.x}; /* across the front */
-            double front = -1e300, lo = 1e300, hi = -1e300;
-            for (int k = 0; k < h; k++) {
-                double dd = hull[k].x * fr.x + hull[k].y * fr.y;
-                double s = hull[k].x * ac.x + hull[k].y * ac.y;
-                front = dd > front ? dd : front;
-                lo = s < lo ? s : lo;
-                hi = s > hi ? s : hi;
-            }
-            double mid = (lo + hi) / 2, cw = c.w > hi - lo ? c.w : hi - lo;
-            app_point2 origin = {0, 0};
-            wall_quad(cr, v, origin, ac, fr, mid - cw / 2, mid + cw / 2, front, front + c.d);
-            cairo_set_source_rgb(cr, 0.55, 0.7, 0.85);
-            cairo_set_line_width(cr, PR_LINE_THIN);
-            pr_hatch_path(cr, 2.0, 135);
-            const double dash[2] = {2.0, 1.0};
-            cairo_set_dash(cr, dash, 2, 0);
-            cairo_stroke(cr);
-            cairo_set_dash(cr, NULL, 0, 0);
-            double cx = ac.x * mid + fr.x * (front + c.d / 2);
-            double cy = ac.y * mid + fr.y * (front + c.d / 2);
-            char text[64];
-            snprintf(text, sizeof text, "free %.0f x %.0f", c.w, c.d);
-            pr_set_font(cr, 1.8, 0);
-            cairo_set_source_rgb(cr, 0.2, 0.4, 0.6);
-            pr_text(cr, px(v, cx), py(v, cy), 0.5, 0.5, text);
-        }
-        free(hull);
+        char text[64];
+        snprintf(text, sizeof text, "free %.0f x %.0f", a->width_mm, a->depth_mm);
+        pr_set_font(cr, 1.8, 0);
+        cairo_set_source_rgb(cr, 0.2, 0.4, 0.6);
+        pr_text(cr, px(v, cx), py(v, cy), 0.5, 0.5, text);
     }
     cairo_set_source_rgb(cr, 0, 0, 0);
+    free(areas);
+    free(fx);
 }
 
 /* The floor's tile layout as light joints under everything else (s, t = plan x, y). */
