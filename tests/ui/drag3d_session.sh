@@ -6,13 +6,9 @@
 # drag and return with the undo, and the saved files must hold the moved and the first place.
 #   usage: drag3d_session.sh TESSERA OUTDIR SCREENSHOT_CHECK DEMO_PROJECT
 set -e
-tessera=$1
-out=$2
-check=$3
-demo=$4
 . "$(dirname "$0")/session_lib.sh"
-rm -rf "$out"
-mkdir -p "$out"
+session_start "$@"
+demo=$4
 cp "$demo" "$out/demo.json" # a copy: no autosave beside the shipped demo
 cat >"$out/drag.txt" <<SCRIPT
 quality draft

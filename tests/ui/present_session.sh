@@ -7,13 +7,9 @@
 # (supersampled, traced self-reflections), whose cost grows with its pixels.
 #   usage: present_session.sh TESSERA OUTDIR SCREENSHOT_CHECK DEMO_PROJECT
 set -e
-tessera=$1
-out=$2
-check=$3
-demo=$4
 . "$(dirname "$0")/session_lib.sh"
-rm -rf "$out"
-mkdir -p "$out"
+session_start "$@"
+demo=$4
 cp "$demo" "$out/demo.json" # a copy: no autosave beside the shipped demo
 cat >"$out/present.txt" <<SCRIPT
 wait 2

@@ -6,13 +6,9 @@
 # then the saved material is checked; the same at 1280 x 720. The app must exit 0 and the screenshots must show the room.
 #   usage: probe_session.sh TESSERA OUTDIR SCREENSHOT_CHECK DEMO_PROJECT
 set -e
-tessera=$1
-out=$2
-check=$3
-demo=$4
 . "$(dirname "$0")/session_lib.sh"
-rm -rf "$out"
-mkdir -p "$out"
+session_start "$@"
+demo=$4
 mat='"Cerana CE411001 BK"'
 for size in 800x450 1280x720; do
     cp "$demo" "$out/demo-$size.json" # a copy: no autosave next to the shipped demo

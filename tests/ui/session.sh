@@ -8,13 +8,9 @@
 # the picture, and the plan screenshots must match their goldens.
 #   usage: session.sh TESSERA OUTDIR SCREENSHOT_CHECK GOLDEN_DIR
 set -e
-tessera=$1
-out=$2
-check=$3
-golden=$4
 . "$(dirname "$0")/session_lib.sh"
-rm -rf "$out"
-mkdir -p "$out"
+session_start "$@"
+golden=$4
 # The shipped demo as `tessera open` alone would open it, but a copy: the session edits it, and
 # an autosave must not land beside the shipped file (it would offer recovery to every session).
 cp "$golden/../../assets/projects/designed-bathroom.json" "$out/demo.json"

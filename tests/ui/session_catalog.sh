@@ -6,13 +6,9 @@
 # a broken file: it must fail, with a message that names the file and the problem.
 #   usage: session_catalog.sh TESSERA OUTDIR SCREENSHOT_CHECK SOURCE_DIR
 set -e
-tessera=$1
-out=$2
-check=$3
-src=$4
 . "$(dirname "$0")/session_lib.sh"
-rm -rf "$out"
-mkdir -p "$out"
+session_start "$@"
+src=$4
 # A copy: the session edits it, and an autosave must not land beside the shipped demo.
 cp "$src/assets/projects/designed-bathroom.json" "$out/demo.json"
 cat >"$out/session.txt" <<SCRIPT

@@ -1,4 +1,13 @@
-# Sourced by the Xvfb session scripts after they set $tessera and $out.
+# Sourced by the Xvfb session scripts, which take TESSERA OUTDIR SCREENSHOT_CHECK and one more
+# argument of their own.
+
+# session_start TESSERA OUTDIR SCREENSHOT_CHECK ...: sets $tessera, $out and $check, and gives
+# the session an empty $out.
+session_start() {
+    tessera=$1 out=$2 check=$3
+    rm -rf "$out"
+    mkdir -p "$out"
+}
 
 # session_window PROJECT SIZE SCRIPT LOG [MORE OPTIONS]: the planner window on PROJECT (empty:
 # none) under Xvfb, driven by SCRIPT, stderr into LOG; the test fails unless it exits 0.

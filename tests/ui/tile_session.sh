@@ -8,13 +8,9 @@
 # differ after each change. Last the panel over the 3D view: a pattern change shows there.
 #   usage: tile_session.sh TESSERA OUTDIR SCREENSHOT_CHECK DEMO_PROJECT
 set -e
-tessera=$1
-out=$2
-check=$3
-demo=$4
 . "$(dirname "$0")/session_lib.sh"
-rm -rf "$out"
-mkdir -p "$out"
+session_start "$@"
+demo=$4
 # A copy, so no autosave of the shipped demo (another session's) is offered, and ours stays here.
 cp "$demo" "$out/demo.json"
 cat >"$out/tiles.txt" <<SCRIPT
