@@ -310,6 +310,13 @@ static void test_catalog_and_bom(void)
     /* The wall tile is priced per m2: the order is whole boxes of 1.44 m2. */
     CHECK(!strcmp(b.lines[1].product.article, "TZ61000") && b.lines[1].unit == CAT_UNIT_M2);
     CHECK(fabs(b.lines[1].quantity - q.lines[1].boxes * 1.44) < 1e-9);
+    /* The border is priced per piece (20 to a box): billed for the pieces laid, not the box. */
+    for (int i = 0; i < q.line_count; i++)
+        if (!strcmp(q.lines[i].spec.product.article, "FA-10128")) {
+            CHECK(b.lines[i].unit == CAT_UNIT_PIECE);
+            CHECK_MSG(b.lines[i].quantity == q.lines[i].pieces_needed, "%g billed, %d needed",
+                      b.lines[i].quantity, q.lines[i].pieces_needed);
+        }
     /* The WC: one piece at its list price (419.00 EUR, 19 % VAT). */
     CHECK(!strcmp(b.lines[4].product.article, "CE412901") && b.lines[4].quantity == 1);
     CHECK(b.lines[4].unit_price_cents == 41900 && b.lines[4].vat_cents == 7961);
@@ -322,8 +329,67 @@ static void test_catalog_and_bom(void)
     rmdir(dir);
 }
 
+/* A piece-priced border or decor is billed per piece; box and m2 prices sell whole boxes. */
+static void test_billed_unit(void)
+{
+    app_tile_quantity t;
+    memset(&t, 0, sizeof t);
+    t.spec = spec(297, 47, APP_TILE_BOR, 20, 0);
+    t.whole = 6;
+    t.cut = 3;
+    t.reused = 1;
+    t.pieces_needed = 8;
+    t.pieces_with_surplus = 9;
+    t.boxes = 1;
+    t.pieces_to_order = 20;
+    t.order_m2 = 20 * 0.297 * 0.047;
+    CHECK_MSG(app_tile_billed_quantity(&t, CAT_UNIT_PIECE) == 8, "8 needed, %g billed",
+              app_tile_billed_quantity(&t, CAT_UNIT_PIECE));
+    CHECK(app_tile_billed_quantity(&t, CAT_UNIT_BOX) == 1);
+    CHECK(fabs(app_tile_billed_quantity(&t, CAT_UNIT_M2) - t.order_m2) < 1e-12);
+}
+
+static void test_vat_label(void)
+{
+    char b[16];
+    CHECK_MSG(!strcmp(app_format_percent(8.1, b, sizeof b), "8.1"), "8.1 -> %s", b);
+    CHECK_MSG(!strcmp(app_format_percent(19, b, sizeof b), "19"), "19 -> %s", b);
+    CHECK_MSG(!strcmp(app_format_percent(7.7, b, sizeof b), "7.7"), "7.7 -> %s", b);
+    CHECK_MSG(!strcmp(app_format_percent(2.55, b, sizeof b), "2.55"), "2.55 -> %s", b);
+    CHECK_MSG(!strcmp(app_format_percent(0, b, sizeof b), "0"), "0 -> %s", b);
+}
+
+/* A line in another currency is not summed into the project's total. */
+static void test_mixed_currency(void)
+{
+    app_bom_line lines[3];
+    memset(lines, 0, sizeof lines);
+    const char *cur[3] = {"EUR", "CHF", "EUR"};
+    for (int i = 0; i < 3; i++) {
+        lines[i].found = 1;
+        lines[i].quantity = 2;
+        lines[i].unit_price_cents = 1000;
+        lines[i].vat_percent = i == 1 ? 8.1 : 19;
+        snprintf(lines[i].currency, sizeof lines[i].currency, "%s", cur[i]);
+        snprintf(lines[i].product.article, sizeof lines[i].product.article, "A%d", i);
+    }
+    app_bom b;
+    memset(&b, 0, sizeof b);
+    b.lines = lines;
+    b.line_count = 3;
+    app_bom_total(&b);
+    CHECK_MSG(!strcmp(b.currency, "EUR"), "project currency %s", b.currency);
+    CHECK(b.foreign == 1 && lines[1].foreign_currency && !lines[0].foreign_currency);
+    CHECK(lines[1].net_cents == 2000 && lines[1].vat_cents == 162);
+    CHECK_MSG(b.net_cents == 4000 && b.vat_cents == 760 && b.gross_cents == 4760,
+              "net %lld vat %lld gross %lld", b.net_cents, b.vat_cents, b.gross_cents);
+}
+
 int main(void)
 {
+    test_billed_unit();
+    test_vat_label();
+    test_mixed_currency();
     test_boxes();
     test_offcuts();
     test_rotation();

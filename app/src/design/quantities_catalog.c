@@ -167,6 +167,83 @@ static void total_line(app_bom_line *l)
     l->gross_cents = l->net_cents + l->vat_cents;
 }
 
+double app_tile_billed_quantity(const app_tile_quantity *t, cat_unit unit)
+{
+    if (!t)
+        return 0;
+    /* DOMAIN.md "Products and catalog records": the unit is part of the price. A box or m2
+     * price sells whole boxes; a piece price (borders, decors) sells single pieces, so the
+     * customer pays for the pieces laid, not for the box they come in. */
+    if (unit == CAT_UNIT_M2)
+        return t->order_m2;
+    if (unit == CAT_UNIT_BOX)
+        return t->boxes > 0 ? t->boxes : t->pieces_to_order;
+    return t->pieces_needed;
+}
+
+/* The currency most found lines are priced in; ties go to the one that comes first (tiles come
+ * before fixtures). */
+static void project_currency(const app_bom *b, char cur[4])
+{
+    int best = 0;
+    cur[0] = '\0';
+    for (int i = 0; i < b->line_count; i++) {
+        const app_bom_line *l = &b->lines[i];
+        if (!l->found || !l->currency[0])
+            continue;
+        int n = 0;
+        for (int k = 0; k < b->line_count; k++)
+            n += b->lines[k].found && !strcmp(b->lines[k].currency, l->currency);
+        if (n > best) {
+            best = n;
+            snprintf(cur, 4, "%s", l->currency);
+        }
+    }
+}
+
+void app_bom_total(app_bom *b)
+{
+    if (!b)
+        return;
+    b->net_cents = b->vat_cents = b->gross_cents = 0;
+    b->missing = b->foreign = 0;
+    project_currency(b, b->currency);
+    for (int k = 0; k < b->line_count; k++) {
+        app_bom_line *l = &b->lines[k];
+        total_line(l);
+        b->missing += !l->found;
+        /* DOMAIN.md "What the best planners print": a quotation has one currency. Adding a CHF
+         * amount to EUR ones gives a wrong total, so such a line stays out of it (no rates are
+         * known to convert it) and is reported instead. */
+        l->foreign_currency = l->found && strcmp(l->currency, b->currency) != 0;
+        if (l->foreign_currency) {
+            b->foreign++;
+            continue;
+        }
+        b->net_cents += l->net_cents;
+        b->vat_cents += l->vat_cents;
+        b->gross_cents += l->gross_cents;
+    }
+}
+
+const char *app_format_percent(double percent, char *buf, size_t size)
+{
+    if (!buf || size == 0)
+        return buf;
+    /* DOMAIN.md "Products and catalog records": the VAT rate is the record's, and rates such as
+     * 8.1 % (CH) or 7.7 % must not print rounded to a rate that does not exist. */
+    snprintf(buf, size, "%.2f", percent);
+    char *dot = strchr(buf, '.');
+    if (dot) {
+        char *end = buf + strlen(buf);
+        while (end > dot + 1 && end[-1] == '0')
+            *--end = '\0';
+        if (end == dot + 1)
+            *dot = '\0';
+    }
+    return buf;
+}
+
 static int cmp_fixture(const void *a, const void *b)
 {
     const app_bom_line *x = a, *y = b;
@@ -193,13 +270,7 @@ app_result app_bom_build(cat_db *db, const app_project *p, const app_quantities 
         price_line(db, l);
         l->is_tile = 1;
         l->tile_type = t->spec.type;
-        /* The amount to order, in the unit the catalog prices the tile by. */
-        if (l->unit == CAT_UNIT_M2)
-            l->quantity = t->order_m2;
-        else if (l->unit == CAT_UNIT_BOX)
-            l->quantity = t->boxes > 0 ? t->boxes : t->pieces_to_order;
-        else
-            l->quantity = t->pieces_to_order;
+        l->quantity = app_tile_billed_quantity(t, l->unit);
     }
     int first_fixture = out->line_count;
     for (int i = 0; p && i < p->object_count; i++) {
@@ -224,23 +295,7 @@ app_result app_bom_build(cat_db *db, const app_project *p, const app_quantities 
     if (out->line_count > first_fixture) /* qsort's array must not be NULL, even for 0 lines */
         qsort(out->lines + first_fixture, (size_t)(out->line_count - first_fixture),
               sizeof *out->lines, cmp_fixture);
-    int mixed = 0;
-    for (int k = 0; k < out->line_count; k++) {
-        l = &out->lines[k];
-        total_line(l);
-        out->net_cents += l->net_cents;
-        out->vat_cents += l->vat_cents;
-        out->gross_cents += l->gross_cents;
-        out->missing += !l->found;
-        if (!l->found)
-            continue;
-        if (!out->currency[0] && !mixed)
-            snprintf(out->currency, sizeof out->currency, "%s", l->currency);
-        else if (strcmp(out->currency, l->currency))
-            mixed = 1;
-    }
-    if (mixed)
-        out->currency[0] = '\0';
+    app_bom_total(out);
     return APP_OK;
 oom:
     app_bom_free(out);

@@ -120,15 +120,32 @@ typedef struct app_bom_line {
     double vat_percent;
     long long net_cents, vat_cents, gross_cents; /* net = round(quantity x unit price) */
     char currency[4];
+    int foreign_currency; /* 1: priced in another currency than the project: left out of the
+                             totals, reported as an error (docs/tiling.md "Bill of materials") */
 } app_bom_line;
 
 typedef struct app_bom {
     app_bom_line *lines; /* tiles first (in the order of q's lines), then fixtures by name */
     int line_count;
-    long long net_cents, vat_cents, gross_cents;
-    char currency[4]; /* of the lines; "" when they mix currencies (totals then meaningless) */
+    long long net_cents, vat_cents, gross_cents; /* over the lines in the project's currency */
+    char currency[4]; /* the project's: the one most priced lines use (ties: the first) */
     int missing;      /* lines whose product the catalog does not have */
+    int foreign;      /* lines in another currency, left out of the totals */
 } app_bom;
+
+/* The amount billed for tile line t in the unit the catalog prices it by (DOMAIN.md "Products
+ * and catalog records": unit piece, m2 or box): pieces -> the pieces needed (whole and cut,
+ * less the cuts an offcut serves), box -> whole boxes, m2 -> the m2 of the boxes ordered. */
+double app_tile_billed_quantity(const app_tile_quantity *t, cat_unit unit);
+
+/* Totals the lines of b (their quantity, unit price, VAT and currency filled): each line's net,
+ * VAT and gross, the project's currency, and the sums over the lines in that currency. Lines in
+ * another currency are marked foreign_currency and counted in b->foreign, never summed. */
+void app_bom_total(app_bom *b);
+
+/* Writes a VAT rate with the digits it has: 19 -> "19", 8.1 -> "8.1", 7.7 -> "7.7" (at most two
+ * decimals, trailing zeros dropped). Returns buf. */
+const char *app_format_percent(double percent, char *buf, size_t size);
 
 /* Prices the tiles of q (their amount to order) and every placed product of p (objects with
  * has_product; equal references counted together) from the catalog. */
