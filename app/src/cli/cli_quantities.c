@@ -277,15 +277,37 @@ static void print_bom(const app_bom *b, int csv)
             csv_field(cat_unit_name(l->unit), 0);
             csv_field(up, 0);
             csv_field(l->currency, 0);
-            snprintf(q, sizeof q, "%g", l->vat_percent);
-            csv_field(q, 0);
+            csv_field(app_format_percent(l->vat_percent, q, sizeof q), 0);
             csv_field(net, 0);
             csv_field(vat, 0);
             csv_field(gross, 1);
-        } else
-            printf("%-20.20s %-14.14s %-40.40s %9.2f %-5s %10s %5g %11s %11s\n",
+        } else {
+            char pc[16];
+            printf("%-20.20s %-14.14s %-40.40s %9.2f %-5s %10s %5s %11s %11s%s\n",
                    l->product.manufacturer, l->product.article, l->name, l->quantity,
-                   cat_unit_name(l->unit), up, l->vat_percent, net, gross);
+                   cat_unit_name(l->unit), up, app_format_percent(l->vat_percent, pc, sizeof pc),
+                   net, gross, l->foreign_currency ? " (not in the total)" : "");
+        }
+    }
+    /* A line in another currency is refused, not converted (no rates): it is named with both
+     * currencies, on stdout in the table and on stderr for scripts. */
+    for (int i = 0; i < b->line_count; i++) {
+        const app_bom_line *l = &b->lines[i];
+        if (!l->foreign_currency)
+            continue;
+        char why[512];
+        snprintf(why, sizeof why,
+                 "%s %s (%s) is priced in %s, the project in %s: left out of the total",
+                 l->product.manufacturer, l->product.article, l->name, l->currency, b->currency);
+        if (csv) {
+            csv_field("error", 0);
+            csv_field(l->product.manufacturer, 0);
+            csv_field(l->product.article, 0);
+            csv_field(l->product.variant, 0);
+            csv_field(why, 1);
+        } else
+            printf("error: %s\n", why);
+        fprintf(stderr, "quantities: %s\n", why);
     }
     money(net, sizeof net, b->net_cents);
     money(vat, sizeof vat, b->vat_cents);
@@ -294,8 +316,9 @@ static void print_bom(const app_bom *b, int csv)
         printf("total,,,,,,,,%s,,%s,%s,%s\n", b->currency, net, vat, gross);
     else {
         printf("Total net %s %s, VAT %s, gross %s %s\n", net, b->currency, vat, gross, b->currency);
-        if (!b->currency[0] && b->line_count)
-            printf("(the lines mix currencies: the totals add unlike amounts)\n");
+        if (b->foreign)
+            printf("%d line(s) in another currency than %s, not in the total\n", b->foreign,
+                   b->currency);
         if (b->missing)
             printf("%d product(s) not in the catalog, priced 0\n", b->missing);
     }

@@ -245,10 +245,11 @@ static void tile_list(flow *f)
         f->y += SWATCH_ROW_H;
         rule(f, PR_LINE_THIN);
     }
-    char text[200];
+    char text[256];
     snprintf(text, sizeof text,
              "Tiled %.2f m2 (grout %.2f m2). Order amounts include the surplus for cutting and "
-             "breakage and are rounded up to whole boxes.",
+             "breakage and are rounded up to whole boxes; pieces priced per piece are billed "
+             "as laid.",
              d->q.tiled_area_m2, d->q.grout_area_m2);
     note(f, text);
 }
@@ -277,9 +278,12 @@ static void quotation(flow *f)
         else
             snprintf(qty, sizeof qty, "%.2f", b->quantity);
         pr_format_money(b->unit_price_cents, unit_price, sizeof unit_price);
-        snprintf(vat, sizeof vat, "%.0f", b->vat_percent);
+        app_format_percent(b->vat_percent, vat, sizeof vat);
         pr_format_money(b->net_cents, net, sizeof net);
-        if (b->found)
+        if (b->foreign_currency)
+            snprintf(desc, sizeof desc, "ERROR priced in %s, not %s: not in the total. %s",
+                     b->currency, d->bom.currency, b->name);
+        else if (b->found)
             snprintf(desc, sizeof desc, "%s", b->name);
         else
             snprintf(desc, sizeof desc, "(not in the catalog) %s", b->product.manufacturer);
@@ -294,6 +298,8 @@ static void quotation(flow *f)
     long long vat_by_rate[16];
     int nr = 0;
     for (int i = 0; i < d->bom.line_count; i++) {
+        if (d->bom.lines[i].foreign_currency)
+            continue; /* not in the totals either */
         int k = 0;
         while (k < nr && fabs(rates[k] - d->bom.lines[i].vat_percent) > 1e-9)
             k++;
@@ -314,7 +320,8 @@ static void quotation(flow *f)
     f->y += ROW_H;
     for (int k = 0; k < nr; k++) {
         pr_format_money(vat_by_rate[k], money, sizeof money);
-        snprintf(label, sizeof label, "VAT %.0f %%", rates[k]);
+        char pc[16];
+        snprintf(label, sizeof label, "VAT %s %%", app_format_percent(rates[k], pc, sizeof pc));
         const char *c2[] = {"", label, money};
         row_text(f, tcols, 3, c2, ROW_H, 0, d->area_x);
         f->y += ROW_H;
@@ -329,6 +336,14 @@ static void quotation(flow *f)
         char text[128];
         snprintf(text, sizeof text, "%d product%s not in the catalog: priced at 0.", d->bom.missing,
                  d->bom.missing == 1 ? "" : "s");
+        note(f, text);
+    }
+    if (d->bom.foreign) {
+        char text[128];
+        snprintf(text, sizeof text,
+                 "%d line%s priced in another currency than %s: not in the totals (no exchange "
+                 "rate).",
+                 d->bom.foreign, d->bom.foreign == 1 ? "" : "s", d->bom.currency);
         note(f, text);
     }
     note(f, "Prices are list prices without discount; valid subject to the supplier's terms.");
