@@ -310,12 +310,15 @@ static void test_catalog_and_bom(void)
     /* The wall tile is priced per m2: the order is whole boxes of 1.44 m2. */
     CHECK(!strcmp(b.lines[1].product.article, "TZ61000") && b.lines[1].unit == CAT_UNIT_M2);
     CHECK(fabs(b.lines[1].quantity - q.lines[1].boxes * 1.44) < 1e-9);
-    /* The border is priced per piece (20 to a box): billed for the pieces laid, not the box. */
+    /* The border is priced per piece (20 to a box): billed for the pieces ordered (needed plus
+     * the surplus), not the box. */
     for (int i = 0; i < q.line_count; i++)
         if (!strcmp(q.lines[i].spec.product.article, "FA-10128")) {
             CHECK(b.lines[i].unit == CAT_UNIT_PIECE);
-            CHECK_MSG(b.lines[i].quantity == q.lines[i].pieces_needed, "%g billed, %d needed",
-                      b.lines[i].quantity, q.lines[i].pieces_needed);
+            CHECK_MSG(b.lines[i].quantity == q.lines[i].pieces_with_surplus &&
+                          q.lines[i].pieces_with_surplus < q.lines[i].pieces_to_order,
+                      "%g billed, %d with the surplus, %d in whole boxes", b.lines[i].quantity,
+                      q.lines[i].pieces_with_surplus, q.lines[i].pieces_to_order);
         }
     /* The WC: one piece at its list price (419.00 EUR, 19 % VAT). */
     CHECK(!strcmp(b.lines[4].product.article, "CE412901") && b.lines[4].quantity == 1);
@@ -343,7 +346,7 @@ static void test_billed_unit(void)
     t.boxes = 1;
     t.pieces_to_order = 20;
     t.order_m2 = 20 * 0.297 * 0.047;
-    CHECK_MSG(app_tile_billed_quantity(&t, CAT_UNIT_PIECE) == 8, "8 needed, %g billed",
+    CHECK_MSG(app_tile_billed_quantity(&t, CAT_UNIT_PIECE) == 9, "8 needed + 10 %%, %g billed",
               app_tile_billed_quantity(&t, CAT_UNIT_PIECE));
     CHECK(app_tile_billed_quantity(&t, CAT_UNIT_BOX) == 1);
     CHECK(fabs(app_tile_billed_quantity(&t, CAT_UNIT_M2) - t.order_m2) < 1e-12);

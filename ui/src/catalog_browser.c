@@ -1,6 +1,7 @@
 /* The catalog browser panel (ui/src/catalog_browser.h). */
 #include "catalog_browser.h"
 
+#include "app/design/quantities.h"
 #include "gui.h"
 #include "thumbnails.h"
 
@@ -90,8 +91,9 @@ static void details(ui_catalog_browser *b)
     long long cents = p->price_cents;
     if (b->variant < p->variant_count)
         cents += p->variants[b->variant].surcharge_cents;
-    ui_gui_text("%lld.%02lld %s per %s + %.0f %% VAT", cents / 100, cents % 100, p->currency,
-                cat_unit_name(p->unit), p->vat_percent);
+    char vat[32];
+    ui_gui_text("%lld.%02lld %s per %s + %s %% VAT", cents / 100, cents % 100, p->currency,
+                cat_unit_name(p->unit), app_format_percent(p->vat_percent, vat, sizeof vat));
     for (int v = 0; v < p->variant_count; v++) {
         char label[128];
         snprintf(label, sizeof label, "%s %s##variant%d", p->variants[v].code, p->variants[v].name,

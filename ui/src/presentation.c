@@ -5,6 +5,7 @@
 
 #include "planner.h"
 
+#include "app/design/quantities.h"
 #include "gui.h"
 #include "render/image_io.h"
 
@@ -110,8 +111,9 @@ static void product_card(planner *p, int width)
         if (*finish)
             ui_gui_text("finish: %s", finish);
         ui_gui_text("%.0f x %.0f x %.0f mm", card.width_mm, card.depth_mm, card.height_mm);
-        ui_gui_text("%lld.%02lld %s + %.0f %% VAT", cents / 100, cents % 100, card.currency,
-                    card.vat_percent);
+        char vat[32];
+        ui_gui_text("%lld.%02lld %s + %s %% VAT", cents / 100, cents % 100, card.currency,
+                    app_format_percent(card.vat_percent, vat, sizeof vat));
     }
     ui_gui_end();
 }

@@ -209,12 +209,13 @@ static void print_tiles(const app_quantities *q, const app_bom *b, int csv)
             snprintf(laid, sizeof laid, "%.2f m2", t->area_m2);
         else
             snprintf(laid, sizeof laid, "%.2f m", t->length_m);
-        snprintf(order, sizeof order, "%d pc", t->pieces_to_order);
+        int loose = i < b->line_count && b->lines[i].unit == CAT_UNIT_PIECE; /* sold per piece */
+        snprintf(order, sizeof order, "%d pc", loose ? t->pieces_with_surplus : t->pieces_to_order);
         printf("%-4s %-20.20s %-12.12s %-34.34s %-11s %6d %5d %6d %8s %7d %7d %6d %8s",
                type_name(t->spec.type), t->spec.product.manufacturer, t->spec.product.article,
                i < b->line_count ? b->lines[i].name : "", size, t->whole, t->cut, t->reused, laid,
                t->pieces_needed, t->pieces_with_surplus, t->boxes, order);
-        if (t->order_m2 > 0)
+        if (t->order_m2 > 0 && !loose)
             printf(" = %.2f m2", t->order_m2);
         putchar('\n');
     }

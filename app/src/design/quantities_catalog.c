@@ -173,12 +173,13 @@ double app_tile_billed_quantity(const app_tile_quantity *t, cat_unit unit)
         return 0;
     /* DOMAIN.md "Products and catalog records": the unit is part of the price. A box or m2
      * price sells whole boxes; a piece price (borders, decors) sells single pieces, so the
-     * customer pays for the pieces laid, not for the box they come in. */
+     * customer pays for the pieces ordered, with the surplus for cutting and breakage
+     * (DOMAIN.md: at least 10 %), not for the box they come in. */
     if (unit == CAT_UNIT_M2)
         return t->order_m2;
     if (unit == CAT_UNIT_BOX)
         return t->boxes > 0 ? t->boxes : t->pieces_to_order;
-    return t->pieces_needed;
+    return t->pieces_with_surplus;
 }
 
 /* The currency most found lines are priced in; ties go to the one that comes first (tiles come

@@ -218,7 +218,10 @@ static void tile_list(flow *f)
             snprintf(laid, sizeof laid, "%.2f m", t->length_m);
         else
             snprintf(laid, sizeof laid, "%.2f m2", t->area_m2);
-        if (t->boxes > 0)
+        if (b && b->unit == CAT_UNIT_PIECE) /* sold loose: app_tile_billed_quantity */
+            snprintf(order, sizeof order, "%d pcs +%.0f%%", t->pieces_with_surplus,
+                     t->surplus_percent);
+        else if (t->boxes > 0)
             snprintf(order, sizeof order, "%d box%s, %d pcs +%.0f%%", t->boxes,
                      t->boxes == 1 ? "" : "es", t->pieces_to_order, t->surplus_percent);
         else

@@ -134,8 +134,8 @@ typedef struct app_bom {
 } app_bom;
 
 /* The amount billed for tile line t in the unit the catalog prices it by (DOMAIN.md "Products
- * and catalog records": unit piece, m2 or box): pieces -> the pieces needed (whole and cut,
- * less the cuts an offcut serves), box -> whole boxes, m2 -> the m2 of the boxes ordered. */
+ * and catalog records": unit piece, m2 or box): pieces -> the pieces needed with the order
+ * surplus, without box rounding; box -> whole boxes; m2 -> the m2 of the boxes ordered. */
 double app_tile_billed_quantity(const app_tile_quantity *t, cat_unit unit);
 
 /* Totals the lines of b (their quantity, unit price, VAT and currency filled): each line's net,
