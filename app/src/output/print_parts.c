@@ -251,8 +251,8 @@ static void tile_list(flow *f)
     char text[256];
     snprintf(text, sizeof text,
              "Tiled %.2f m2 (grout %.2f m2). Order amounts include the surplus for cutting and "
-             "breakage and are rounded up to whole boxes; pieces priced per piece are billed "
-             "as laid.",
+             "breakage and are rounded up to whole boxes, except for products priced per piece, "
+             "which are ordered and billed loose.",
              d->q.tiled_area_m2, d->q.grout_area_m2);
     note(f, text);
 }
