@@ -6,6 +6,7 @@
 
 #include "app/design/quantities.h"
 
+#include <limits.h>
 #include <math.h>
 
 static app_tile_spec spec(double w, double h, app_tile_type type, int per_box, double m2_box)
@@ -388,8 +389,48 @@ static void test_mixed_currency(void)
               "net %lld vat %lld gross %lld", b.net_cents, b.vat_cents, b.gross_cents);
 }
 
+/* A price near INT64_MAX (a catalog file not written by the import) must not wrap to a negative
+ * quotation: the line is out of range, left out, and the totals say so instead of wrapping. */
+static void test_price_overflow(void)
+{
+    app_bom_line lines[4];
+    memset(lines, 0, sizeof lines);
+    for (int i = 0; i < 4; i++) {
+        lines[i].found = 1;
+        lines[i].quantity = 2;
+        lines[i].unit_price_cents = 1000;
+        lines[i].vat_percent = 19;
+        snprintf(lines[i].currency, sizeof lines[i].currency, "EUR");
+    }
+    lines[1].unit_price_cents = LLONG_MAX - 5;
+    app_bom b;
+    memset(&b, 0, sizeof b);
+    b.lines = lines;
+    b.line_count = 2;
+    app_bom_total(&b);
+    CHECK(lines[1].out_of_range && !lines[0].out_of_range);
+    CHECK_MSG(lines[1].net_cents == 0 && lines[1].gross_cents == 0, "line net %lld gross %lld",
+              lines[1].net_cents, lines[1].gross_cents);
+    CHECK(b.out_of_range == 1);
+    CHECK_MSG(b.net_cents == 0 && b.gross_cents == 0, "net %lld gross %lld", b.net_cents,
+              b.gross_cents);
+
+    /* Each line fits, their sum does not: still no wrapped total. */
+    for (int i = 0; i < 4; i++) {
+        lines[i].unit_price_cents = 1LL << 60;
+        lines[i].vat_percent = 0;
+    }
+    b.line_count = 4;
+    app_bom_total(&b);
+    CHECK(!lines[0].out_of_range && lines[0].net_cents == 1LL << 61);
+    CHECK(b.out_of_range == 1);
+    CHECK_MSG(b.net_cents == 0 && b.gross_cents == 0, "net %lld gross %lld", b.net_cents,
+              b.gross_cents);
+}
+
 int main(void)
 {
+    test_price_overflow();
     test_billed_unit();
     test_vat_label();
     test_mixed_currency();

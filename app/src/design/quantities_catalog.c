@@ -4,6 +4,7 @@
 #include "app/design/quantities.h"
 #include "tile_layout_internal.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -153,18 +154,37 @@ static void price_line(cat_db *db, app_bom_line *l)
     l->unit = p.unit;
     l->unit_price_cents = p.price_cents;
     for (int v = 0; v < p.variant_count; v++)
-        if (l->product.variant[0] && !strcmp(p.variants[v].code, l->product.variant))
-            l->unit_price_cents += p.variants[v].surcharge_cents;
+        if (l->product.variant[0] && !strcmp(p.variants[v].code, l->product.variant) &&
+            __builtin_add_overflow(l->unit_price_cents, p.variants[v].surcharge_cents,
+                                   &l->unit_price_cents))
+            l->unit_price_cents = LLONG_MAX; /* too large to total: total_line refuses it */
     l->vat_percent = p.vat_percent;
     snprintf(l->currency, sizeof l->currency, "%s", p.currency);
     cat_product_free(&p);
 }
 
+/* The largest amount a line or total may have, in cents. The import bounds a price to
+ * 100 000 000.00 (catalog/src/db_values.c), but a catalog file written by other means only
+ * promises price_cents > 0, and a price near INT64_MAX times a quantity wraps to a negative
+ * total. 2^61 keeps net + VAT (each at most this) inside long long, and is far above any
+ * real bathroom. */
+#define AMOUNT_MAX_CENTS 0x1p61
+
 static void total_line(app_bom_line *l)
 {
-    l->net_cents = llround(l->quantity * (double)l->unit_price_cents);
-    l->vat_cents = llround((double)l->net_cents * l->vat_percent / 100.0);
-    l->gross_cents = l->net_cents + l->vat_cents;
+    l->net_cents = l->vat_cents = l->gross_cents = 0;
+    l->out_of_range = 0;
+    /* Rounded in double as before, but range-checked before the conversion to long long (which
+     * is undefined when out of range); !(x <= max) also catches NaN. */
+    double net = round(l->quantity * (double)l->unit_price_cents);
+    double vat = round(net * l->vat_percent / 100.0);
+    if (!(fabs(net) <= AMOUNT_MAX_CENTS) || !(fabs(vat) <= AMOUNT_MAX_CENTS)) {
+        l->out_of_range = 1;
+        return;
+    }
+    l->net_cents = (long long)net;
+    l->vat_cents = (long long)vat;
+    l->gross_cents = l->net_cents + l->vat_cents; /* both <= 2^61: cannot overflow */
 }
 
 double app_tile_billed_quantity(const app_tile_quantity *t, cat_unit unit)
@@ -207,7 +227,8 @@ void app_bom_total(app_bom *b)
     if (!b)
         return;
     b->net_cents = b->vat_cents = b->gross_cents = 0;
-    b->missing = b->foreign = 0;
+    b->missing = b->foreign = b->out_of_range = 0;
+    int sum_overflow = 0;
     project_currency(b, b->currency);
     for (int k = 0; k < b->line_count; k++) {
         app_bom_line *l = &b->lines[k];
@@ -221,10 +242,19 @@ void app_bom_total(app_bom *b)
             b->foreign++;
             continue;
         }
-        b->net_cents += l->net_cents;
-        b->vat_cents += l->vat_cents;
-        b->gross_cents += l->gross_cents;
+        if (l->out_of_range) {
+            b->out_of_range++;
+            continue;
+        }
+        sum_overflow |= __builtin_add_overflow(b->net_cents, l->net_cents, &b->net_cents);
+        sum_overflow |= __builtin_add_overflow(b->vat_cents, l->vat_cents, &b->vat_cents);
+        sum_overflow |= __builtin_add_overflow(b->gross_cents, l->gross_cents, &b->gross_cents);
     }
+    /* A wrapped sum is worse than none: a quotation must not print it. */
+    if (sum_overflow)
+        b->out_of_range++;
+    if (b->out_of_range)
+        b->net_cents = b->vat_cents = b->gross_cents = 0;
 }
 
 const char *app_format_percent(double percent, char *buf, size_t size)
@@ -297,6 +327,24 @@ app_result app_bom_build(cat_db *db, const app_project *p, const app_quantities 
         qsort(out->lines + first_fixture, (size_t)(out->line_count - first_fixture),
               sizeof *out->lines, cmp_fixture);
     app_bom_total(out);
+    if (out->out_of_range) {
+        /* Name the line whose price cannot be totalled, so the catalog entry can be fixed. */
+        const app_bom_line *bad = NULL;
+        for (int k = 0; k < out->line_count && !bad; k++)
+            if (out->lines[k].out_of_range)
+                bad = &out->lines[k];
+        if (bad)
+            tl_set_err(err, err_size, "quantities",
+                       "%s %s: %g x %lld cents does not fit in an amount; check the catalog price",
+                       bad->product.manufacturer, bad->product.article, bad->quantity,
+                       bad->unit_price_cents);
+        else
+            tl_set_err(err, err_size, "quantities",
+                       "the total of the lines does not fit in an amount; check the catalog "
+                       "prices");
+        app_bom_free(out);
+        return APP_ERR_SCHEMA;
+    }
     return APP_OK;
 oom:
     app_bom_free(out);

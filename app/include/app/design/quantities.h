@@ -122,6 +122,8 @@ typedef struct app_bom_line {
     char currency[4];
     int foreign_currency; /* 1: priced in another currency than the project: left out of the
                              totals, reported as an error (docs/tiling.md "Bill of materials") */
+    int out_of_range;     /* 1: quantity x unit price or its VAT does not fit in cents: net, VAT
+                             and gross are 0 and the line is left out of the totals */
 } app_bom_line;
 
 typedef struct app_bom {
@@ -131,6 +133,8 @@ typedef struct app_bom {
     char currency[4]; /* the project's: the one most priced lines use (ties: the first) */
     int missing;      /* lines whose product the catalog does not have */
     int foreign;      /* lines in another currency, left out of the totals */
+    int out_of_range; /* lines whose amounts do not fit, plus 1 when a sum does not: then the
+                         totals are 0, never a wrapped number */
 } app_bom;
 
 /* The amount billed for tile line t in the unit the catalog prices it by (DOMAIN.md "Products
@@ -140,7 +144,8 @@ double app_tile_billed_quantity(const app_tile_quantity *t, cat_unit unit);
 
 /* Totals the lines of b (their quantity, unit price, VAT and currency filled): each line's net,
  * VAT and gross, the project's currency, and the sums over the lines in that currency. Lines in
- * another currency are marked foreign_currency and counted in b->foreign, never summed. */
+ * another currency are marked foreign_currency and counted in b->foreign, never summed. A line
+ * or sum that does not fit in cents is counted in b->out_of_range (see app_bom_build). */
 void app_bom_total(app_bom *b);
 
 /* Writes a VAT rate with the digits it has: 19 -> "19", 8.1 -> "8.1", 7.7 -> "7.7" (at most two
@@ -148,7 +153,8 @@ void app_bom_total(app_bom *b);
 const char *app_format_percent(double percent, char *buf, size_t size);
 
 /* Prices the tiles of q (their amount to order) and every placed product of p (objects with
- * has_product; equal references counted together) from the catalog. */
+ * has_product; equal references counted together) from the catalog. Fails with APP_ERR_SCHEMA,
+ * naming the line, when an amount does not fit (app_bom_total's out_of_range). */
 app_result app_bom_build(cat_db *db, const app_project *p, const app_quantities *q, app_bom *out,
                          char *err, size_t err_size);
 void app_bom_free(app_bom *b);
