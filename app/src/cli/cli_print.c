@@ -9,9 +9,11 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <libgen.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -128,6 +130,44 @@ static int render_cameras(const char *project, rd_backend backend, const app_qua
     return rc;
 }
 
+/* -o gets a PDF whatever its name, so x.txt would silently hold one: refuse any other extension
+ * (the SVG pages go to --svg DIR). Returns CLI_OK, or CLI_USAGE after saying why. */
+static int check_pdf_name(const char *path)
+{
+    const char *base = strrchr(path, '/');
+    const char *dot = strrchr(base ? base + 1 : path, '.');
+    if (dot && !strcasecmp(dot, ".pdf"))
+        return CLI_OK;
+    fprintf(stderr,
+            "tessera print: %s: not a .pdf file name; -o writes a PDF (SVG pages: --svg DIR)\n",
+            path);
+    return CLI_USAGE;
+}
+
+/* The PDF is written last, after the renders; checking its folder first fails fast and names the
+ * file and the reason, where the writer can only say its stream failed. Returns CLI_OK, or
+ * CLI_FAILED after saying why. */
+static int check_pdf_folder(const char *path)
+{
+    char copy[4096];
+    snprintf(copy, sizeof copy, "%s", path);
+    const char *dir = dirname(copy);
+    struct stat st;
+    int e = 0;
+    if (stat(dir, &st) != 0)
+        e = errno;
+    else if (!S_ISDIR(st.st_mode))
+        e = ENOTDIR;
+    else if (access(dir, W_OK | X_OK) != 0)
+        e = errno;
+    else if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
+        e = EISDIR;
+    if (!e)
+        return CLI_OK;
+    fprintf(stderr, "tessera print: cannot write %s: %s\n", path, strerror(e));
+    return CLI_FAILED;
+}
+
 int cli_cmd_print(const cli_options *o)
 {
     const char *project = o->project, *output = o->output, *svg = o->svg, *renders = o->renders;
@@ -142,6 +182,11 @@ int cli_cmd_print(const cli_options *o)
                             .no_clearances = o->no_clearances};
     if (!output)
         return cli_usage_error(o);
+    int checked = check_pdf_name(output);
+    if (checked == CLI_OK)
+        checked = check_pdf_folder(output);
+    if (checked != CLI_OK)
+        return checked;
     if (svg) {
         struct stat st;
         if (stat(svg, &st) != 0 && mkdir(svg, 0777) != 0) {
