@@ -174,6 +174,12 @@ static void test_errors(void)
                  "test.script:1:", "a wall is a whole number");
     expect_error("corner 1e300 0 0\n", "test.script:1:", "whole number");
     expect_error("variant basin XX\n", "test.script:1:", "no variant \"XX\"");
+    /* strtod's other notations are not numbers in a script: 0x100 is not 256. */
+    expect_error("# hex\nmove basin 0x100 2 3\n",
+                 "test.script:2:", "expected a number, got \"0x100\"");
+    expect_error("move basin 1 inf 3\n", "test.script:1:", "expected a number, got \"inf\"");
+    expect_error("move basin 1 2 nan\n", "test.script:1:", "expected a number, got \"nan\"");
+    expect_error("move basin 1 2 .\n", "test.script:1:", "expected a number, got \".\"");
 }
 
 /* Random lines from the script's own words: never a crash, every failure names its line,

@@ -82,10 +82,44 @@ static int tokenize(sctx *c, char *line)
     }
 }
 
+/* 1: s is a decimal number: [+-] digits [. digits] [e [+-] digits], with a digit somewhere
+ * before the exponent. strtod alone would also take 0x100 (256), inf and nan, none of which a
+ * hand-written script means as a size in millimetres. */
+static int decimal_syntax(const char *s)
+{
+    const char *digits = "0123456789";
+    if (*s == '+' || *s == '-')
+        s++;
+    size_t n = strspn(s, digits);
+    s += n;
+    if (*s == '.') {
+        s++;
+        size_t f = strspn(s, digits);
+        s += f;
+        n += f;
+    }
+    if (!n)
+        return 0;
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        if (*s == '+' || *s == '-')
+            s++;
+        size_t e = strspn(s, digits);
+        if (!e)
+            return 0;
+        s += e;
+    }
+    return *s == '\0';
+}
+
 static int number(sctx *c, int i, double *out)
 {
     if (i >= c->ntok)
         return fail(c, "%s: a number is missing at the end", c->tok[0]);
+    if (!decimal_syntax(c->tok[i]))
+        return fail(c,
+                    "%s: expected a number, got \"%s\" (decimal digits only, such as 12 or -0.5)",
+                    c->tok[0], c->tok[i]);
     char *end;
     double v = strtod(c->tok[i], &end);
     if (end == c->tok[i] || *end || !isfinite(v))
