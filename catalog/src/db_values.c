@@ -112,7 +112,10 @@ const char *catdb_parse_int(const char *text, long lo, long hi, long *out, char 
     return NULL;
 }
 
-#define MONEY_MAX_CENTS 10000000000LL /* 100 000 000.00 */
+/* 100 000 000.00: far above any bathroom product, and low enough that a quotation's quantity x
+ * price, its VAT and the sum over its lines stay well inside long long cents (a price near
+ * INT64_MAX would wrap the totals to a negative amount). */
+#define MONEY_MAX_CENTS 10000000000LL
 
 const char *catdb_parse_money(const char *text, int allow_zero, long long *cents, char *msg,
                               size_t msg_size)
