@@ -216,8 +216,11 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "output camera size supersample samples threads seed png mask quality shadows "
-                "ambient",
-     .summary = "the ground truth: a CPU ray tracer (Embree) with the same shading"},
+                "ambient bounces",
+     .summary = "the ground truth: a CPU ray tracer (Embree) with the same shading",
+     .help = "  Defaults: --bounces 4 (a path tracer with indirect and area lights), 16 paths a\n"
+             "  subsample; --bounces 0 is the direct-only tracer with 64 rays a glossy lookup.\n",
+     .defaults = cli_defaults_reference},
     {.name = "compare",
      .run = cli_cmd_compare,
      .synopsis = "A B",
@@ -232,16 +235,17 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "camera size supersample shadows frames warmup samples animate csv plot markdown "
-                "backend",
+                "backend bounces",
      .summary = "the speed/accuracy trade: each reflection setting timed and compared",
      .help = "  Defaults: 480x270, 16 samples a glossy lookup in the reference, 6 frames after 2\n"
              "  warm-up frames. The baseline takes the project's ambient model and supersampling\n"
-             "  (--supersample, --shadows refine it); the reference is traced with the same.\n",
+             "  (--supersample, --shadows refine it); the reference is traced with the same,\n"
+             "  direct light only unless --bounces N.\n",
      .defaults = cli_defaults_sweep},
     {.name = "extremes",
      .run = cli_cmd_extremes,
      .synopsis = "",
-     .options = "size samples markdown backend",
+     .options = "size samples markdown backend bounces",
      .summary = "RENDERING.md section 11: every extreme finite on the GPU and in the reference"},
     {.name = "help",
      .run = cli_cmd_help,

@@ -42,6 +42,7 @@ int cli_cmd_catalog_lod(const cli_options *o);
 void cli_defaults_bench(cli_options *o);
 void cli_defaults_probe_bench(cli_options *o);
 void cli_defaults_sweep(cli_options *o);
+void cli_defaults_reference(cli_options *o);
 void cli_defaults_quantities(cli_options *o);
 
 #endif

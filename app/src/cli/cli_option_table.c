@@ -178,7 +178,9 @@ static const cli_option_spec options[] = {
     ENUM("blur", blur, blur_names, "how probes are blurred for rough surfaces"),
     ENUM("ambient", ambient, ambient_names, "the ambient light's model"),
     ENUM("shadows", shadows, shadow_names, "shadows from every light"),
-    INT("samples", samples, 1, 1 << 20, "N", "Monte-Carlo rays a glossy lookup (reference)"),
+    INT("samples", samples, 1, 1 << 20, "N",
+        "Monte-Carlo rays a glossy lookup, or paths a subsample with --bounces (reference)"),
+    INT("bounces", bounces, 0, 1024, "N", "indirect bounces of the reference (0: direct only)"),
 
     /* Timing, video, reference, comparison. */
     INT("frames", frames, 1, 100000, "N", "frames timed"),

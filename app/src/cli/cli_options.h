@@ -36,6 +36,7 @@ typedef struct cli_options {
     int render_width, render_height; /* --render-size WxH (print) */
     int supersample;
     int samples; /* --samples: Monte-Carlo rays per glossy lookup (reference) */
+    int bounces; /* --bounces: indirect bounces of the reference (0 = direct light only) */
     const struct app_quality *quality; /* --quality: a preset (app/scene/quality.h) */
     rd_switch adaptive, planar_mirrors, room_probe, exact_lamps, self_reflections;
     int self_rays;        /* --self-reflections N: its lobe directions a sample; 0 = default */

@@ -335,12 +335,17 @@ int cli_cmd_sweep(const cli_options *args)
                 fprintf(stderr, "\r\033[K");
             fprintf(stderr,
                     "tessera sweep: reference %dx%d, %dx%d supersampling, shadows %s, %d samples "
-                    "per glossy lookup\n",
+                    "per %s, %d bounces\n",
                     view.width, view.height, st->supersample, st->supersample,
-                    rd_shadow_mode_name(st->shadows.mode), o.samples);
+                    rd_shadow_mode_name(st->shadows.mode), o.samples,
+                    o.bounces ? "subsample" : "glossy lookup", o.bounces);
             ref_scene_set_shadows(ref, &st->shadows);
             ref_render_desc rdesc = {
-                .view = view_k, .samples = o.samples, .seed = 1, .progress = 1};
+                .view = view_k,
+                .samples = o.samples,
+                .seed = 1,
+                .progress = 1,
+                .bounces = o.bounces};
             if (ref_render(ref, &rdesc, tr) != REF_OK) {
                 fprintf(stderr, "tessera sweep: %s\n", ref_last_error());
                 rc = CLI_FAILED;

@@ -51,7 +51,17 @@ typedef struct ref_mesh {
     bool reflective; /* reflectivity > 0 or transparency > 0: the GPU gives it a probe */
     bool background; /* casts no shadow (ref_shadow.c) */
     float uv_scale[2];
+    float emission[3]; /* max(C_emissive, 0): the radiance it emits as an area light */
 } ref_mesh;
+
+/* The emitting triangles the path tracer samples for next-event estimation (ref_path.c): each
+ * picked with probability area x power / total, power the mean of its emission. */
+typedef struct ref_emitters {
+    int count;
+    int *mesh, *prim;
+    double *cdf;  /* running sum of area x power, cdf[count - 1] = total */
+    double total; /* 0: no area lights */
+} ref_emitters;
 
 struct ref_scene {
     ref_mesh *meshes;
@@ -73,6 +83,7 @@ struct ref_scene {
     RTCDevice device;
     RTCScene rtc;
     bool dirty; /* meshes were added since the last commit */
+    ref_emitters emitters; /* made by ref_render for path tracing (ref_path.c) */
 };
 
 /* ---- tracing (ref_trace.c) ---------------------------------------------------------------- */
@@ -86,6 +97,46 @@ typedef struct ref_ray_diff {
 typedef struct ref_trace_stats {
     long long rays;
 } ref_trace_stats;
+
+/* A ray's first hit with the shading data lit.frag would have there. */
+typedef struct ref_surface {
+    const ref_mesh *mesh;
+    unsigned geom, prim;
+    float t;
+    float p[3];
+    float n[3]; /* shading normal as lit.frag makes it: unit (or V), flipped on back faces */
+    float uv[2];
+    int front;
+} ref_surface;
+
+/* The first surface along (org, dir) past tnear, leaving out triangle (skip_geom, skip_prim),
+ * back faces of closed meshes and, when `secondary`, glass. 1 on a hit. */
+int ref_intersect(const ref_scene *s, const float org[3], const float dir[3], float tnear,
+                  unsigned skip_geom, unsigned skip_prim, int secondary, ref_surface *out,
+                  ref_trace_stats *stats);
+
+/* The diffuse texture's colour at the hit (1 without a texture); with the primary ray's
+ * differentials (diff, from org) filtered over its footprint, else level 0. */
+void ref_surface_albedo(const ref_scene *s, const ref_surface *sf, const float org[3],
+                        const float dir[3], const ref_ray_diff *diff, float out[3]);
+
+/* Deterministic uniform numbers in [0, 1): index-th of the stream `key` (splitmix64). */
+uint64_t ref_mix64(uint64_t z);
+float ref_uniform01(uint64_t key, uint64_t index);
+/* An orthonormal basis around unit a (Duff et al. 2017). */
+void ref_basis(const float a[3], float t[3], float b[3]);
+
+/* ---- path tracing (ref_path.c) ------------------------------------------------------------ */
+
+/* Builds s->emitters from the meshes' emission (after the commit). */
+ref_result ref_emitters_prepare(ref_scene *s);
+void ref_emitters_free(ref_emitters *e);
+
+/* The mean radiance of `paths` paths through one primary ray with up to `bounces` indirect
+ * bounces (docs/reference.md, "Indirect light"); *reflective as ref_trace_primary. */
+void ref_path_primary(const ref_scene *s, const float origin[3], const float dir[3],
+                      const ref_ray_diff *diff, int bounces, int paths, uint64_t rng_key,
+                      float out[3], int *reflective, ref_trace_stats *stats);
 
 /* The radiance of one primary ray (before exposure); *reflective gets the mask bit of its first
  * hit. rng_key seeds this ray's Monte-Carlo samples. */
@@ -103,6 +154,13 @@ ref_result ref_ambient_prepare(ref_scene *s);
 void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3],
                            const float ng[3], float rotation, float vis[RD_MAX_LIGHTS],
                            ref_trace_stats *stats);
+/* The same with the given mode and taps (the path tracer shadows every vertex). */
+void ref_shadow_visibility_mode(const ref_scene *s, rd_shadow_mode mode, int taps, const float p[3],
+                                const float n[3], const float ng[3], float rotation,
+                                float vis[RD_MAX_LIGHTS], ref_trace_stats *stats);
+/* 1 when the segment from p to q (both excluded by the ray epsilon) meets no surface. */
+int ref_segment_clear(const ref_scene *s, const float p[3], const float q[3],
+                      ref_trace_stats *stats);
 
 /* ---- camera (ref_camera.c) ---------------------------------------------------------------- */
 

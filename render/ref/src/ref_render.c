@@ -24,7 +24,7 @@ typedef struct job {
     ref_scene *scene;
     ref_camera camera;
     const rd_view *view;
-    int ss, samples, tile, tiles_x, tiles_y, total;
+    int ss, samples, bounces, tile, tiles_x, tiles_y, total;
     uint64_t seed_key;
     ref_image *img;
     atomic_int next;
@@ -68,8 +68,12 @@ static void render_pixel(job *j, int x, int y, ref_trace_stats *stats)
                 ((uint64_t)y * (uint64_t)v->width + (uint64_t)x) * 256u + (uint64_t)(sy * ss + sx);
             float rad[3], d[3];
             int reflective;
-            ref_trace_primary(j->scene, j->camera.eye, dir, &diff, j->samples,
-                              mix64(j->seed_key ^ index), rad, &reflective, stats);
+            if (j->bounces > 0)
+                ref_path_primary(j->scene, j->camera.eye, dir, &diff, j->bounces, j->samples,
+                                 mix64(j->seed_key ^ index), rad, &reflective, stats);
+            else
+                ref_trace_primary(j->scene, j->camera.eye, dir, &diff, j->samples,
+                                  mix64(j->seed_key ^ index), rad, &reflective, stats);
             hits += reflective;
             for (int k = 0; k < 3; k++) {
                 float c = rad[k] * scale; /* tonemap.frag, LINEAR_OUT */
@@ -151,6 +155,9 @@ static ref_result validate(const ref_render_desc *d, int *ss)
     if (d->samples < 0 || d->samples > REF_MAX_SAMPLES)
         return ref_fail(REF_ERR_INVALID_ARGUMENT, "samples %d: expected 1 to %d (0 = 64)",
                         d->samples, REF_MAX_SAMPLES);
+    if (d->bounces < 0 || d->bounces > REF_MAX_BOUNCES)
+        return ref_fail(REF_ERR_INVALID_ARGUMENT, "bounces %d: expected 0 to %d", d->bounces,
+                        REF_MAX_BOUNCES);
     if (d->threads < 0 || d->tile < 0)
         return ref_fail(REF_ERR_INVALID_ARGUMENT, "threads %d and tile %d must be >= 0", d->threads,
                         d->tile);
@@ -166,6 +173,17 @@ void ref_image_free(ref_image *img)
     free(img->rgba8);
     free(img->mask);
     memset(img, 0, sizeof *img);
+}
+
+void ref_image_clamp_half(ref_image *img)
+{
+    if (!img || !img->linear)
+        return;
+    size_t n = 4 * (size_t)img->width * (size_t)img->height;
+    for (size_t i = 0; i < n; i++) {
+        float v = img->linear[i];
+        img->linear[i] = isnan(v) ? 0.0f : fminf(fmaxf(v, 0.0f), REF_HALF_MAX);
+    }
 }
 
 ref_result ref_render(ref_scene *s, const ref_render_desc *d, ref_image *out)
@@ -187,6 +205,8 @@ ref_result ref_render(ref_scene *s, const ref_render_desc *d, ref_image *out)
         r = ref_scene_commit(s);
     if (r == REF_OK)
         r = ref_ambient_prepare(s);
+    if (r == REF_OK && d->bounces > 0)
+        r = ref_emitters_prepare(s);
     if (r != REF_OK) {
         free(j);
         return r;
@@ -210,6 +230,7 @@ ref_result ref_render(ref_scene *s, const ref_render_desc *d, ref_image *out)
     j->view = v;
     j->ss = ss;
     j->samples = d->samples ? d->samples : 64;
+    j->bounces = d->bounces;
     j->tile = d->tile ? d->tile : 16;
     j->tiles_x = (v->width + j->tile - 1) / j->tile;
     j->tiles_y = (v->height + j->tile - 1) / j->tile;

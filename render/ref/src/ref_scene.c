@@ -43,6 +43,7 @@ void ref_scene_destroy(ref_scene *s)
         mesh_free(&s->meshes[i]);
     for (int i = 0; i < s->texture_count; i++)
         ref_texture_free(&s->textures[i]);
+    ref_emitters_free(&s->emitters);
     free(s->meshes);
     free(s->textures);
     free(s);
@@ -220,6 +221,10 @@ ref_result ref_scene_add_mesh(ref_scene *s, const ref_mesh_desc *d)
     m->reflective = d->material.reflectivity > 0.0f || d->material.transparency > 0.0f;
     m->glass = d->material.transparency > 0.0f;
     m->background = d->background != 0;
+    for (int k = 0; k < 3; k++) {
+        float e = d->material.emissive[k];
+        m->emission[k] = isfinite(e) && e > 0.0f ? e : 0.0f;
+    }
     for (int k = 0; k < 2; k++)
         m->uv_scale[k] = d->material.uv_scale[k] > 0.0f ? d->material.uv_scale[k] : 1.0f;
     s->mesh_count++;

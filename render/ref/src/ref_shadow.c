@@ -108,11 +108,18 @@ void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3
                            const float ng[3], float rotation, float vis[RD_MAX_LIGHTS],
                            ref_trace_stats *stats)
 {
+    ref_shadow_visibility_mode(s, s->shadows.mode, s->shadow_taps, p, n, ng, rotation, vis, stats);
+}
+
+void ref_shadow_visibility_mode(const ref_scene *s, rd_shadow_mode mode, int soft_taps,
+                                const float p[3], const float n[3], const float ng[3],
+                                float rotation, float vis[RD_MAX_LIGHTS], ref_trace_stats *stats)
+{
     for (int i = 0; i < RD_MAX_LIGHTS; i++)
         vis[i] = 1.0f;
-    if (s->shadows.mode == RD_SHADOWS_OFF)
+    if (mode == RD_SHADOWS_OFF)
         return;
-    int taps = s->shadows.mode == RD_SHADOWS_SOFT ? s->shadow_taps : 1;
+    int taps = mode == RD_SHADOWS_SOFT && soft_taps > 1 ? soft_taps : 1;
     /* The taps leave from the plane of the triangle that was hit, lifted off it along its
      * geometric normal, not from the tangent plane of the interpolated normal 4 ray epsilons
      * out. On a faceted curved surface (a basin's rim, a seat's torus) the interpolated normal
@@ -153,4 +160,32 @@ void ref_shadow_visibility(const ref_scene *s, const float p[3], const float n[3
         }
         vis[i] = sum / (float)taps;
     }
+}
+
+int ref_segment_clear(const ref_scene *s, const float p[3], const float q[3],
+                      ref_trace_stats *stats)
+{
+    /* Every surface blocks an area light, glass and the room's walls included: the path's own
+     * rays see them too, so the two halves of multiple importance sampling agree. */
+    struct RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    float d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    float len = sqrtf(ref_dot(d, d));
+    if (!(len > 2.0f * s->epsilon))
+        return 1;
+    struct RTCRay ray;
+    memset(&ray, 0, sizeof ray);
+    ray.org_x = p[0];
+    ray.org_y = p[1];
+    ray.org_z = p[2];
+    ray.dir_x = d[0] / len;
+    ray.dir_y = d[1] / len;
+    ray.dir_z = d[2] / len;
+    ray.tnear = s->epsilon;
+    ray.tfar = len - s->epsilon;
+    ray.mask = 0xFFFFFFFFu;
+    rtcOccluded1(s->rtc, &ctx, &ray);
+    if (stats)
+        stats->rays++;
+    return !(ray.tfar < 0.0f);
 }

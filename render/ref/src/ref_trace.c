@@ -48,17 +48,9 @@ static void hit_filter(const struct RTCFilterFunctionNArguments *a)
     }
 }
 
-typedef struct surface {
-    const ref_mesh *mesh;
-    unsigned geom, prim;
-    float t;
-    float p[3];
-    float n[3]; /* shading normal as lit.frag makes it: unit (or V), flipped on back faces */
-    float uv[2];
-    int front;
-} surface;
+typedef ref_surface surface;
 
-static int intersect(const ref_scene *s, const float org[3], const float dir[3], float tnear,
+int ref_intersect(const ref_scene *s, const float org[3], const float dir[3], float tnear,
                      unsigned skip_geom, unsigned skip_prim, int secondary, surface *out,
                      ref_trace_stats *stats)
 {
@@ -201,6 +193,42 @@ static void ambient_at(const ref_scene *s, const float n[3], float out[3])
         out[k] = fmaxf(out[k], 0.0f) / 3.14159265f;
 }
 
+/* The diffuse texture at the hit (albedo 1 without one): over the footprint the ray's
+ * neighbours span (the GPU's derivatives), else level 0. */
+static void texture_albedo(const ref_scene *s, const surface *sf, const float org[3],
+                           const float dir[3], const ray_fan *fan, float albedo[3])
+{
+    const ref_mesh *m = sf->mesh;
+    albedo[0] = albedo[1] = albedo[2] = 1.0f;
+    if (!m->texture)
+        return;
+    const ref_texture *t = &s->textures[m->texture - 1];
+    float uv[2] = {sf->uv[0] * m->uv_scale[0], sf->uv[1] * m->uv_scale[1]};
+    float base[2], ux[2], uy[2];
+    if (fan && fan->valid && uv_on_plane(m, sf->prim, org, dir, base) &&
+        uv_on_plane(m, sf->prim, fan->org_x, fan->dir_x, ux) &&
+        uv_on_plane(m, sf->prim, fan->org_y, fan->dir_y, uy)) {
+        float dx[2] = {(ux[0] - base[0]) * m->uv_scale[0], (ux[1] - base[1]) * m->uv_scale[1]};
+        float dy[2] = {(uy[0] - base[0]) * m->uv_scale[0], (uy[1] - base[1]) * m->uv_scale[1]};
+        ref_texture_sample_footprint(t, uv, dx, dy, REF_MAX_ANISO, albedo);
+    } else {
+        ref_texture_sample(t, uv[0], uv[1], 0.0f, albedo);
+    }
+}
+
+void ref_surface_albedo(const ref_scene *s, const ref_surface *sf, const float org[3],
+                        const float dir[3], const ref_ray_diff *diff, float out[3])
+{
+    ray_fan fan = {.valid = diff != NULL};
+    if (diff)
+        for (int k = 0; k < 3; k++) {
+            fan.org_x[k] = fan.org_y[k] = org[k];
+            fan.dir_x[k] = diff->dir_dx[k];
+            fan.dir_y[k] = diff->dir_dy[k];
+        }
+    texture_albedo(s, sf, org, dir, &fan, out);
+}
+
 /* Section 1 at a hit of the ray (org, dir), seen from `eye`. With the ray's neighbours the
  * texture is filtered over the footprint they span (the GPU's derivatives); without, level 0.
  * raw_lit = 1 leaves out the emissive max, which lit.frag applies only after the blend. */
@@ -210,20 +238,7 @@ static void shade_direct(const ref_scene *s, const surface *sf, const float eye[
 {
     const ref_mesh *m = sf->mesh;
     float albedo[3];
-    if (m->texture) {
-        const ref_texture *t = &s->textures[m->texture - 1];
-        float uv[2] = {sf->uv[0] * m->uv_scale[0], sf->uv[1] * m->uv_scale[1]};
-        float base[2], ux[2], uy[2];
-        if (fan && fan->valid && uv_on_plane(m, sf->prim, org, dir, base) &&
-            uv_on_plane(m, sf->prim, fan->org_x, fan->dir_x, ux) &&
-            uv_on_plane(m, sf->prim, fan->org_y, fan->dir_y, uy)) {
-            float dx[2] = {(ux[0] - base[0]) * m->uv_scale[0], (ux[1] - base[1]) * m->uv_scale[1]};
-            float dy[2] = {(uy[0] - base[0]) * m->uv_scale[0], (uy[1] - base[1]) * m->uv_scale[1]};
-            ref_texture_sample_footprint(t, uv, dx, dy, REF_MAX_ANISO, albedo);
-        } else {
-            ref_texture_sample(t, uv[0], uv[1], 0.0f, albedo);
-        }
-    }
+    texture_albedo(s, sf, org, dir, fan, albedo);
     rd_material mat = m->material;
     if (raw_lit)
         for (int k = 0; k < 3; k++)
@@ -310,7 +325,7 @@ static void secondary_radiance(const ref_scene *s, const surface *from, const fl
                                const ray_fan *fan, float out[3], ref_trace_stats *stats)
 {
     surface sf;
-    if (!intersect(s, from->p, dir, s->epsilon, from->geom, from->prim, 1, &sf, stats)) {
+    if (!ref_intersect(s, from->p, dir, s->epsilon, from->geom, from->prim, 1, &sf, stats)) {
         out[0] = out[1] = out[2] = 0.0f;
         return;
     }
@@ -318,21 +333,23 @@ static void secondary_radiance(const ref_scene *s, const surface *from, const fl
 }
 
 /* splitmix64's finaliser: a well-mixed 64-bit hash. */
-static uint64_t mix64(uint64_t z)
+uint64_t ref_mix64(uint64_t z)
 {
     z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
 }
+#define mix64 ref_mix64
 
-static float uniform01(uint64_t key, uint64_t index)
+float ref_uniform01(uint64_t key, uint64_t index)
 {
     return (float)(mix64(key + 0x9E3779B97F4A7C15ull * (index + 1)) >> 40) * (1.0f / 16777216.0f);
 }
+#define uniform01 ref_uniform01
 
 /* An orthonormal basis around unit a (Duff et al. 2017, "Building an orthonormal basis,
  * revisited"). */
-static void basis(const float a[3], float t[3], float b[3])
+void ref_basis(const float a[3], float t[3], float b[3])
 {
     float sign = copysignf(1.0f, a[2]);
     float p = -1.0f / (sign + a[2]);
@@ -370,7 +387,7 @@ static void lobe_radiance(const ref_scene *s, const surface *from, const float a
     float n = rd_ref_gloss_exponent(glossiness);
     float inv = 1.0f / (n + 1.0f);
     float t[3], b[3];
-    basis(axis, t, b);
+    ref_basis(axis, t, b);
     float shift = uniform01(key, 0xFFFFFFFFull);
     double sum[3] = {0, 0, 0};
     for (int i = 0; i < samples; i++) {
@@ -457,7 +474,7 @@ void ref_trace_primary(const ref_scene *s, const float origin[3], const float di
 {
     surface sf;
     *reflective = 0;
-    if (!intersect(s, origin, dir, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0, &sf,
+    if (!ref_intersect(s, origin, dir, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0, &sf,
                    stats)) {
         out[0] = out[1] = out[2] = 0.0f; /* the GPU clears to black */
         return;
@@ -496,7 +513,7 @@ int ref_scene_intersect(ref_scene *s, const float origin[3], const float dir[3],
     for (int k = 0; k < 3; k++)
         d[k] /= len;
     surface sf;
-    if (!intersect(s, origin, d, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0, &sf,
+    if (!ref_intersect(s, origin, d, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0, &sf,
                    NULL))
         return 0;
     hit->t = sf.t;

@@ -6,7 +6,9 @@
  * render/reflect_ref.h), so that the only difference left between the two is the reflection
  * method: where the GPU looks reflections up in per-object cube maps, this tracer follows the
  * reflected ray into the real geometry (one mirror bounce for glossiness 1, Monte-Carlo over the
- * same normalised Phong lobe for glossiness < 1). docs/reference.md describes every rule.
+ * same normalised Phong lobe for glossiness < 1). With bounces (ref_render_desc.bounces) it
+ * becomes a path tracer with indirect light and area lights: the physical ground truth.
+ * docs/reference.md describes every rule.
  *
  * A separate library (tessera_ref), linked by app and the tests only (ARCHITECTURE.md). Units:
  * metres, right-handed, Z up; colours linear RGB. Nothing here aborts; calls that can fail
@@ -112,7 +114,14 @@ typedef struct ref_render_desc {
     uint32_t seed; /* Monte-Carlo seed: the same seed gives the same image for any threads */
     int tile;      /* tile side in pixels handed to a thread at a time; 0 = 16 */
     int progress;  /* 1: redraw a progress bar on stderr (only when stderr is a terminal) */
+    /* Indirect light (docs/reference.md, "Indirect light"): 0 = the direct-only mode above;
+     * N >= 1 = a path tracer with up to N diffuse/glossy bounces, next-event estimation of
+     * every light and of emitting meshes (area lights), always shadowed, without the ambient
+     * term. `samples` is then the paths per subpixel. At most REF_MAX_BOUNCES. */
+    int bounces;
 } ref_render_desc;
+
+#define REF_MAX_BOUNCES 1024
 
 typedef struct ref_image {
     int width, height;
@@ -134,6 +143,12 @@ typedef struct ref_image {
  * is zeroed. */
 ref_result ref_render(ref_scene *s, const ref_render_desc *d, ref_image *out);
 void ref_image_free(ref_image *img);
+
+/* The largest finite half float: an .exr keeps linear radiance in halves. */
+#define REF_HALF_MAX 65504.0f
+/* Clamps img->linear to [0, REF_HALF_MAX] (NaN -> 0) so that no value turns into Inf when it is
+ * written as half floats (a lamp of 1e6 is brighter than any half). */
+void ref_image_clamp_half(ref_image *img);
 
 /* ---- single rays, for tests and diagnostics ------------------------------------------------ */
 
