@@ -43,6 +43,7 @@ void cli_defaults_bench(cli_options *o);
 void cli_defaults_probe_bench(cli_options *o);
 void cli_defaults_sweep(cli_options *o);
 void cli_defaults_reference(cli_options *o);
+void cli_defaults_extremes(cli_options *o);
 void cli_defaults_quantities(cli_options *o);
 
 #endif

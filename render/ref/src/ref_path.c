@@ -7,7 +7,9 @@
  *   rd_ref_shade computes them, shadowed by a ray (the GPU's soft taps at the first vertex when
  *   the scene asks for soft shadows), and no ambient term: the paths carry the indirect light
  *   the constant I_a stands in for;
- * - emitting triangles are area lights, sampled by area x power (next-event estimation) and
+ * - emitting triangles are area lights that emit from their front (counter-clockwise) side only,
+ *   as area lights in PBRT and Mitsuba do (a window pane or a ceiling panel shines into the room,
+ *   not into the wall behind it), sampled by area x power (next-event estimation) and
  *   combined with the paths that hit them by multiple importance sampling with the power
  *   heuristic (Veach and Guibas 1995), so no light is counted twice;
  * - the path continues through one part of the surface, picked by its weight: the diffuse and
@@ -282,9 +284,7 @@ static void area_lights(const ref_scene *s, const ref_surface *sf, const lobes *
         return;
     float l[3] = {d[0] / dist, d[1] / dist, d[2] / dist};
     const float *tri_n = m->tri_normals + 3 * (size_t)e->prim[i];
-    float cos_l = -ref_dot(tri_n, l) / sqrtf(ref_dot(tri_n, tri_n));
-    if (m->double_sided)
-        cos_l = fabsf(cos_l);
+    float cos_l = -ref_dot(tri_n, l) / sqrtf(ref_dot(tri_n, tri_n)); /* front side only */
     float f[3], pdf_lobes;
     lobes_eval(b, sf->n, v, l, f, &pdf_lobes);
     float nl = ref_dot(sf->n, l);
@@ -324,7 +324,7 @@ static void trace_path(const ref_scene *s, const float origin[3], const float di
         const ref_mesh *m = sf.mesh;
         if (depth == 0)
             *reflective = m->reflective;
-        if (emitted_power(m) > 0.0f && (sf.front || m->double_sided)) {
+        if (emitted_power(m) > 0.0f && sf.front) {
             float w = 1.0f;
             if (after_lobes) {
                 const float *tri_n = m->tri_normals + 3 * (size_t)sf.prim;
