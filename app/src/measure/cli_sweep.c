@@ -340,12 +340,11 @@ int cli_cmd_sweep(const cli_options *args)
                     rd_shadow_mode_name(st->shadows.mode), o.samples,
                     o.bounces ? "subsample" : "glossy lookup", o.bounces);
             ref_scene_set_shadows(ref, &st->shadows);
-            ref_render_desc rdesc = {
-                .view = view_k,
-                .samples = o.samples,
-                .seed = 1,
-                .progress = 1,
-                .bounces = o.bounces};
+            ref_render_desc rdesc = {.view = view_k,
+                                     .samples = o.samples,
+                                     .seed = 1,
+                                     .progress = 1,
+                                     .bounces = o.bounces};
             if (ref_render(ref, &rdesc, tr) != REF_OK) {
                 fprintf(stderr, "tessera sweep: %s\n", ref_last_error());
                 rc = CLI_FAILED;

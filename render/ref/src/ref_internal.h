@@ -82,7 +82,7 @@ struct ref_scene {
     float epsilon;                      /* ray offset: 1e-5 of the scene's diagonal */
     RTCDevice device;
     RTCScene rtc;
-    bool dirty; /* meshes were added since the last commit */
+    bool dirty;            /* meshes were added since the last commit */
     ref_emitters emitters; /* made by ref_render for path tracing (ref_path.c) */
 };
 

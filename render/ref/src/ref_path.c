@@ -20,9 +20,9 @@
  * The BSDF for bounced and area light is a diffuse lobe C_d / pi (the renderer's light I
  * stands for irradiance pi I, so section 1's C_d I N.L is exactly this lobe's response) and a
  * normalised Blinn-Phong lobe C_s (n + 8) / (8 pi) (N.H)^n (the normalisation of
- * Akenine-Moeller, Haines and Hoffman, Real-Time Rendering, 3rd ed., chapter 7), sampled by importance: cosine-weighted
- * for the diffuse lobe, H from ((n + 1) / 2 pi) (N.H)^n for the glossy one (Walter et al.
- * 2007: pdf_L = pdf_H / (4 V.H)). */
+ * Akenine-Moeller, Haines and Hoffman, Real-Time Rendering, 3rd ed., chapter 7), sampled by
+ * importance: cosine-weighted for the diffuse lobe, H from ((n + 1) / 2 pi) (N.H)^n for the glossy
+ * one (Walter et al. 2007: pdf_L = pdf_H / (4 V.H)). */
 #include "ref_internal.h"
 
 #include "render/reflect_ref.h"
@@ -238,8 +238,8 @@ static void renderer_lights(const ref_scene *s, const ref_surface *sf, const flo
     /* Physical light casts shadows: hard ones where the scene has none, the GPU's soft taps at
      * the first vertex where it asks for them, one ray deeper down (the blur of bounced light
      * hides the difference). */
-    rd_shadow_mode mode = first && s->shadows.mode == RD_SHADOWS_SOFT ? RD_SHADOWS_SOFT
-                                                                      : RD_SHADOWS_HARD;
+    rd_shadow_mode mode =
+        first && s->shadows.mode == RD_SHADOWS_SOFT ? RD_SHADOWS_SOFT : RD_SHADOWS_HARD;
     ref_shadow_visibility_mode(s, mode, s->shadow_taps, sf->p, sf->n, ng, turn, vis, stats);
     rd_light lights[RD_MAX_LIGHTS];
     for (int i = 0; i < s->light_count; i++) {
@@ -253,15 +253,15 @@ static void renderer_lights(const ref_scene *s, const ref_surface *sf, const flo
     for (int k = 0; k < 3; k++)
         mat.emissive[k] = -FLT_MAX; /* max(-FLT_MAX, lit) = lit */
     static const float no_ambient[3] = {0.0f, 0.0f, 0.0f};
-    rd_ref_shade(&mat, sf->mesh->texture ? albedo : NULL, sf->p, sf->n, eye, lights,
-                 s->light_count, no_ambient, out);
+    rd_ref_shade(&mat, sf->mesh->texture ? albedo : NULL, sf->p, sf->n, eye, lights, s->light_count,
+                 no_ambient, out);
 }
 
 /* Next-event estimation of the area lights through the lobes, MIS-weighted against the lobes'
  * own samples (unweighted at the `last` vertex, after which no lobe sample is traced). */
-static void area_lights(const ref_scene *s, const ref_surface *sf, const lobes *b,
-                        const float v[3], float u0, float u1, float u2, int last,
-                        ref_trace_stats *stats, float out[3])
+static void area_lights(const ref_scene *s, const ref_surface *sf, const lobes *b, const float v[3],
+                        float u0, float u1, float u2, int last, ref_trace_stats *stats,
+                        float out[3])
 {
     out[0] = out[1] = out[2] = 0.0f;
     const ref_emitters *e = &s->emitters;
@@ -313,7 +313,7 @@ static void trace_path(const ref_scene *s, const float origin[3], const float di
     memcpy(org, origin, sizeof org);
     memcpy(dir, dir_in, sizeof dir);
     unsigned skip_geom = RTC_INVALID_GEOMETRY_ID, skip_prim = RTC_INVALID_GEOMETRY_ID;
-    int after_lobes = 0;  /* the last bounce sampled the lobes (not a reflection lookup) */
+    int after_lobes = 0;   /* the last bounce sampled the lobes (not a reflection lookup) */
     float pdf_prev = 0.0f; /* its density, for the MIS weight of an emitter it hits */
     uint64_t dim = 0;      /* the next random number's index */
     for (int depth = 0;; depth++) {
@@ -465,8 +465,7 @@ void ref_path_primary(const ref_scene *s, const float origin[3], const float dir
         float c[3];
         int refl = 0;
         trace_path(s, origin, dir, diff, bounces,
-                   ref_mix64(rng_key + 0x9E3779B97F4A7C15ull * (uint64_t)(i + 1)), c, &refl,
-                   stats);
+                   ref_mix64(rng_key + 0x9E3779B97F4A7C15ull * (uint64_t)(i + 1)), c, &refl, stats);
         if (i == 0)
             *reflective = refl;
         for (int k = 0; k < 3; k++)

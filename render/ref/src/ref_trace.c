@@ -51,8 +51,8 @@ static void hit_filter(const struct RTCFilterFunctionNArguments *a)
 typedef ref_surface surface;
 
 int ref_intersect(const ref_scene *s, const float org[3], const float dir[3], float tnear,
-                     unsigned skip_geom, unsigned skip_prim, int secondary, surface *out,
-                     ref_trace_stats *stats)
+                  unsigned skip_geom, unsigned skip_prim, int secondary, surface *out,
+                  ref_trace_stats *stats)
 {
     trace_ctx c;
     rtcInitIntersectContext(&c.rtc);
@@ -339,13 +339,12 @@ uint64_t ref_mix64(uint64_t z)
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     return z ^ (z >> 31);
 }
-#define mix64 ref_mix64
 
 float ref_uniform01(uint64_t key, uint64_t index)
 {
-    return (float)(mix64(key + 0x9E3779B97F4A7C15ull * (index + 1)) >> 40) * (1.0f / 16777216.0f);
+    return (float)(ref_mix64(key + 0x9E3779B97F4A7C15ull * (index + 1)) >> 40) *
+           (1.0f / 16777216.0f);
 }
-#define uniform01 ref_uniform01
 
 /* An orthonormal basis around unit a (Duff et al. 2017, "Building an orthonormal basis,
  * revisited"). */
@@ -388,10 +387,10 @@ static void lobe_radiance(const ref_scene *s, const surface *from, const float a
     float inv = 1.0f / (n + 1.0f);
     float t[3], b[3];
     ref_basis(axis, t, b);
-    float shift = uniform01(key, 0xFFFFFFFFull);
+    float shift = ref_uniform01(key, 0xFFFFFFFFull);
     double sum[3] = {0, 0, 0};
     for (int i = 0; i < samples; i++) {
-        float u = ((float)i + uniform01(key, (uint64_t)i)) / (float)samples;
+        float u = ((float)i + ref_uniform01(key, (uint64_t)i)) / (float)samples;
         double vd = (double)shift + (double)i * 0.6180339887498949; /* exact for large i */
         float v = (float)(vd - floor(vd));
         float cos_t = powf(fmaxf(1.0f - u, 1e-30f), inv);
@@ -435,7 +434,7 @@ static void shade_reflective(const ref_scene *s, const surface *sf, const float 
     ray_fan bounced = {0};
     if (g >= 1.0f)
         bounce_fan(sf, fan, BOUNCE_REFLECT, 1.0f, &bounced);
-    lobe_radiance(s, sf, r, &bounced, g, samples, mix64(key ^ 0x5EF1ull), refl, stats);
+    lobe_radiance(s, sf, r, &bounced, g, samples, ref_mix64(key ^ 0x5EF1ull), refl, stats);
     float lit[3] = {lit_in[0], lit_in[1], lit_in[2]};
     float tr = clamp01(m->transparency);
     if (tr > 0.0f) {
@@ -453,7 +452,7 @@ static void shade_reflective(const ref_scene *s, const surface *sf, const float 
                 if (g >= 1.0f)
                     bounce_fan(sf, fan, kind, eta, &bounced);
                 lobe_radiance(s, sf, t, &bounced, g, samples,
-                              mix64(key ^ (0x7A11ull + (uint64_t)ch)), c, stats);
+                              ref_mix64(key ^ (0x7A11ull + (uint64_t)ch)), c, stats);
             }
             refr[ch] = c[ch];
             if (disp <= 0.0f) {
@@ -474,8 +473,8 @@ void ref_trace_primary(const ref_scene *s, const float origin[3], const float di
 {
     surface sf;
     *reflective = 0;
-    if (!ref_intersect(s, origin, dir, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0, &sf,
-                   stats)) {
+    if (!ref_intersect(s, origin, dir, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0,
+                       &sf, stats)) {
         out[0] = out[1] = out[2] = 0.0f; /* the GPU clears to black */
         return;
     }
@@ -487,7 +486,7 @@ void ref_trace_primary(const ref_scene *s, const float origin[3], const float di
             fan.dir_y[k] = diff->dir_dy[k];
         }
     /* The soft-shadow disk's turn for this sample: uniform in [0, 2 pi) (ref_shadow.c). */
-    float turn = 6.28318530718f * uniform01(rng_key, 0x5AD0ull);
+    float turn = 6.28318530718f * ref_uniform01(rng_key, 0x5AD0ull);
     if (!sf.mesh->reflective) {
         shade_direct(s, &sf, origin, origin, dir, &fan, 0, 1, turn, stats, out);
         return;
@@ -514,7 +513,7 @@ int ref_scene_intersect(ref_scene *s, const float origin[3], const float dir[3],
         d[k] /= len;
     surface sf;
     if (!ref_intersect(s, origin, d, 0.0f, RTC_INVALID_GEOMETRY_ID, RTC_INVALID_GEOMETRY_ID, 0, &sf,
-                   NULL))
+                       NULL))
         return 0;
     hit->t = sf.t;
     memcpy(hit->position, sf.p, sizeof hit->position);
@@ -545,7 +544,7 @@ ref_result ref_trace_ray(ref_scene *s, const float origin[3], const float dir[3]
     for (int k = 0; k < 3; k++)
         d[k] /= len;
     int reflective;
-    ref_trace_primary(s, origin, d, NULL, samples ? samples : 64, mix64(seed), out, &reflective,
+    ref_trace_primary(s, origin, d, NULL, samples ? samples : 64, ref_mix64(seed), out, &reflective,
                       NULL);
     return REF_OK;
 }
