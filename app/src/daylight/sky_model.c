@@ -155,8 +155,9 @@ void app_sky_make(const app_daylight *d, app_sky *s)
         for (int k = 0; k < 3; k++)
             s->zenith[k] = lz;
     }
-    /* The ground: a diffuse albedo of 0.2 under the sky and the sun (horizontal irradiance by
-     * a 16 x 64 midpoint sum over the upper hemisphere). */
+    /* The ground: grass and trees, a diffuse albedo of about 0.15 (green), under the sky and
+     * the sun (horizontal irradiance by a 16 x 64 midpoint sum over the upper hemisphere). */
+    const double albedo[3] = {0.14, 0.19, 0.09};
     double e[3] = {0, 0, 0};
     const int nt = 16, np = 64;
     for (int i = 0; i < nt; i++) {
@@ -173,6 +174,6 @@ void app_sky_make(const app_daylight *d, app_sky *s)
     }
     for (int k = 0; k < 3; k++) {
         double sun_e = s->sun_irradiance / fmax(d->strength, 1e-30) * sin_el;
-        s->ground[k] = (float)(0.2 * (e[k] + sun_e) / PI * d->strength);
+        s->ground[k] = (float)(albedo[k] * (e[k] + sun_e) / PI * d->strength);
     }
 }
