@@ -111,11 +111,20 @@ float light_towards(int i, vec3 x, vec3 n, out vec3 L)
 {
     if (u_light_type[i] == 2) {
         L = -u_light_direction[i];
+#ifdef AREA_LIGHTS
+        return portal_factor(i, x, L, u_light_position[i]); // area_light.glsl
+#else
         return 1.0;
+#endif
     }
     vec3 d = u_light_position[i] - x;
     float dist = length(d);
     L = dist > 0.0 ? d / dist : n;
+#ifdef AREA_LIGHTS
+    if (u_light_type[i] == 3) // a rectangle as a point light of its power (probe captures)
+        return rect_solid_angle(x, u_light_position[i], u_light_direction[i], u_light_half_width[i],
+                                u_light_half_height[i]) / 3.14159265;
+#endif
     vec3 a = u_light_attenuation[i];
     float k = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-4);
     if (u_light_type[i] == 1)
@@ -401,6 +410,21 @@ void main()
 #endif
     for (int i = 0; i < u_light_count; i++) {
         vec3 L;
+#ifdef AREA_LIGHTS
+        if (u_light_type[i] == 3) { // a rectangle light (area_light.glsl)
+            vec2 t = rect_light_terms(i, u_light_position[i], u_light_direction[i], v_world, N, V,
+                                      u_mat_shininess, L);
+#ifdef HAS_SHADOWS
+            if (t.x > 0.0)
+                t *= shadow_visibility(i, 3, u_light_position[i], v_world, N, L);
+#endif
+            lit += t.x * c_d * u_light_diffuse[i];
+#ifndef NO_SPECULAR
+            lit += u_specular_scale * t.y * u_mat_specular * u_light_specular[i];
+#endif
+            continue;
+        }
+#endif
         float k = light_towards(i, v_world, N, L);
         float n_dot_l = dot(N, L);
         if (n_dot_l <= 0.0)

@@ -24,7 +24,8 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
 {
     int type[RD_MAX_LIGHTS];
     float pos[RD_MAX_LIGHTS][3], dir[RD_MAX_LIGHTS][3], dif[RD_MAX_LIGHTS][3],
-        spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2];
+        spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2],
+        half_w[RD_MAX_LIGHTS][3], half_h[RD_MAX_LIGHTS][3];
     int n = 0;
     for (int i = 0; i < s->light_count; i++) {
         if (!(mask & (1u << i)))
@@ -38,6 +39,8 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
         memcpy(att[n], l->attenuation, sizeof att[n]);
         spot[n][0] = l->spot_inner_cos;
         spot[n][1] = l->spot_outer_cos;
+        memcpy(half_w[n], l->half_width, sizeof half_w[n]);
+        memcpy(half_h[n], l->half_height, sizeof half_h[n]);
         n++;
     }
     glUniform1i(p->u_light_count, n);
@@ -49,6 +52,10 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
         glUniform3fv(p->u_light_specular, n, &spec[0][0]);
         glUniform3fv(p->u_light_attenuation, n, &att[0][0]);
         glUniform2fv(p->u_light_spot, n, &spot[0][0]);
+        if (p->u_light_half_width >= 0) { /* the AREA_LIGHTS variant only */
+            glUniform3fv(p->u_light_half_width, n, &half_w[0][0]);
+            glUniform3fv(p->u_light_half_height, n, &half_h[0][0]);
+        }
     }
 }
 
@@ -324,7 +331,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                       (probe && o->material.sphere_map && probe->sphere_map && pass->view_rot
                            ? RD_LIT_SPHERE_MAP
                            : 0) |
-                      (shadows ? RD_LIT_SHADOWS : 0);
+                      (shadows ? RD_LIT_SHADOWS : 0) |
+                      (rd_scene_has_area_lights(scene) ? RD_LIT_AREA_LIGHTS : 0);
         int self_traced = probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) &&
                           !probe->planar && rd_self_traced(scene, probe);
         if (self_traced)

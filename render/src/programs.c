@@ -103,6 +103,8 @@ static void locate_lit(rd_program *p)
     p->u_light_specular = glGetUniformLocation(id, "u_light_specular");
     p->u_light_attenuation = glGetUniformLocation(id, "u_light_attenuation");
     p->u_light_spot = glGetUniformLocation(id, "u_light_spot");
+    p->u_light_half_width = glGetUniformLocation(id, "u_light_half_width");
+    p->u_light_half_height = glGetUniformLocation(id, "u_light_half_height");
     p->u_mat_ambient = glGetUniformLocation(id, "u_mat_ambient");
     p->u_mat_diffuse = glGetUniformLocation(id, "u_mat_diffuse");
     p->u_mat_specular = glGetUniformLocation(id, "u_mat_specular");
@@ -186,7 +188,7 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     char defines[600];
     snprintf(defines, sizeof defines,
              "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"
-             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s",
+             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s",
              RD_MAX_LIGHTS, RD_MAX_EMITTERS, RD_MAX_SELF_PARTS, RD_MAX_SELF_TEXTURES,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
@@ -197,14 +199,17 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
              box_opaque ? "#define BOX_OPAQUE_REFLECTION 1\n" : "",
              (variant & RD_LIT_NO_SPECULAR) ? "#define NO_SPECULAR 1\n" : "",
              planar ? "#define PLANAR_REFLECTION 1\n" : "",
-             self_trace ? "#define SELF_TRACE 1\n" : "");
+             self_trace ? "#define SELF_TRACE 1\n" : "",
+             (variant & RD_LIT_AREA_LIGHTS) ? "#define AREA_LIGHTS 1\n" : "");
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
-        p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
-                     reflecting ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl lit.frag"
-                                : "shadow.glsl lit.frag",
-                     defines);
+        p->id = link(
+            reflecting ? "reflect.glsl lit.vert" : "lit.vert",
+            reflecting
+                ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl area_light.glsl lit.frag"
+                : "shadow.glsl area_light.glsl lit.frag",
+            defines);
     if (!p->id)
         return NULL;
     locate_lit(p);

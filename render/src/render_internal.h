@@ -50,7 +50,8 @@ typedef struct rd_program {
     int u_model, u_normal_matrix, u_view_proj, u_eye;
     int u_ambient_light, u_light_count;
     int u_light_type, u_light_position, u_light_direction, u_light_diffuse, u_light_specular,
-        u_light_attenuation, u_light_spot;
+        u_light_attenuation, u_light_spot, u_light_half_width,
+        u_light_half_height; /* area_light.glsl */
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
     int u_diffuse_texture, u_uv_scale;
     int u_specular_scale;
@@ -77,14 +78,15 @@ enum {
     RD_LIT_PER_VERTEX = 4,
     RD_LIT_SPHERE_MAP = 8,
     RD_LIT_SH9 = 16,
-    RD_LIT_SHADOWS = 32,      /* shadow.glsl: shadow maps of every light */
-    RD_LIT_BOX_OPAQUE = 64,   /* reflecting with the box correction only, opaque, no surface
-                                 highlights: llvmpipe runs untaken uniform branches */
-    RD_LIT_DEPTH_ONLY = 128,  /* alone: lit.vert with depth_only.frag (the depth prepass) */
-    RD_LIT_NO_SPECULAR = 256, /* probe captures that leave highlights out: no specular code */
-    RD_LIT_PLANAR = 512,      /* a flat mirror's lookup in its planar capture (probe_planar.c) */
-    RD_LIT_SELF_TRACE = 1024, /* the lookup traces the product's own parts (self_trace.c) */
-    RD_LIT_VARIANTS = 2048
+    RD_LIT_SHADOWS = 32,       /* shadow.glsl: shadow maps of every light */
+    RD_LIT_BOX_OPAQUE = 64,    /* reflecting with the box correction only, opaque, no surface
+                                  highlights: llvmpipe runs untaken uniform branches */
+    RD_LIT_DEPTH_ONLY = 128,   /* alone: lit.vert with depth_only.frag (the depth prepass) */
+    RD_LIT_NO_SPECULAR = 256,  /* probe captures that leave highlights out: no specular code */
+    RD_LIT_PLANAR = 512,       /* a flat mirror's lookup in its planar capture (probe_planar.c) */
+    RD_LIT_SELF_TRACE = 1024,  /* the lookup traces the product's own parts (self_trace.c) */
+    RD_LIT_AREA_LIGHTS = 2048, /* area_light.glsl: rectangle lights and window portals */
+    RD_LIT_VARIANTS = 4096
 };
 
 struct rd_context {
@@ -157,6 +159,9 @@ void rd_resources_destroy_all(rd_context *ctx);
 
 rd_result rd_programs_create(rd_context *ctx);
 /* The lit program of a variant (RD_LIT_* bits), compiled on first use; NULL on failure. */
+/* 1 when the scene has a rectangle light or a directional light with a portal: its lit
+ * programs are the AREA_LIGHTS variant (area_light.glsl). */
+int rd_scene_has_area_lights(const rd_scene *s);
 const rd_program *rd_lit_program(rd_context *ctx, int variant);
 /* The tone map program for s samples per side, display or linear output; NULL on failure. */
 const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear);

@@ -207,7 +207,8 @@ rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *v)
     begin_hdr_pass(ctx);
     /* The same lighting program as the scene's plain objects, SH9 ambient included. */
     const rd_program *p =
-        rd_lit_program(ctx, scene->reflection.ambient == RD_AMBIENT_SH9 ? RD_LIT_SH9 : 0);
+        rd_lit_program(ctx, (scene->reflection.ambient == RD_AMBIENT_SH9 ? RD_LIT_SH9 : 0) |
+                                (rd_scene_has_area_lights(scene) ? RD_LIT_AREA_LIGHTS : 0));
     rd_set_frame_uniforms(p, scene, vp, v->eye);
     rd_material grey = {.ambient = {0.5f, 0.5f, 0.5f},
                         .diffuse = {0.5f, 0.5f, 0.5f},

@@ -85,6 +85,18 @@ rd_result rd_scene_add_object(rd_scene *s, const rd_object_desc *desc)
     return RD_OK;
 }
 
+int rd_scene_has_area_lights(const rd_scene *s)
+{
+    for (int i = 0; i < s->light_count; i++) {
+        const rd_light *l = &s->lights[i];
+        int portal =
+            l->half_width[0] != 0.0f || l->half_width[1] != 0.0f || l->half_width[2] != 0.0f;
+        if (l->type == RD_LIGHT_RECT || (l->type == RD_LIGHT_DIRECTIONAL && portal))
+            return 1;
+    }
+    return 0;
+}
+
 rd_result rd_scene_add_light(rd_scene *s, const rd_light *light)
 {
     if (!s || !light)
@@ -100,6 +112,16 @@ rd_result rd_scene_add_light(rd_scene *s, const rd_light *light)
                            "a spot or directional light needs a direction");
         for (int k = 0; k < 3; k++)
             l.direction[k] /= len;
+    }
+    if (l.type == RD_LIGHT_RECT) {
+        float uu = 0.0f, vv = 0.0f;
+        for (int k = 0; k < 3; k++) {
+            uu += l.half_width[k] * l.half_width[k];
+            vv += l.half_height[k] * l.half_height[k];
+        }
+        if (!(uu > 0.0f) || !(vv > 0.0f) || !isfinite(uu) || !isfinite(vv))
+            return rd_fail(RD_ERR_INVALID_ARGUMENT,
+                           "a rectangle light needs a width and a height (non-zero half edges)");
     }
     s->lights[s->light_count++] = l;
     s->change_counter++; /* probes and shadow maps that saw the scene without it are stale */

@@ -38,13 +38,18 @@ void rd_ref_light_incidence(const rd_light *light, const float p[3], const float
     if (light->type == RD_LIGHT_DIRECTIONAL) {
         for (int k = 0; k < 3; k++)
             l[k] = -light->direction[k];
-        *factor = 1.0f;
+        *factor = rd_ref_portal_factor(p, l, light);
         return;
     }
     float d[3] = {light->position[0] - p[0], light->position[1] - p[1], light->position[2] - p[2]};
     float dist = sqrtf(dot3(d, d));
     for (int k = 0; k < 3; k++)
         l[k] = dist > 0.0f ? d[k] / dist : n[k];
+    if (light->type == RD_LIGHT_RECT) {
+        /* As a point light at its centre of the same power: what probe captures draw. */
+        *factor = rd_ref_rect_solid_angle(p, light) / 3.14159265f;
+        return;
+    }
     const float *a = light->attenuation;
     float k = 1.0f / fmaxf(a[0] + a[1] * dist + a[2] * dist * dist, 1e-4f);
     if (light->type == RD_LIGHT_SPOT) {
@@ -53,6 +58,34 @@ void rd_ref_light_incidence(const rd_light *light, const float p[3], const float
                          light->spot_outer_cos);
     }
     *factor = k;
+}
+
+/* A rectangle light's diffuse and specular terms (area_light_ref.c, docs/rendering.md). */
+static void shade_rect(const rd_light *l, const rd_material *m, const float c_d[3],
+                       const float p[3], const float n[3], const float v[3], float lit[3])
+{
+    float ff = rd_ref_rect_form_factor(p, n, l);
+    if (!(ff > 0.0f))
+        return;
+    float n_dot_v = dot3(n, v), r[3], q[3];
+    for (int k = 0; k < 3; k++)
+        r[k] = 2.0f * n_dot_v * n[k] - v[k];
+    rd_ref_rect_representative_point(p, r, l, q);
+    float d[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, lq[3], h_raw[3], h[3];
+    normalize_or(d, n, lq);
+    float spec = 0.0f;
+    if (dot3(n, lq) > 0.0f) {
+        for (int k = 0; k < 3; k++)
+            h_raw[k] = lq[k] + v[k];
+        normalize_or(h_raw, n, h);
+        spec = rd_ref_blinn_phong_power(dot3(n, h), m->shininess) *
+               rd_ref_rect_specular_solid_angle(rd_ref_rect_solid_angle(p, l), m->shininess) /
+               3.14159265f;
+    }
+    for (int k = 0; k < 3; k++) {
+        lit[k] += c_d[k] * l->diffuse[k] * ff;
+        lit[k] += m->specular[k] * l->specular[k] * spec;
+    }
 }
 
 void rd_ref_shade(const rd_material *m, const float albedo_scale[3], const float p[3],
@@ -72,6 +105,10 @@ void rd_ref_shade(const rd_material *m, const float albedo_scale[3], const float
         c_d[k] = m->diffuse[k] * s;
     }
     for (int i = 0; i < light_count; i++) {
+        if (lights[i].type == RD_LIGHT_RECT) {
+            shade_rect(&lights[i], m, c_d, p, n, v, lit);
+            continue;
+        }
         float l[3], factor;
         rd_ref_light_incidence(&lights[i], p, n, l, &factor);
         float n_dot_l = dot3(n, l);

@@ -327,7 +327,7 @@ static rd_result shadow_maps_update(rd_context *ctx, rd_scene *s)
     for (int pass = 0; pass < 2; pass++)
         for (int i = 0; i < s->light_count; i++) {
             const rd_light *l = &s->lights[i];
-            int cube = l->type == RD_LIGHT_POINT ||
+            int cube = l->type == RD_LIGHT_POINT || l->type == RD_LIGHT_RECT ||
                        (l->type == RD_LIGHT_SPOT && l->spot_outer_cos < CUBE_SPOT_COS);
             if (cube != (pass == 0))
                 continue;

@@ -110,9 +110,13 @@ static void test_window_and_door(void)
     CHECK(g.light_count == 1);
     if (g.light_count == 1) {
         const app_light *l = &g.lights[0];
-        CHECK(l->type == APP_LIGHT_SPOT);
-        CHECK(l->direction[1] > 0 && l->direction[2] < 0); /* into the room, downwards */
+        /* the opening as a rectangle light in the outside face, facing into the room (the
+         * default overcast sky has no sun) */
+        CHECK(l->type == APP_LIGHT_RECT);
+        CHECK(NEAR(l->direction[1], 1, 1e-9) && NEAR(l->direction[2], 0, 1e-9));
         CHECK(NEAR(l->position_mm[0], 1400, 1e-9) && NEAR(l->position_mm[2], 1500, 1e-9));
+        CHECK(NEAR(l->width_mm, 800, 1e-9) && NEAR(l->height_mm, 1200, 1e-9));
+        CHECK(l->color[0] > 0.1f && l->color[0] < 10.0f);
     }
     check_winding(&g);
     app_room_geometry_free(&g);

@@ -42,6 +42,14 @@ void rm_rect(rm_build *b, app_room_mesh *m, const double origin[3], const double
 void rm_add_floor_ceiling(rm_build *b);
 void rm_add_walls(rm_build *b);
 void rm_add_prewalls(rm_build *b);
-void rm_add_window_light(rm_build *b, const app_opening *o, const rm_wall *w);
+/* The point s along wall w, t above the floor, off in front of its inside face (negative:
+ * into the wall), mm. */
+void rm_wall_point(const rm_wall *w, double s, double t, double off, double out[3]);
+/* A flat panel in the plane `off` from the inside face, facing into the room. */
+void rm_panel(rm_build *b, app_room_mesh *m, const rm_wall *w, double s0, double s1, double t0,
+              double t1, double off);
+/* A window's exterior behind the opening (surface `name`, bands of it `name:N`) and the
+ * daylight it lets in (room_mesh_window.c); T the wall's thickness. */
+void rm_add_window(rm_build *b, const app_opening *o, const rm_wall *w, double T, const char *name);
 
 #endif

@@ -15,7 +15,7 @@ typedef struct hole {
     double s0, s1, t0, t1;
 } hole;
 
-static void wall_point(const rm_wall *w, double s, double t, double off, double out[3])
+void rm_wall_point(const rm_wall *w, double s, double t, double off, double out[3])
 {
     /* off: distance in front of the inside face (negative: into the wall) */
     out[0] = w->a[0] + s * w->d[0] + off * w->n[0];
@@ -85,8 +85,8 @@ static void wall_face(rm_build *b, app_room_mesh *m, const rm_wall *w, const hol
         if (se - sa < 1e-6)
             continue;
         double pa[3], pe[3];
-        wall_point(w, sa, 0, 0, pa);
-        wall_point(w, se, 0, 0, pe);
+        rm_wall_point(w, sa, 0, 0, pa);
+        rm_wall_point(w, se, 0, 0, pe);
         double ha = rm_ceiling_height(plan, pa[0], pa[1]),
                he = rm_ceiling_height(plan, pe[0], pe[1]);
         double hmin = fmin(ha, he);
@@ -106,19 +106,19 @@ static void wall_face(rm_build *b, app_room_mesh *m, const rm_wall *w, const hol
             double ta = tb[j], te = j + 1 < nt ? tb[j + 1] : hmin;
             if (te - ta > 1e-6 && !in_hole(h, nh, smid, 0.5 * (ta + te))) {
                 double origin[3];
-                wall_point(w, se, ta, 0, origin);
+                rm_wall_point(w, se, ta, 0, origin);
                 rm_rect(b, m, origin, down_wall, se - sa, up, te - ta, L - se, ta);
             }
         }
         if (fabs(ha - he) > 1e-6 && !in_hole(h, nh, smid, hmin + 1e-3)) {
             /* the sloped top: a triangle above hmin */
             double p[3][3], uv[3][2];
-            wall_point(w, sa, hmin, 0, p[0]);
-            wall_point(w, se, hmin, 0, p[1]);
+            rm_wall_point(w, sa, hmin, 0, p[0]);
+            rm_wall_point(w, se, hmin, 0, p[1]);
             if (ha > he)
-                wall_point(w, sa, ha, 0, p[2]);
+                rm_wall_point(w, sa, ha, 0, p[2]);
             else
-                wall_point(w, se, he, 0, p[2]);
+                rm_wall_point(w, se, he, 0, p[2]);
             double s_of[3] = {sa, se, ha > he ? sa : se};
             int v[3];
             for (int k = 0; k < 3; k++) {
@@ -146,10 +146,10 @@ static void hole_sides(rm_build *b, app_room_mesh *m, app_room_mesh *bottom_mesh
             continue;
         double t = side == 0 ? h->t0 : h->t1;
         const double n[3] = {0, 0, side == 0 ? 1 : -1};
-        wall_point(w, h->s0, t, 0, p[0]);
-        wall_point(w, h->s1, t, 0, p[1]);
-        wall_point(w, h->s1, t, -depth, p[2]);
-        wall_point(w, h->s0, t, -depth, p[3]);
+        rm_wall_point(w, h->s0, t, 0, p[0]);
+        rm_wall_point(w, h->s1, t, 0, p[1]);
+        rm_wall_point(w, h->s1, t, -depth, p[2]);
+        rm_wall_point(w, h->s0, t, -depth, p[3]);
         const double s_of[4] = {h->s0, h->s1, h->s1, h->s0}, d_of[4] = {0, 0, depth, depth};
         for (int k = 0; k < 4; k++) {
             uv[k][0] = (w->length - s_of[k]) / tex[0];
@@ -161,10 +161,10 @@ static void hole_sides(rm_build *b, app_room_mesh *m, app_room_mesh *bottom_mesh
     for (int side = 0; side < 2; side++) {
         double s = side == 0 ? h->s0 : h->s1, sign = side == 0 ? 1 : -1;
         const double n[3] = {sign * w->d[0], sign * w->d[1], 0};
-        wall_point(w, s, h->t0, 0, p[0]);
-        wall_point(w, s, h->t0, -depth, p[1]);
-        wall_point(w, s, h->t1, -depth, p[2]);
-        wall_point(w, s, h->t1, 0, p[3]);
+        rm_wall_point(w, s, h->t0, 0, p[0]);
+        rm_wall_point(w, s, h->t0, -depth, p[1]);
+        rm_wall_point(w, s, h->t1, -depth, p[2]);
+        rm_wall_point(w, s, h->t1, 0, p[3]);
         const double d_of[4] = {0, depth, depth, 0}, t_of[4] = {h->t0, h->t0, h->t1, h->t1};
         for (int k = 0; k < 4; k++) {
             uv[k][0] = d_of[k] / tex[0];
@@ -174,37 +174,19 @@ static void hole_sides(rm_build *b, app_room_mesh *m, app_room_mesh *bottom_mesh
     }
 }
 
-/* A flat panel in the plane `off` from the inside face, facing into the room. */
-static void panel(rm_build *b, app_room_mesh *m, const rm_wall *w, double s0, double s1, double t0,
-                  double t1, double off)
+void rm_panel(rm_build *b, app_room_mesh *m, const rm_wall *w, double s0, double s1, double t0,
+              double t1, double off)
 {
     double tex[2], p[4][3], uv[4][2];
     rm_texture_size(b, m, tex);
     const double n[3] = {w->n[0], w->n[1], 0};
     const double s_of[4] = {s0, s1, s1, s0}, t_of[4] = {t0, t0, t1, t1};
     for (int k = 0; k < 4; k++) {
-        wall_point(w, s_of[k], t_of[k], off, p[k]);
+        rm_wall_point(w, s_of[k], t_of[k], off, p[k]);
         uv[k][0] = (w->length - s_of[k]) / tex[0];
         uv[k][1] = -t_of[k] / tex[1];
     }
     rm_quad(b, m, p, uv, n);
-}
-
-static app_material sky_material(const app_opening *o)
-{
-    app_material m;
-    memset(&m, 0, sizeof m);
-    snprintf(m.name, sizeof m.name, "%.50s#sky", o->name);
-    /* Daylight seen through the window: twice the light it lets in, so the sky is brighter
-     * than any lit wall and reads as outside (a dim grey when it lets none in, so the opening
-     * still reads as a window). */
-    float peak = fmaxf(o->light[0], fmaxf(o->light[1], o->light[2]));
-    for (int k = 0; k < 3; k++)
-        m.emissive[k] = peak > 0 ? 2.0f * o->light[k] : 0.25f;
-    m.texture_size_mm[0] = m.texture_size_mm[1] = 1000;
-    m.glossiness = 1;
-    m.ior = 1.5f;
-    return m;
 }
 
 static app_material door_material(const app_opening *o)
@@ -222,44 +204,6 @@ static app_material door_material(const app_opening *o)
     m.glossiness = 1;
     m.ior = 1.5f;
     return m;
-}
-
-void rm_add_window_light(rm_build *b, const app_opening *o, const rm_wall *w)
-{
-    if (!(o->light[0] > 0 || o->light[1] > 0 || o->light[2] > 0))
-        return;
-    app_room_geometry *g = b->g;
-    app_light *l = realloc(g->lights, (size_t)(g->light_count + 1) * sizeof *l);
-    if (!l) {
-        b->oom = 1;
-        return;
-    }
-    g->lights = l;
-    l = &g->lights[g->light_count++];
-    memset(l, 0, sizeof *l);
-    snprintf(l->name, sizeof l->name, "%.50s#daylight", o->name);
-    l->type = APP_LIGHT_SPOT;
-    /* Just inside the opening's centre, aimed into the room and 30 degrees down: daylight
-     * falling through the window onto the floor and the opposite wall. The window's own wall
-     * is behind the light and stays unlit, as it would. */
-    double p[3];
-    wall_point(w, o->offset_mm + 0.5 * o->width_mm, o->sill_mm + 0.5 * o->height_mm, 10, p);
-    const double down = 30.0 * 3.14159265358979323846 / 180.0;
-    for (int k = 0; k < 3; k++)
-        l->position_mm[k] = p[k];
-    l->direction[0] = w->n[0] * cos(down);
-    l->direction[1] = w->n[1] * cos(down);
-    l->direction[2] = -sin(down);
-    for (int k = 0; k < 3; k++) {
-        l->color[k] = o->light[k];
-        l->specular[k] = o->light[k];
-    }
-    l->intensity = 1.0f;
-    l->attenuation[0] = 1.0f;
-    l->attenuation[1] = 0.0f;
-    l->attenuation[2] = 0.15f;
-    l->inner_deg = 35.0f;
-    l->outer_deg = 75.0f;
 }
 
 void rm_add_walls(rm_build *b)
@@ -318,18 +262,15 @@ void rm_add_walls(rm_build *b)
             hole_sides(b, sides, bottom, &w, &h, window ? T : 0.5 * T);
             char extra[96];
             snprintf(extra, sizeof extra, "%s:%d", window ? "window" : "door", k);
+            if (window) {
+                rm_add_window(b, o, &w, T, extra); /* room_mesh_window.c */
+                continue;
+            }
             app_room_mesh *leaf = rm_mesh(b, extra, -1);
             if (!leaf)
                 break;
-            leaf->inline_material = window ? sky_material(o) : door_material(o);
-            if (window) {
-                /* The sky: beyond the outside face, wider than the opening so the reveals
-                 * frame it from any angle inside. */
-                panel(b, leaf, &w, h.s0 - 400, h.s1 + 400, h.t0 - 400, h.t1 + 400, -T - 30);
-                rm_add_window_light(b, o, &w);
-            } else {
-                panel(b, leaf, &w, h.s0, h.s1, h.t0, h.t1, -0.5 * T);
-            }
+            leaf->inline_material = door_material(o);
+            rm_panel(b, leaf, &w, h.s0, h.s1, h.t0, h.t1, -0.5 * T);
         }
         for (int k = 0; k < plan->niche_count && !b->oom; k++) {
             const app_niche *n = &plan->niches[k];
@@ -341,7 +282,7 @@ void rm_add_walls(rm_build *b)
             hole h = {n->offset_mm, n->offset_mm + n->width_mm, n->sill_mm,
                       n->sill_mm + n->height_mm};
             hole_sides(b, r, r, &w, &h, n->depth_mm);
-            panel(b, r, &w, h.s0, h.s1, h.t0, h.t1, -n->depth_mm);
+            rm_panel(b, r, &w, h.s0, h.s1, h.t0, h.t1, -n->depth_mm);
         }
     }
     free(holes);
@@ -364,12 +305,12 @@ void rm_add_prewalls(rm_build *b)
         double s0 = pw->offset_mm, s1 = pw->offset_mm + pw->width_mm, dp = pw->depth_mm,
                hp = pw->height_mm, tex[2], p[4][3], uv[4][2];
         rm_texture_size(b, m, tex);
-        panel(b, m, &w, s0, s1, 0, hp, dp); /* front */
+        rm_panel(b, m, &w, s0, s1, 0, hp, dp); /* front */
         /* top: normal up, u along the wall, v from the wall out */
         const double up[3] = {0, 0, 1};
         const double s_top[4] = {s0, s1, s1, s0}, d_top[4] = {0, 0, dp, dp};
         for (int k = 0; k < 4; k++) {
-            wall_point(&w, s_top[k], hp, d_top[k], p[k]);
+            rm_wall_point(&w, s_top[k], hp, d_top[k], p[k]);
             uv[k][0] = (w.length - s_top[k]) / tex[0];
             uv[k][1] = -d_top[k] / tex[1];
         }
@@ -380,7 +321,7 @@ void rm_add_prewalls(rm_build *b)
             const double n[3] = {sign * w.d[0], sign * w.d[1], 0};
             const double d_of[4] = {0, dp, dp, 0}, t_of[4] = {0, 0, hp, hp};
             for (int k = 0; k < 4; k++) {
-                wall_point(&w, s, t_of[k], d_of[k], p[k]);
+                rm_wall_point(&w, s, t_of[k], d_of[k], p[k]);
                 uv[k][0] = d_of[k] / tex[0];
                 uv[k][1] = -t_of[k] / tex[1];
             }

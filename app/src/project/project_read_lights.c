@@ -19,11 +19,13 @@ static app_result read_type(pj_ctx *c, const cJSON *item, app_light *l)
         l->type = APP_LIGHT_SPOT;
     else if (strcmp(t->valuestring, "directional") == 0)
         l->type = APP_LIGHT_DIRECTIONAL;
+    else if (strcmp(t->valuestring, "rect") == 0)
+        l->type = APP_LIGHT_RECT;
     else {
         pj_path_key(c, "type");
         return pj_fail(c, APP_ERR_SCHEMA,
-                       "unknown light type \"%.*s\" (expected point, spot or directional)", 64,
-                       t->valuestring);
+                       "unknown light type \"%.*s\" (expected point, spot, directional or rect)",
+                       64, t->valuestring);
     }
     return APP_OK;
 }
@@ -45,6 +47,40 @@ static app_result read_direction(pj_ctx *c, const cJSON *item, app_light *l)
     d[0] = x / len;
     d[1] = y / len;
     d[2] = z / len;
+    return APP_OK;
+}
+
+/* A rectangle light's size and the direction of its width: given, or horizontal and square
+ * to the direction (X when the light faces straight up or down). */
+static app_result read_rect(pj_ctx *c, const cJSON *item, app_light *l)
+{
+    app_result r;
+    if ((r = pj_get_number(c, item, "width", 1, PJ_POSITIVE, &l->width_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "height", 1, PJ_POSITIVE, &l->height_mm)) != APP_OK)
+        return r;
+    const double *d = l->direction;
+    double a[3] = {d[1], -d[0], 0}; /* direction x Z */
+    if (cJSON_GetObjectItemCaseSensitive(item, "axis")) {
+        if ((r = pj_get_vec(c, item, "axis", 1, 3, PJ_ANY, a)) != APP_OK)
+            return r;
+    } else if (hypot(a[0], a[1]) < 1e-6) {
+        a[0] = 1;
+        a[1] = a[2] = 0;
+    }
+    /* Square to the direction: the part of the axis across it. */
+    double along = a[0] * d[0] + a[1] * d[1] + a[2] * d[2];
+    for (int k = 0; k < 3; k++)
+        a[k] -= along * d[k];
+    double len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    if (!(len > 1e-9)) {
+        pj_path_key(c, "axis");
+        return pj_fail(c, APP_ERR_SCHEMA, "must not be parallel to direction");
+    }
+    for (int k = 0; k < 3; k++)
+        l->axis[k] = a[k] / len;
+    l->height_axis[0] = d[1] * l->axis[2] - d[2] * l->axis[1];
+    l->height_axis[1] = d[2] * l->axis[0] - d[0] * l->axis[2];
+    l->height_axis[2] = d[0] * l->axis[1] - d[1] * l->axis[0];
     return APP_OK;
 }
 
@@ -70,6 +106,8 @@ static app_result read_light(pj_ctx *c, const cJSON *item, int index, void *out)
     memcpy(l->specular, l->color, sizeof l->specular); /* specular defaults to color */
     if ((r = pj_get_color(c, item, "specular", 0, l->specular)) != APP_OK ||
         (r = pj_get_vecf(c, item, "attenuation", 0, 3, PJ_FLOAT_NONNEG, l->attenuation)) != APP_OK)
+        return r;
+    if (l->type == APP_LIGHT_RECT && (r = read_rect(c, item, l)) != APP_OK)
         return r;
     if (l->attenuation[0] == 0 && l->attenuation[1] == 0 && l->attenuation[2] == 0) {
         pj_path_key(c, "attenuation");

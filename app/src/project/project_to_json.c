@@ -4,6 +4,7 @@
  * written, defaults included, so a file says everything it means. */
 #include "project_internal.h"
 
+#include <stdio.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -258,7 +259,7 @@ static void put_object(jb *b, cJSON *list, const app_object *obj)
     put_material_ref(b, o, "material", obj->material);
 }
 
-static const char *const light_types[] = {"point", "spot", "directional"};
+static const char *const light_types[] = {"point", "spot", "directional", "rect"};
 
 static void put_light(jb *b, cJSON *list, const app_light *l)
 {
@@ -280,6 +281,11 @@ static void put_light(jb *b, cJSON *list, const app_light *l)
     put_num(b, o, "intensity", l->intensity, 1);
     put_vec(b, o, "specular", NULL, l->specular, 3);
     put_vec(b, o, "attenuation", NULL, l->attenuation, 3);
+    if (l->type == APP_LIGHT_RECT) {
+        put_num(b, o, "width", l->width_mm, 0);
+        put_num(b, o, "height", l->height_mm, 0);
+        put_vec(b, o, "axis", l->axis, NULL, 3);
+    }
     if (l->type == APP_LIGHT_SPOT) {
         put_num(b, o, "inner", l->inner_deg, 1);
         put_num(b, o, "outer", l->outer_deg, 1);
@@ -294,6 +300,40 @@ static void put_camera(jb *b, cJSON *list, const app_camera *cam)
     put_vec(b, o, "target", cam->target_mm, NULL, 3);
     put_vec(b, o, "up", cam->up, NULL, 3);
     put_num(b, o, "fov", cam->fov_deg, 0);
+}
+
+/* Written only when the file had it (or an edit set it): a project without keeps the
+ * default overcast sky and stays as it was. */
+static void put_daylight(jb *b, cJSON *root)
+{
+    const app_daylight *d = &b->p->daylight;
+    if (b->r != APP_OK || !d->present)
+        return;
+    cJSON *o = put_container(b, root, "daylight", 0);
+    size_t mark = pj_path_key(b->c, "daylight");
+    static const char *const sky[] = {"overcast", "overcast", "clear"};
+    static const char *const model[] = {"cie", "constant", "preetham"};
+    int m = (unsigned)d->model <= APP_SKY_PREETHAM ? (int)d->model : 0;
+    put_str(b, o, "sky", sky[m], 16);
+    put_str(b, o, "model", model[m], 16);
+    char date[32], time[16];
+    int minutes = (int)floor(d->hour * 60.0 + 0.5);
+    snprintf(date, sizeof date, "%04d-%02d-%02d", d->year, d->month, d->day);
+    snprintf(time, sizeof time, "%02d:%02d", minutes / 60 % 24, minutes % 60);
+    put_str(b, o, "date", date, sizeof date);
+    put_str(b, o, "time", time, sizeof time);
+    if (d->site[0]) {
+        put_str(b, o, "site", d->site, sizeof d->site);
+    } else {
+        put_num(b, o, "latitude", d->latitude_deg, 0);
+        put_num(b, o, "longitude", d->longitude_deg, 0);
+    }
+    put_num(b, o, "utc_offset", d->utc_offset_h, 0);
+    put_num(b, o, "north", d->north_deg, 0);
+    put_num(b, o, "turbidity", d->turbidity, 1);
+    put_num(b, o, "strength", d->strength, 1);
+    if (b->r == APP_OK)
+        pj_path_restore(b->c, mark);
 }
 
 static void put_render(jb *b, cJSON *root)
@@ -370,6 +410,7 @@ app_result pj_project_to_json(pj_ctx *c, const app_project *p, const char *dest_
             pj_path_restore(c, mark);
     }
     put_render(&b, root);
+    put_daylight(&b, root);
     if (b.r != APP_OK) {
         cJSON_Delete(root);
         return b.r;

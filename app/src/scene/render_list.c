@@ -132,6 +132,7 @@ static rd_light light_of(const app_light *l)
 {
     rd_light r = {.type = l->type == APP_LIGHT_SPOT          ? RD_LIGHT_SPOT
                           : l->type == APP_LIGHT_DIRECTIONAL ? RD_LIGHT_DIRECTIONAL
+                          : l->type == APP_LIGHT_RECT        ? RD_LIGHT_RECT
                                                              : RD_LIGHT_POINT};
     for (int k = 0; k < 3; k++) {
         r.position[k] = (float)(l->position_mm[k] * 1e-3);
@@ -143,6 +144,15 @@ static rd_light light_of(const app_light *l)
     const double deg = 3.14159265358979323846 / 180.0;
     r.spot_inner_cos = (float)cos(l->inner_deg * deg);
     r.spot_outer_cos = (float)cos(l->outer_deg * deg);
+    /* A rectangle (or a directional light's portal): half edges along its two axes. */
+    if ((l->type == APP_LIGHT_RECT || l->type == APP_LIGHT_DIRECTIONAL) && l->width_mm > 0 &&
+        l->height_mm > 0) {
+        const double *a = l->axis, *b = l->height_axis;
+        for (int k = 0; k < 3; k++) {
+            r.half_width[k] = (float)(a[k] * l->width_mm * 0.5e-3);
+            r.half_height[k] = (float)(b[k] * l->height_mm * 0.5e-3);
+        }
+    }
     return r;
 }
 

@@ -153,6 +153,10 @@ typedef enum rd_light_type {
     RD_LIGHT_POINT = 0,
     RD_LIGHT_SPOT,
     RD_LIGHT_DIRECTIONAL,
+    /* An emitting rectangle (a window pane, a mirror light, an LED strip, a ceiling panel):
+     * Lambertian, radiance I_d (diffuse) and I_s (specular), lighting the side `direction`
+     * points to; docs/rendering.md, "Area lights". */
+    RD_LIGHT_RECT,
 } rd_light_type;
 
 typedef struct rd_light {
@@ -164,6 +168,12 @@ typedef struct rd_light {
     float attenuation[3]; /* constant, linear, quadratic: 1 / (c + l d + q d^2), d in metres */
     float spot_inner_cos; /* full intensity inside this cone (cosine of the half-angle) */
     float spot_outer_cos; /* zero outside; smoothstep in between */
+    /* RD_LIGHT_RECT: the rectangle around `position`, as its two half edges (world vectors,
+     * metres, square to each other and to `direction`). RD_LIGHT_DIRECTIONAL: when not zero, a
+     * portal (a window opening) centred at `position`: the light reaches only the points whose
+     * ray towards it passes through that rectangle (the wall around the opening shades the
+     * rest). Zero for the other lights. */
+    float half_width[3], half_height[3];
 } rd_light;
 
 #define RD_MAX_LIGHTS 16

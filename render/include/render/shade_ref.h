@@ -16,6 +16,22 @@ float rd_ref_blinn_phong_power(float n_dot_h, float n);
 void rd_ref_light_incidence(const rd_light *light, const float p[3], const float n[3], float l[3],
                             float *factor);
 
+/* Rectangle lights and portals (area_light_ref.c, the twin of shaders/area_light.glsl). */
+/* The form factor (cosine-weighted solid angle over pi) of rectangle light l seen from p with
+ * unit normal n, clipped to p's horizon; 0 behind the light. A Lambertian surface of albedo
+ * C_d under radiance I_d reflects C_d I_d times this. */
+float rd_ref_rect_form_factor(const float p[3], const float n[3], const rd_light *l);
+/* The solid angle of l seen from p (area x cosine / distance^2 at its centre, at most 2 pi). */
+float rd_ref_rect_solid_angle(const float p[3], const rd_light *l);
+/* The point of l that stands for it in the highlight of the reflected direction r. */
+void rd_ref_rect_representative_point(const float p[3], const float r[3], const rd_light *l,
+                                      float q[3]);
+/* The part of a light's solid angle a Blinn-Phong lobe of exponent n can take in. */
+float rd_ref_rect_specular_solid_angle(float solid_angle, float shininess);
+/* 1 when the ray from p along l_dir (towards a directional light) passes through l's portal
+ * (or l has none), else 0. */
+float rd_ref_portal_factor(const float p[3], const float l_dir[3], const rd_light *l);
+
 /* The lit colour of one surface point, section 1: max(C_emissive, C_a I_a + sum(C_d I_d N.L +
  * C_s I_s (N.H)^n)). albedo_scale multiplies C_a and C_d (the diffuse texture), NULL = 1.
  * n is the shading normal after the front-face flip; it need not be unit length. */

@@ -12,6 +12,7 @@
 #ifndef APP_PROJECT_H
 #define APP_PROJECT_H
 
+#include "app/daylight/daylight.h"
 #include "app/design/room.h"
 
 #include <stddef.h>
@@ -113,7 +114,8 @@ typedef struct app_object {
 typedef enum app_light_type {
     APP_LIGHT_POINT,
     APP_LIGHT_SPOT,
-    APP_LIGHT_DIRECTIONAL
+    APP_LIGHT_DIRECTIONAL,
+    APP_LIGHT_RECT /* an emitting rectangle: mirror light, LED strip, panel, window pane */
 } app_light_type;
 
 typedef struct app_light {
@@ -129,6 +131,12 @@ typedef struct app_light {
                                    1,0,1; att = 1/(c + l d + q d^2) with d in metres */
     float inner_deg, outer_deg; /* spot cone half-angles from the axis: full intensity inside
                                    inner, smooth falloff to 0 at outer; defaults 25, 35 */
+    double width_mm, height_mm; /* rect: its size (width along `axis`), each > 0. A directional
+                                   light with both > 0 comes in only through that rectangle
+                                   around position_mm (a window; set by the room, not read) */
+    double axis[3];             /* rect: the direction of its width, unit, square to direction;
+                                   default horizontal (direction x Z), or X for a vertical light */
+    double height_axis[3];      /* the direction of its height (rect: direction x axis) */
 } app_light;
 
 typedef struct app_camera {
@@ -171,6 +179,7 @@ typedef struct app_project {
     app_camera *cameras;
     int camera_count;
     app_render_settings render;
+    app_daylight daylight; /* the sky and sun through the windows */
 } app_project;
 
 /* Reads and validates a project file. *out is overwritten (not freed first): on success it
