@@ -37,7 +37,7 @@ const app_bake_stats *app_bake_last_stats(void)
 
 /* Bump when the bake's meaning or the file's layout changes: old files are then ignored. */
 #define BAKE_FORMAT 1
-static const char MAGIC[8] = "TSBAKE1";
+static const char MAGIC[8] = "TSBAKE2";
 
 /* FNV-1a, 64 bits (Fowler, Noll and Vo). */
 static uint64_t fnv(uint64_t h, const void *data, size_t n)
@@ -116,6 +116,7 @@ typedef struct cache_entry {
 
 typedef struct cache_file {
     uint64_t scene;
+    long long total_texels;
     int atlas_width, atlas_height;
     float *atlas;
     int entry_count;
@@ -167,7 +168,7 @@ static int cache_read(const char *path, cache_file *c)
         return 0;
     char magic[8];
     int ok = read_all(f, magic, 8) && !memcmp(magic, MAGIC, 8) && read_all(f, &c->scene, 8) &&
-             read_all(f, &c->atlas_width, 4) && read_all(f, &c->atlas_height, 4) &&
+             read_all(f, &c->total_texels, 8) && read_all(f, &c->atlas_width, 4) && read_all(f, &c->atlas_height, 4) &&
              c->atlas_width >= 0 && c->atlas_height >= 0 && c->atlas_width <= 16384 &&
              c->atlas_height <= 16384;
     size_t texels = ok ? (size_t)c->atlas_width * (size_t)c->atlas_height : 0;
@@ -203,7 +204,7 @@ static int cache_write(const char *path, uint64_t scene, const uint64_t *keys, c
         return 0;
     size_t texels = (size_t)b->atlas_width * (size_t)b->atlas_height;
     int ok = fwrite(MAGIC, 1, 8, f) == 8 && fwrite(&scene, 8, 1, f) == 1 &&
-             fwrite(&b->atlas_width, 4, 1, f) == 1 && fwrite(&b->atlas_height, 4, 1, f) == 1 &&
+             fwrite(&b->total_texels, 8, 1, f) == 1 && fwrite(&b->atlas_width, 4, 1, f) == 1 && fwrite(&b->atlas_height, 4, 1, f) == 1 &&
              fwrite(b->atlas, sizeof(float), 4 * texels, f) == 4 * texels &&
              fwrite(&b->mesh_count, 4, 1, f) == 1;
     for (int i = 0; ok && i < b->mesh_count; i++) {
@@ -241,6 +242,7 @@ static app_result bake_from_cache(const cache_file *c, ref_bake *out)
     }
     out->atlas_width = c->atlas_width;
     out->atlas_height = c->atlas_height;
+    out->total_texels = c->total_texels;
     memcpy(out->atlas, c->atlas, 4 * texels * sizeof(float));
     for (int i = 0; i < c->entry_count; i++) {
         const cache_entry *e = &c->entries[i];
@@ -347,6 +349,7 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
         stats->cache_hit = 1;
         stats->reused_elements = l->item_count;
         stats->total_vertices = out->total_vertices;
+        stats->total_texels = out->total_texels;
         cache_free(&c);
         free(keys);
         free(lightmapped);
