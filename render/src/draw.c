@@ -324,9 +324,9 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                       (probe && o->material.sphere_map && probe->sphere_map && pass->view_rot
                            ? RD_LIT_SPHERE_MAP
                            : 0) |
-                      (shadows ? RD_LIT_SHADOWS : 0) |
-                      (m->bake && !depth_only && (m->bake == 1 || scene->lightmap) ? RD_LIT_BAKED
-                                                                                    : 0);
+                      (shadows ? RD_LIT_SHADOWS : 0);
+        if (m->bake && !depth_only && (m->bake == 1 || scene->lightmap))
+            variant |= RD_LIT_BAKED; /* the ambient from the bake's vertices or lightmap */
         int self_traced = probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) &&
                           !probe->planar && rd_self_traced(scene, probe);
         if (self_traced)

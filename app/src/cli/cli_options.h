@@ -38,7 +38,7 @@ typedef struct cli_options {
     int samples; /* --samples: Monte-Carlo rays per glossy lookup (reference) */
     const struct app_quality *quality; /* --quality: a preset (app/scene/quality.h) */
     rd_switch adaptive, planar_mirrors, room_probe, exact_lamps, self_reflections;
-    rd_switch bake; /* --bake: baked indirect light (default on unless TESSERA_BAKE=off) */
+    rd_switch bake;       /* --bake: baked indirect light (default on unless TESSERA_BAKE=off) */
     int self_rays;        /* --self-reflections N: its lobe directions a sample; 0 = default */
     int probe_resolution; /* texels a face side; 0 = the preset's */
     rd_backend backend;

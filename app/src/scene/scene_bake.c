@@ -135,7 +135,7 @@ static void cache_free(cache_file *c)
 static int cache_dir(char *out, size_t n)
 {
     const char *xdg = getenv("XDG_CACHE_HOME"), *home = getenv("HOME");
-    int w = xdg && *xdg ? snprintf(out, n, "%s/tessera", xdg)
+    int w = xdg && *xdg     ? snprintf(out, n, "%s/tessera", xdg)
             : home && *home ? snprintf(out, n, "%s/.cache/tessera", home)
                             : -1;
     return w > 0 && (size_t)w < n;
@@ -168,9 +168,9 @@ static int cache_read(const char *path, cache_file *c)
         return 0;
     char magic[8];
     int ok = read_all(f, magic, 8) && !memcmp(magic, MAGIC, 8) && read_all(f, &c->scene, 8) &&
-             read_all(f, &c->total_texels, 8) && read_all(f, &c->atlas_width, 4) && read_all(f, &c->atlas_height, 4) &&
-             c->atlas_width >= 0 && c->atlas_height >= 0 && c->atlas_width <= 16384 &&
-             c->atlas_height <= 16384;
+             read_all(f, &c->total_texels, 8) && read_all(f, &c->atlas_width, 4) &&
+             read_all(f, &c->atlas_height, 4) && c->atlas_width >= 0 && c->atlas_height >= 0 &&
+             c->atlas_width <= 16384 && c->atlas_height <= 16384;
     size_t texels = ok ? (size_t)c->atlas_width * (size_t)c->atlas_height : 0;
     ok = ok && (c->atlas = malloc(4 * texels * sizeof(float) + 4)) &&
          read_all(f, c->atlas, 4 * texels * sizeof(float)) && read_all(f, &c->entry_count, 4) &&
@@ -204,7 +204,8 @@ static int cache_write(const char *path, uint64_t scene, const uint64_t *keys, c
         return 0;
     size_t texels = (size_t)b->atlas_width * (size_t)b->atlas_height;
     int ok = fwrite(MAGIC, 1, 8, f) == 8 && fwrite(&scene, 8, 1, f) == 1 &&
-             fwrite(&b->total_texels, 8, 1, f) == 1 && fwrite(&b->atlas_width, 4, 1, f) == 1 && fwrite(&b->atlas_height, 4, 1, f) == 1 &&
+             fwrite(&b->total_texels, 8, 1, f) == 1 && fwrite(&b->atlas_width, 4, 1, f) == 1 &&
+             fwrite(&b->atlas_height, 4, 1, f) == 1 &&
              fwrite(b->atlas, sizeof(float), 4 * texels, f) == 4 * texels &&
              fwrite(&b->mesh_count, 4, 1, f) == 1;
     for (int i = 0; ok && i < b->mesh_count; i++) {
@@ -370,9 +371,8 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
                        .reach_m = APP_BAKE_REACH_M};
     if (r == APP_OK && cached) {
         boxes = calloc((size_t)(l->item_count + c.entry_count) + 1, sizeof *boxes);
-        if (!boxes ||
-            partial_setup(l, keys, &c, &prev, keep, boxes, &box_count, &stats->reused_elements) !=
-                APP_OK)
+        if (!boxes || partial_setup(l, keys, &c, &prev, keep, boxes, &box_count,
+                                    &stats->reused_elements) != APP_OK)
             r = APP_ERR_OUT_OF_MEMORY;
         d.previous = &prev;
         d.keep = keep;

@@ -117,14 +117,15 @@ static rd_mesh baked_mesh_of(rd_context *ctx, const app_render_list *l, app_scen
         (bm->kind == REF_BAKE_LIGHTMAP && !bake->atlas_width))
         return mesh_of(ctx, l, s, it->mesh);
     s->baked_meshes[i] = rd_mesh_create(
-        ctx, &(rd_mesh_desc){.positions = m->positions,
-                             .normals = m->normals,
-                             .uvs = m->uvs,
-                             .indices = m->indices,
-                             .vertex_count = m->vertex_count,
-                             .index_count = m->index_count,
-                             .baked_light = bm->kind == REF_BAKE_VERTEX ? bm->vertex : NULL,
-                             .lightmap_uvs = bm->kind == REF_BAKE_LIGHTMAP ? bm->lightmap_uv : NULL});
+        ctx,
+        &(rd_mesh_desc){.positions = m->positions,
+                        .normals = m->normals,
+                        .uvs = m->uvs,
+                        .indices = m->indices,
+                        .vertex_count = m->vertex_count,
+                        .index_count = m->index_count,
+                        .baked_light = bm->kind == REF_BAKE_VERTEX ? bm->vertex : NULL,
+                        .lightmap_uvs = bm->kind == REF_BAKE_LIGHTMAP ? bm->lightmap_uv : NULL});
     return s->baked_meshes[i];
 }
 
@@ -183,8 +184,8 @@ static app_result scene_from_list(rd_context *ctx, const app_render_list *l, app
         if (!out->baked_meshes)
             return APP_ERR_OUT_OF_MEMORY;
         if (bake->atlas_width && bake->atlas_height &&
-            rd_scene_set_lightmap(out->scene, bake->atlas_width, bake->atlas_height,
-                                  bake->atlas) != RD_OK) {
+            rd_scene_set_lightmap(out->scene, bake->atlas_width, bake->atlas_height, bake->atlas) !=
+                RD_OK) {
             snprintf(err, err_size, "%s: %s", l->path, rd_last_error());
             return APP_ERR_OUT_OF_MEMORY;
         }

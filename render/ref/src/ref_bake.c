@@ -82,7 +82,8 @@ static ref_result check_previous(const ref_bake_desc *d, const ref_bake *b)
 {
     const ref_bake *prev = d->previous;
     if (prev->mesh_count != b->mesh_count || prev->atlas_width != b->atlas_width ||
-        prev->atlas_height != b->atlas_height || (b->atlas_width > 0 && b->atlas_height > 0 && !prev->atlas))
+        prev->atlas_height != b->atlas_height ||
+        (b->atlas_width > 0 && b->atlas_height > 0 && !prev->atlas))
         return ref_fail(REF_ERR_INVALID_ARGUMENT,
                         "ref_bake: the previous bake has another layout (%d meshes, atlas %dx%d; "
                         "now %d, %dx%d)",

@@ -126,7 +126,8 @@ static void cover_triangle(ref_bake *b, const ref_bake_chart *c, const float *p0
         q[i][0] = ref_dot(d, c->u) / c->texel_m + 0.5f; /* in chart texels, centre at i + 0.5 */
         q[i][1] = ref_dot(d, c->v) / c->texel_m + 0.5f;
     }
-    float area = (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[2][0] - q[0][0]) * (q[1][1] - q[0][1]);
+    float area =
+        (q[1][0] - q[0][0]) * (q[2][1] - q[0][1]) - (q[2][0] - q[0][0]) * (q[1][1] - q[0][1]);
     if (!(fabsf(area) > 1e-12f))
         return;
     int x0 = (int)floorf(fminf(q[0][0], fminf(q[1][0], q[2][0]))) - 1;

@@ -193,7 +193,8 @@ static void hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh,
             continue;
         float tfar = INFINITY;
         if (l->type != RD_LIGHT_DIRECTIONAL) {
-            float d[3] = {l->position[0] - org[0], l->position[1] - org[1], l->position[2] - org[2]};
+            float d[3] = {l->position[0] - org[0], l->position[1] - org[1],
+                          l->position[2] - org[2]};
             tfar = sqrtf(ref_dot(d, d)) - 0.01f; /* a light set into a ceiling is not behind it */
             if (!(tfar > 0.0f))
                 continue;

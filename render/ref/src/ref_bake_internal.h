@@ -14,10 +14,10 @@ typedef struct bake_point {
 /* The values of one pass: 4 floats (I rgb, occlusion) per atlas texel, then per vertex of every
  * vertex-baked mesh (mesh m's vertices start at vertex_base[m]). */
 typedef struct bake_layout {
-    int texels;            /* atlas_width * atlas_height */
-    int *vertex_base;      /* per mesh: first slot of its vertices, -1 when not vertex-baked */
-    int slots;             /* texels + every baked vertex */
-    int **tri_chart; /* per mesh: NULL, or per triangle of a lightmapped mesh: its chart */
+    int texels;       /* atlas_width * atlas_height */
+    int *vertex_base; /* per mesh: first slot of its vertices, -1 when not vertex-baked */
+    int slots;        /* texels + every baked vertex */
+    int **tri_chart;  /* per mesh: NULL, or per triangle of a lightmapped mesh: its chart */
 } bake_layout;
 
 /* Charts of the lightmapped meshes, their atlas, per-vertex lightmap UVs and texel coverage
@@ -41,7 +41,7 @@ typedef struct bake_gather_job {
     float ao_distance;
     int pass;
     int threads;
-    int progress;          /* a bar on stderr */
+    int progress;                            /* a bar on stderr */
     long long progress_done, progress_total; /* over every pass */
     long long rays;
 } bake_gather_job;
