@@ -25,6 +25,13 @@ uniform vec3 u_light_attenuation[MAX_LIGHTS];
 uniform vec2 u_light_spot[MAX_LIGHTS]; // cos(inner), cos(outer)
 
 uniform vec3 u_mat_ambient;
+#ifdef BAKED_LIGHT
+// The bake's ambient intensity (indirect irradiance / pi, ref/ref_bake.h) replaces I_a.
+in vec4 v_baked;
+in vec2 v_lightmap_uv;
+uniform sampler2D u_lightmap;
+uniform int u_bake_from_lightmap;
+#endif
 uniform vec3 u_mat_diffuse;
 uniform vec3 u_mat_specular;
 uniform vec3 u_mat_emissive;
@@ -400,7 +407,9 @@ void main()
     vec3 c_d = u_mat_diffuse * albedo_scale;
 
     // eq. 1; with SH9 the ambient intensity is the irradiance over pi (a Lambertian surface)
-#ifdef SH9_AMBIENT
+#if defined(BAKED_LIGHT)
+    vec3 lit = c_a * (u_bake_from_lightmap != 0 ? texture(u_lightmap, v_lightmap_uv).rgb : v_baked.rgb);
+#elif defined(SH9_AMBIENT)
     vec3 lit = c_a * max(sh9_irradiance(N), vec3(0.0)) / 3.14159265;
 #else
     vec3 lit = c_a * u_ambient_light;

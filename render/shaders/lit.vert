@@ -15,6 +15,13 @@ out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;
 
+#ifdef BAKED_LIGHT
+layout(location = 3) in vec4 a_baked;       // I (rgb), occlusion: per-vertex bake
+layout(location = 4) in vec2 a_lightmap_uv; // or where the surface lies in the lightmap
+out vec4 v_baked;
+out vec2 v_lightmap_uv;
+#endif
+
 #ifdef PER_VERTEX_REFLECTION
 // Seed 003's per-vertex reflection: the corrected direction at the vertices, interpolated.
 uniform vec3 u_eye;
@@ -31,6 +38,10 @@ void main()
     v_world = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
+#ifdef BAKED_LIGHT
+    v_baked = a_baked;
+    v_lightmap_uv = a_lightmap_uv;
+#endif
     gl_Position = u_view_proj * world;
 #ifdef PER_VERTEX_REFLECTION
     vec3 n = normalize(v_normal);

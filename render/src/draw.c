@@ -333,6 +333,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                            : 0) |
                       (shadows ? RD_LIT_SHADOWS : 0) |
                       (rd_scene_has_area_lights(scene) ? RD_LIT_AREA_LIGHTS : 0);
+        if (m->bake && !depth_only && (m->bake == 1 || scene->lightmap))
+            variant |= RD_LIT_BAKED; /* the ambient from the bake's vertices or lightmap */
         int self_traced = probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) &&
                           !probe->planar && rd_self_traced(scene, probe);
         if (self_traced)
@@ -388,6 +390,13 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
             if (variant & RD_LIT_SELF_TRACE)
                 rd_set_self_trace_uniforms(ctx, p, scene, probe, index,
                                            pass->sample_grid > 1 ? pass->sample_grid : 1);
+            if (variant & RD_LIT_BAKED) {
+                glActiveTexture(GL_TEXTURE12);
+                glBindTexture(GL_TEXTURE_2D, scene->lightmap);
+                glUniform1i(p->u_lightmap, 12);
+                glUniform1i(p->u_bake_from_lightmap, m->bake == 2);
+                glActiveTexture(GL_TEXTURE0);
+            }
             if (variant & RD_LIT_SPHERE_MAP) {
                 glActiveTexture(GL_TEXTURE2);
                 glBindTexture(GL_TEXTURE_2D, probe->sphere_map);

@@ -116,6 +116,8 @@ static void locate_lit(rd_program *p)
     p->u_sphere_map = glGetUniformLocation(id, "u_sphere_map");
     p->u_view_rot = glGetUniformLocation(id, "u_view_rot");
     p->u_sh = glGetUniformLocation(id, "u_sh");
+    p->u_lightmap = glGetUniformLocation(id, "u_lightmap");
+    p->u_bake_from_lightmap = glGetUniformLocation(id, "u_bake_from_lightmap");
     p->u_probe = glGetUniformLocation(id, "u_probe");
     p->u_probe_centre = glGetUniformLocation(id, "u_probe_centre");
     p->u_correction = glGetUniformLocation(id, "u_correction");
@@ -188,7 +190,7 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     char defines[600];
     snprintf(defines, sizeof defines,
              "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"
-             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s",
+             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s",
              RD_MAX_LIGHTS, RD_MAX_EMITTERS, RD_MAX_SELF_PARTS, RD_MAX_SELF_TEXTURES,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
@@ -200,7 +202,8 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
              (variant & RD_LIT_NO_SPECULAR) ? "#define NO_SPECULAR 1\n" : "",
              planar ? "#define PLANAR_REFLECTION 1\n" : "",
              self_trace ? "#define SELF_TRACE 1\n" : "",
-             (variant & RD_LIT_AREA_LIGHTS) ? "#define AREA_LIGHTS 1\n" : "");
+             (variant & RD_LIT_AREA_LIGHTS) ? "#define AREA_LIGHTS 1\n" : "",
+             (variant & RD_LIT_BAKED) ? "#define BAKED_LIGHT 1\n" : "");
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else

@@ -29,6 +29,7 @@ typedef struct rd_mesh_slot {
     unsigned vao, vbo, ibo;
     int index_count;
     float bounds_min[3], bounds_max[3];
+    int bake; /* 0 none, 1 per-vertex light (location 3), 2 lightmap coordinates (location 4) */
 } rd_mesh_slot;
 
 typedef struct rd_texture_slot {
@@ -56,6 +57,7 @@ typedef struct rd_program {
     int u_diffuse_texture, u_uv_scale;
     int u_specular_scale;
     int u_sh, u_sphere_map, u_view_rot;
+    int u_lightmap, u_bake_from_lightmap;
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
         u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
     int u_probe_distance, u_store_distance; /* the "depth" correction (reflect.glsl) */
@@ -86,7 +88,8 @@ enum {
     RD_LIT_PLANAR = 512,       /* a flat mirror's lookup in its planar capture (probe_planar.c) */
     RD_LIT_SELF_TRACE = 1024,  /* the lookup traces the product's own parts (self_trace.c) */
     RD_LIT_AREA_LIGHTS = 2048, /* area_light.glsl: rectangle lights and window portals */
-    RD_LIT_VARIANTS = 4096
+    RD_LIT_BAKED = 4096,       /* the ambient intensity from the bake (ref/ref_bake.h) */
+    RD_LIT_VARIANTS = 8192
 };
 
 struct rd_context {

@@ -92,9 +92,12 @@ rd_mesh rd_mesh_create(rd_context *ctx, const rd_mesh_desc *d)
             return invalid;
         }
     }
-    /* Interleave position, normal, uv: 8 floats per vertex. */
+    /* Interleave position, normal, uv (8 floats per vertex), then the bake's light and
+     * lightmap coordinates when there are any (6 more). */
     size_t n = (size_t)d->vertex_count;
-    float *v = malloc(n * 8 * sizeof *v);
+    int baked = d->baked_light || d->lightmap_uvs;
+    size_t stride = baked ? 14 : 8;
+    float *v = malloc(n * stride * sizeof *v);
     if (!v) {
         rd_set_error("rd_mesh_create: out of memory");
         return invalid;
@@ -107,28 +110,41 @@ rd_mesh rd_mesh_create(rd_context *ctx, const rd_mesh_desc *d)
     for (size_t i = 0; i < n; i++) {
         for (int k = 0; k < 3; k++) {
             float p = d->positions[i * 3 + k];
-            v[i * 8 + k] = p;
-            v[i * 8 + 3 + k] = d->normals[i * 3 + k];
+            v[i * stride + k] = p;
+            v[i * stride + 3 + k] = d->normals[i * 3 + k];
             s->bounds_min[k] = fminf(s->bounds_min[k], p);
             s->bounds_max[k] = fmaxf(s->bounds_max[k], p);
         }
-        v[i * 8 + 6] = d->uvs ? d->uvs[i * 2] : 0.0f;
-        v[i * 8 + 7] = d->uvs ? d->uvs[i * 2 + 1] : 0.0f;
+        v[i * stride + 6] = d->uvs ? d->uvs[i * 2] : 0.0f;
+        v[i * stride + 7] = d->uvs ? d->uvs[i * 2 + 1] : 0.0f;
+        if (baked) {
+            for (int k = 0; k < 4; k++)
+                v[i * stride + 8 + k] = d->baked_light ? d->baked_light[i * 4 + k] : 0.0f;
+            v[i * stride + 12] = d->lightmap_uvs ? d->lightmap_uvs[i * 2] : 0.0f;
+            v[i * stride + 13] = d->lightmap_uvs ? d->lightmap_uvs[i * 2 + 1] : 0.0f;
+        }
     }
     glGenVertexArrays(1, &s->vao);
     glBindVertexArray(s->vao);
     glGenBuffers(1, &s->vbo);
     glBindBuffer(GL_ARRAY_BUFFER, s->vbo);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * 8 * sizeof *v), v, GL_STATIC_DRAW);
+    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)(n * stride * sizeof *v), v, GL_STATIC_DRAW);
     glGenBuffers(1, &s->ibo);
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, s->ibo);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)((size_t)d->index_count * sizeof(uint32_t)),
                  d->indices, GL_STATIC_DRAW);
     for (int a = 0; a < 3; a++)
         glEnableVertexAttribArray((GLuint)a);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 8 * sizeof(float), (void *)0);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 8 * sizeof(float), (void *)(3 * sizeof(float)));
-    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, 8 * sizeof(float), (void *)(6 * sizeof(float)));
+    GLsizei bytes = (GLsizei)(stride * sizeof(float));
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, bytes, (void *)0);
+    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, bytes, (void *)(3 * sizeof(float)));
+    glVertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, bytes, (void *)(6 * sizeof(float)));
+    if (baked) {
+        glEnableVertexAttribArray(3);
+        glEnableVertexAttribArray(4);
+        glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, bytes, (void *)(8 * sizeof(float)));
+        glVertexAttribPointer(4, 2, GL_FLOAT, GL_FALSE, bytes, (void *)(12 * sizeof(float)));
+    }
     glBindVertexArray(0);
     free(v);
     if (rd_gl_drain_errors() != GL_NO_ERROR) {
@@ -140,6 +156,7 @@ rd_mesh rd_mesh_create(rd_context *ctx, const rd_mesh_desc *d)
         return invalid;
     }
     s->index_count = d->index_count;
+    s->bake = d->lightmap_uvs ? 2 : d->baked_light ? 1 : 0;
     s->live = true;
     s->generation = (s->generation + 1) & 0xffff;
     if (!s->generation)

@@ -30,6 +30,8 @@ void rd_scene_destroy(rd_scene *s)
     rd_shadow_maps_destroy(s);
     if (s->ambient_probe.capture)
         glDeleteTextures(1, &s->ambient_probe.capture);
+    if (s->lightmap)
+        glDeleteTextures(1, &s->lightmap);
     free(s->objects);
     free(s->object_stamps);
     free(s->object_probe);
@@ -185,4 +187,34 @@ int rd_scene_probe_count(const rd_scene *s)
     if (s->probes_dirty)
         rd_probes_sync((rd_scene *)s);
     return s->probe_count;
+}
+
+rd_result rd_scene_set_lightmap(rd_scene *s, int width, int height, const float *rgba)
+{
+    if (!s)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_set_lightmap: no scene");
+    if (s->lightmap) {
+        glDeleteTextures(1, &s->lightmap);
+        s->lightmap = 0;
+    }
+    if (!rgba)
+        return RD_OK;
+    if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_set_lightmap: %d x %d texels", width,
+                       height);
+    /* Bilinear, clamped and without mips: a mip level would mix neighbouring charts. */
+    glGenTextures(1, &s->lightmap);
+    glBindTexture(GL_TEXTURE_2D, s->lightmap);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA16F, width, height, 0, GL_RGBA, GL_FLOAT, rgba);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    if (rd_gl_drain_errors() != GL_NO_ERROR) {
+        glDeleteTextures(1, &s->lightmap);
+        s->lightmap = 0;
+        return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_scene_set_lightmap: OpenGL could not store it");
+    }
+    return RD_OK;
 }

@@ -77,6 +77,7 @@ struct rd_scene {
     rd_light lights[RD_MAX_LIGHTS];
     int light_count;
     float ambient[3];
+    unsigned lightmap; /* GL texture of rd_scene_set_lightmap, 0 = none */
 
     rd_reflection_defaults reflection;
     rd_probe *probes;

@@ -3,6 +3,7 @@
 #include "planner.h"
 
 #include "app/project/commands.h"
+#include "app/scene/scene_bake.h"
 #include "gui.h"
 
 #include <GLFW/glfw3.h>
@@ -107,6 +108,11 @@ static int open_project(planner *p, const ui_options *o)
         fprintf(stderr, "tessera: %s\n", err);
         return 1;
     }
+    /* The baked indirect light, as the CLI renders it (TESSERA_BAKE=off: the plain ambient).
+     * Cached: an edit re-bakes only what lies within reach of what it changed. */
+    const char *bake_env = getenv("TESSERA_BAKE");
+    app_bake_configure(
+        &(app_bake_settings){.on = !(bake_env && !strcmp(bake_env, "off")), .progress = 1});
     if (app_scene_build(p->ctx, &p->project, &p->scene, err, sizeof err) != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         return 1;

@@ -7,7 +7,7 @@
 /* The options every command that renders through the GPU renderer takes. */
 #define RENDER_SETTINGS                                                                            \
     "quality adaptive planar-mirrors room-probe exact-lamps self-reflections probe-resolution "    \
-    "shadows probes blur ambient backend "
+    "shadows probes blur ambient backend bake "
 
 static const cli_command catalog_commands[] = {
     {.name = "search",
@@ -93,8 +93,17 @@ const cli_command cli_commands[] = {
     {.name = "demo",
      .run = cli_cmd_demo,
      .synopsis = "",
-     .options = "output size supersample quality adaptive planar-mirrors backend stats",
+     .options = "bake output size supersample quality adaptive planar-mirrors backend stats",
      .summary = "renders the shipped demo bathroom from each of its cameras into out/"},
+    {.name = "bake",
+     .run = cli_cmd_bake,
+     .synopsis = "PROJECT",
+     .min_args = 1,
+     .max_args = 1,
+     .options = "stats",
+     .summary = "bakes the indirect light and occlusion into the cache (docs/rendering.md)",
+     .help = "  render, demo, print, panorama, video, share and bench bake on their own (cached);\n"
+             "  this runs it alone and says what it did. --stats FILE.json writes the counts.\n"},
     {.name = "render",
      .run = cli_cmd_render,
      .synopsis = "PROJECT -o OUT.(png|jpg|tif|exr)",
@@ -109,7 +118,7 @@ const cli_command cli_commands[] = {
      .synopsis = "PROJECT -o OUT.jpg",
      .min_args = 1,
      .max_args = 1,
-     .options = "output camera size supersample faces tile quality adaptive planar-mirrors "
+     .options = "bake output camera size supersample faces tile quality adaptive planar-mirrors "
                 "shadows probes blur ambient backend",
      .summary = "a 360-degree equirectangular panorama (GPano XMP) from six cube faces",
      .help = "  --size is the panorama's, twice as wide as high (default: 4096x2048).\n"},
@@ -118,7 +127,7 @@ const cli_command cli_commands[] = {
      .synopsis = "PROJECT -o OUT.mp4",
      .min_args = 1,
      .max_args = 1,
-     .options = "output seconds fps size supersample tile quality adaptive planar-mirrors "
+     .options = "bake output seconds fps size supersample tile quality adaptive planar-mirrors "
                 "shadows probes blur ambient backend",
      .summary = "a smooth path through the stored cameras: PNG frames, MP4 with ffmpeg",
      .help = "  Default: 8 seconds at 25 frames a second.\n"},
@@ -127,14 +136,14 @@ const cli_command cli_commands[] = {
      .synopsis = "PROJECT -o DIR",
      .min_args = 1,
      .max_args = 1,
-     .options = "output size panorama-size camera",
+     .options = "bake output size panorama-size camera",
      .summary = "a folder for any browser: renders, plan, 360-degree panorama, part list"},
     {.name = "print",
      .run = cli_cmd_print,
      .synopsis = "PROJECT -o OUT.pdf",
      .min_args = 1,
      .max_args = 1,
-     .options = "output paper landscape scale svg renders render-size customer date "
+     .options = "bake output paper landscape scale svg renders render-size customer date "
                 "no-clearances quality backend",
      .summary = "the print set: plan, wall elevations with tiles, renders, part list, quotation",
      .help = "  Renders of the project's cameras at quality final (or the PNG files in\n"
@@ -199,7 +208,7 @@ const cli_command cli_commands[] = {
      .synopsis = "PROJECT",
      .min_args = 1,
      .max_args = 1,
-     .options = "camera size frames warmup animate csv stats quality exact-lamps "
+     .options = "bake camera size frames warmup animate csv stats quality exact-lamps "
                 "self-reflections probe-resolution probes blur ambient backend",
      .summary = "milliseconds per frame (median and spread) against a full-screen floor",
      .help = "  --animate drags an object 10 mm a frame; the cpu row: CPU ms, all threads.\n",

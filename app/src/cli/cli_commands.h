@@ -9,6 +9,7 @@ int cli_cmd_help(const cli_options *o);
 int cli_cmd_open(const cli_options *o);
 int cli_cmd_demo(const cli_options *o);
 int cli_cmd_render(const cli_options *o);
+int cli_cmd_bake(const cli_options *o);
 int cli_cmd_panorama(const cli_options *o);
 int cli_cmd_video(const cli_options *o);
 int cli_cmd_share(const cli_options *o);

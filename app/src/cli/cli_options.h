@@ -39,6 +39,7 @@ typedef struct cli_options {
     int bounces; /* --bounces: indirect bounces of the reference (0 = direct light only) */
     const struct app_quality *quality; /* --quality: a preset (app/scene/quality.h) */
     rd_switch adaptive, planar_mirrors, room_probe, exact_lamps, self_reflections;
+    rd_switch bake;       /* --bake: baked indirect light (default on unless TESSERA_BAKE=off) */
     int self_rays;        /* --self-reflections N: its lobe directions a sample; 0 = default */
     int probe_resolution; /* texels a face side; 0 = the preset's */
     rd_backend backend;
@@ -88,6 +89,9 @@ typedef struct cli_session {
 } cli_session;
 
 int cli_session_open(const cli_options *o, cli_session *s);
+/* Whether --bake (or TESSERA_BAKE=off) asks for the baked light, and app_bake_configure from it. */
+int cli_bake_wanted(const cli_options *o);
+void cli_bake_configure(const cli_options *o);
 void cli_session_close(cli_session *s);
 
 /* The view of `camera` (NULL = the first) at the options' size (else width x height, else the

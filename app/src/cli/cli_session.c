@@ -1,6 +1,7 @@
 #include "cli_options.h"
 
 #include "app/scene/quality.h"
+#include "app/scene/scene_bake.h"
 #include "render/image_io.h"
 
 #include <errno.h>
@@ -46,6 +47,20 @@ int cli_check_output_path(const char *path)
     return CLI_OK;
 }
 
+int cli_bake_wanted(const cli_options *o)
+{
+    if (o->bake)
+        return o->bake == RD_SWITCH_ON;
+    const char *env = getenv("TESSERA_BAKE");
+    return !(env && !strcmp(env, "off"));
+}
+
+void cli_bake_configure(const cli_options *o)
+{
+    app_bake_settings b = {.on = cli_bake_wanted(o), .progress = isatty(2)};
+    app_bake_configure(&b);
+}
+
 int cli_session_open(const cli_options *o, cli_session *s)
 {
     memset(s, 0, sizeof *s);
@@ -60,6 +75,7 @@ int cli_session_open(const cli_options *o, cli_session *s)
         app_project_free(&s->project);
         return CLI_FAILED;
     }
+    cli_bake_configure(o);
     r = app_scene_build(s->ctx, &s->project, &s->scene, err, sizeof err);
     if (r != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);

@@ -1,6 +1,7 @@
 #include "cli_stats.h"
 
 #include "app/scene/quality.h"
+#include "app/scene/scene_bake.h"
 
 #include <cjson/cJSON.h>
 #include <errno.h>
@@ -79,6 +80,37 @@ static int write_atomic(const char *path, const char *text)
     return ok ? CLI_OK : CLI_FAILED;
 }
 
+cJSON *cli_bake_stats_json(void)
+{
+    const app_bake_stats *b = app_bake_last_stats();
+    cJSON *j = cJSON_CreateObject();
+    cJSON_AddStringToObject(j, "bake", on_off(b->ran));
+    cJSON_AddStringToObject(j, "cache_hit", on_off(b->cache_hit));
+    cJSON_AddNumberToObject(j, "elements", b->elements);
+    cJSON_AddNumberToObject(j, "reused_elements", b->reused_elements);
+    cJSON_AddNumberToObject(j, "baked_elements", (double)(b->baked_texels + b->baked_vertices));
+    cJSON_AddNumberToObject(j, "baked_texels", (double)b->baked_texels);
+    cJSON_AddNumberToObject(j, "baked_vertices", (double)b->baked_vertices);
+    cJSON_AddNumberToObject(j, "total_texels", (double)b->total_texels);
+    cJSON_AddNumberToObject(j, "total_vertices", (double)b->total_vertices);
+    cJSON_AddNumberToObject(j, "rays", (double)b->rays);
+    cJSON_AddNumberToObject(j, "seconds", b->seconds);
+    return j;
+}
+
+int cli_write_json_atomic(const char *path, cJSON *root)
+{
+    char *text = cJSON_Print(root);
+    cJSON_Delete(root);
+    if (!text) {
+        fprintf(stderr, "tessera: %s: out of memory\n", path);
+        return CLI_FAILED;
+    }
+    int rc = write_atomic(path, text);
+    free(text);
+    return rc;
+}
+
 int cli_write_stats(const char *path, const cli_session *s, const cli_options *o,
                     const rd_view *view, const rd_frame_stats *st)
 {
@@ -86,6 +118,7 @@ int cli_write_stats(const char *path, const cli_session *s, const cli_options *o
     cJSON_AddStringToObject(root, "project", s->project.path);
     cJSON_AddItemToObject(root, "settings", settings_json(s, o, view));
     cJSON_AddItemToObject(root, "frame", frame_json(st));
+    cJSON_AddItemToObject(root, "bake", cli_bake_stats_json());
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     if (!text) {

@@ -12,4 +12,10 @@
 int cli_write_stats(const char *path, const cli_session *s, const cli_options *o,
                     const rd_view *view, const rd_frame_stats *st);
 
+/* The last bake's counts (app_bake_last_stats) as a JSON object, and a JSON document written
+ * atomically (root is freed). */
+typedef struct cJSON cJSON;
+cJSON *cli_bake_stats_json(void);
+int cli_write_json_atomic(const char *path, cJSON *root);
+
 #endif

@@ -108,6 +108,22 @@ static app_result scene_from_list(const app_render_list *l, ref_scene *s, char *
     return r;
 }
 
+app_result app_ref_scene_from_list(const app_render_list *l, ref_scene **out, char *err,
+                                   size_t err_size)
+{
+    *out = ref_scene_create();
+    if (!*out) {
+        snprintf(err, err_size, "%s: %s", l->path, ref_last_error());
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    app_result r = scene_from_list(l, *out, err, err_size);
+    if (r != APP_OK) {
+        ref_scene_destroy(*out);
+        *out = NULL;
+    }
+    return r;
+}
+
 app_result app_ref_scene_build(const app_project *p, ref_scene **out, char *err, size_t err_size)
 {
     *out = NULL;

@@ -4,6 +4,7 @@
 #include "scene_build_internal.h"
 
 #include "app/scene/render_list.h"
+#include "app/scene/scene_bake.h"
 #include "render/cube_data.h"
 #include "render/image_io.h"
 
@@ -104,12 +105,36 @@ static rd_mesh mesh_of(rd_context *ctx, const app_render_list *l, app_scene *s, 
     return s->meshes[i];
 }
 
-static app_result add_items(rd_context *ctx, const app_render_list *l, app_scene *s, char *err,
-                            size_t err_size)
+/* Item i's own mesh carrying its baked light (per vertex or lightmap coordinates); the list
+ * mesh when the item has none. */
+static rd_mesh baked_mesh_of(rd_context *ctx, const app_render_list *l, app_scene *s,
+                             const ref_bake *bake, int i)
+{
+    const app_render_item *it = &l->items[i];
+    const ref_bake_mesh *bm = bake && i < bake->mesh_count ? &bake->meshes[i] : NULL;
+    const app_render_mesh *m = &l->meshes[it->mesh];
+    if (!bm || bm->kind == REF_BAKE_NONE || bm->vertex_count != m->vertex_count ||
+        (bm->kind == REF_BAKE_LIGHTMAP && !bake->atlas_width))
+        return mesh_of(ctx, l, s, it->mesh);
+    s->baked_meshes[i] = rd_mesh_create(
+        ctx,
+        &(rd_mesh_desc){.positions = m->positions,
+                        .normals = m->normals,
+                        .uvs = m->uvs,
+                        .indices = m->indices,
+                        .vertex_count = m->vertex_count,
+                        .index_count = m->index_count,
+                        .baked_light = bm->kind == REF_BAKE_VERTEX ? bm->vertex : NULL,
+                        .lightmap_uvs = bm->kind == REF_BAKE_LIGHTMAP ? bm->lightmap_uv : NULL});
+    return s->baked_meshes[i];
+}
+
+static app_result add_items(rd_context *ctx, const app_render_list *l, app_scene *s,
+                            const ref_bake *bake, char *err, size_t err_size)
 {
     for (int i = 0; i < l->item_count; i++) {
         const app_render_item *it = &l->items[i];
-        rd_object_desc d = {.mesh = mesh_of(ctx, l, s, it->mesh),
+        rd_object_desc d = {.mesh = baked_mesh_of(ctx, l, s, bake, i),
                             .shape = it->shape,
                             .material = it->material,
                             .background = it->background,
@@ -135,7 +160,7 @@ static app_result add_items(rd_context *ctx, const app_render_list *l, app_scene
 }
 
 static app_result scene_from_list(rd_context *ctx, const app_render_list *l, app_scene *out,
-                                  char *err, size_t err_size)
+                                  const ref_bake *bake, char *err, size_t err_size)
 {
     out->scene = rd_scene_create(ctx);
     if (!out->scene) {
@@ -153,9 +178,21 @@ static app_result scene_from_list(rd_context *ctx, const app_render_list *l, app
     out->meshes = calloc((size_t)l->mesh_count + 1, sizeof *out->meshes);
     if (!out->meshes)
         return APP_ERR_OUT_OF_MEMORY;
+    if (bake) {
+        out->baked_mesh_count = l->item_count;
+        out->baked_meshes = calloc((size_t)l->item_count + 1, sizeof *out->baked_meshes);
+        if (!out->baked_meshes)
+            return APP_ERR_OUT_OF_MEMORY;
+        if (bake->atlas_width && bake->atlas_height &&
+            rd_scene_set_lightmap(out->scene, bake->atlas_width, bake->atlas_height, bake->atlas) !=
+                RD_OK) {
+            snprintf(err, err_size, "%s: %s", l->path, rd_last_error());
+            return APP_ERR_OUT_OF_MEMORY;
+        }
+    }
     app_result r = load_files(ctx, l, out, err, err_size);
     if (r == APP_OK)
-        r = add_items(ctx, l, out, err, err_size);
+        r = add_items(ctx, l, out, bake, err, err_size);
     for (int i = 0; r == APP_OK && i < l->light_count; i++)
         if (rd_scene_add_light(out->scene, &l->lights[i].light) != RD_OK) {
             snprintf(err, err_size, "%s: %s: %s", l->path, l->lights[i].label, rd_last_error());
@@ -178,7 +215,16 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
     app_result r = app_render_list_build(p, APP_RENDER_LIST_PROBE_MESHES, &l, err, err_size);
     if (r != APP_OK)
         return r;
-    r = scene_from_list(ctx, &l, out, err, err_size);
+    ref_bake bake = {0};
+    int baked = 0;
+    if (app_bake_current()->on) {
+        app_bake_stats stats;
+        r = app_bake_list(&l, app_bake_current(), &bake, &stats, err, err_size);
+        baked = r == APP_OK;
+    }
+    if (r == APP_OK)
+        r = scene_from_list(ctx, &l, out, baked ? &bake : NULL, err, err_size);
+    ref_bake_free(&bake);
     if (r == APP_ERR_OUT_OF_MEMORY && err && err_size && !err[0])
         snprintf(err, err_size, "%s: out of memory", p->path);
     app_render_list_free(&l);
@@ -198,6 +244,10 @@ void app_scene_release(rd_context *ctx, app_scene *s)
             rd_mesh_destroy(ctx, s->meshes[i]);
     for (int i = 0; i < s->texture_count; i++)
         rd_texture_destroy(ctx, s->textures[i]);
+    for (int i = 0; i < s->baked_mesh_count; i++)
+        if (s->baked_meshes[i].id)
+            rd_mesh_destroy(ctx, s->baked_meshes[i]);
+    free(s->baked_meshes);
     rd_scene_destroy(s->scene);
     free(s->cubemaps);
     free(s->meshes);

@@ -196,8 +196,12 @@ static int add_model(thumb_studio *st, rd_scene *scene, const cat_product *p, pr
         const cat_mesh *cm = &m.meshes[i];
         if (cm->index_count == 0)
             continue;
-        rd_mesh_desc d = {cm->positions, cm->normals,      cm->uvs,
-                          cm->indices,   cm->vertex_count, cm->index_count};
+        rd_mesh_desc d = {.positions = cm->positions,
+                          .normals = cm->normals,
+                          .uvs = cm->uvs,
+                          .indices = cm->indices,
+                          .vertex_count = cm->vertex_count,
+                          .index_count = cm->index_count};
         rd_mesh mesh = rd_mesh_create(st->ctx, &d);
         if (!mesh.id)
             continue;

@@ -78,6 +78,11 @@ typedef struct rd_mesh_desc {
     const uint32_t *indices;
     int vertex_count;
     int index_count; /* a multiple of 3 */
+    /* Baked indirect light (ref/ref_bake.h), used in place of the ambient I_a: per vertex
+     * 4 floats (I rgb, occlusion), or per vertex 2 floats of coordinates in the scene's
+     * lightmap (rd_scene_set_lightmap). NULL = not baked: the scene's ambient. */
+    const float *baked_light;
+    const float *lightmap_uvs;
 } rd_mesh_desc;
 
 rd_mesh rd_mesh_create(rd_context *ctx, const rd_mesh_desc *desc); /* id 0 on failure */
@@ -234,6 +239,9 @@ void rd_scene_destroy(rd_scene *scene);
 rd_result rd_scene_add_object(rd_scene *scene, const rd_object_desc *desc);
 rd_result rd_scene_add_light(rd_scene *scene, const rd_light *light);
 void rd_scene_set_ambient(rd_scene *scene, const float intensity[3]); /* I_a */
+/* The baked lightmap atlas that meshes made with lightmap_uvs read their ambient intensity from:
+ * 4 floats per texel (I rgb, occlusion), row 0 at v = 0; copied. NULL removes it. */
+rd_result rd_scene_set_lightmap(rd_scene *scene, int width, int height, const float *rgba);
 int rd_scene_object_count(const rd_scene *scene);
 /* A copy of object `index`'s description as it stands (its transform after moves). */
 rd_result rd_scene_object_desc(const rd_scene *scene, int index, rd_object_desc *out);

@@ -18,6 +18,11 @@ extern "C" {
  * names the file and the object, as app_scene_build's messages do. */
 app_result app_ref_scene_build(const app_project *p, ref_scene **out, char *err, size_t err_size);
 
+typedef struct app_render_list app_render_list;
+/* The same from a render list already built: the tracer's mesh i is the list's item i. */
+app_result app_ref_scene_from_list(const app_render_list *l, ref_scene **out, char *err,
+                                   size_t err_size);
+
 #ifdef __cplusplus
 }
 #endif

@@ -22,11 +22,14 @@ typedef struct app_scene {
     rd_cubemap *cubemaps; /* static probe maps */
     int cubemap_count;
     app_scene_parts *parts; /* which project object each renderer object draws */
+    rd_mesh *baked_meshes;  /* per list item: its own mesh with baked light (id 0: none) */
+    int baked_mesh_count;
 } app_scene;
 
 /* Uploads the room, the objects (primitives and glTF/GLB models), the textures and the
- * lights of p's render list (app/scene/render_list.h). On failure nothing stays allocated and
- * err names the file and the object. */
+ * lights of p's render list (app/scene/render_list.h), with their baked indirect light when
+ * app_bake_configure turned the bake on (app/scene/scene_bake.h). On failure nothing stays
+ * allocated and err names the file and the object. */
 app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out, char *err,
                            size_t err_size);
 void app_scene_release(rd_context *ctx, app_scene *s);
