@@ -144,6 +144,7 @@ void rd_context_destroy(rd_context *ctx)
                 glDeleteSamplers(1, &ctx->isotropic_sampler);
             rd_target_destroy(&ctx->display);
             rd_target_destroy(&ctx->linear);
+            rd_target_destroy(&ctx->meter);
             if (ctx->empty_vao)
                 glDeleteVertexArrays(1, &ctx->empty_vao);
         }

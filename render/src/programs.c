@@ -240,6 +240,7 @@ static const struct rd_tonemap_program *make_tonemap(struct rd_tonemap_program *
     t->u_exposure = glGetUniformLocation(t->id, "u_exposure");
     t->u_white = glGetUniformLocation(t->id, "u_white");
     t->u_mode = glGetUniformLocation(t->id, "u_mode");
+    t->u_wb = glGetUniformLocation(t->id, "u_wb");
     t->u_refined = glGetUniformLocation(t->id, "u_refined");
     t->u_threshold = glGetUniformLocation(t->id, "u_threshold");
     t->u_samples = glGetUniformLocation(t->id, "u_samples");
@@ -274,6 +275,13 @@ const struct rd_tonemap_program *rd_edge_mask_program(rd_context *ctx)
 {
     return ctx->edge_mask.id ? &ctx->edge_mask
                              : make_tonemap(&ctx->edge_mask, "tonemap.glsl edge_mask.frag", "");
+}
+
+const struct rd_tonemap_program *rd_exposure_meter_program(rd_context *ctx)
+{
+    return ctx->exposure_meter.id
+               ? &ctx->exposure_meter
+               : make_tonemap(&ctx->exposure_meter, "tonemap.glsl exposure_meter.frag", "");
 }
 
 const struct rd_tonemap_program *rd_mask_stencil_program(rd_context *ctx)
@@ -331,10 +339,11 @@ void rd_programs_destroy(rd_context *ctx)
                 glDeleteProgram(ctx->tonemap[s][l].id);
                 ctx->tonemap[s][l].id = 0;
             }
-    for (int k = 0; k < 10; k++) {
+    for (int k = 0; k < 11; k++) {
         struct rd_tonemap_program *t = k < 8    ? &ctx->tonemap_adaptive[k / 2][k % 2]
                                        : k == 8 ? &ctx->edge_mask
-                                                : &ctx->mask_stencil;
+                                       : k == 9 ? &ctx->mask_stencil
+                                                : &ctx->exposure_meter;
         if (t->id) {
             glDeleteProgram(t->id);
             t->id = 0;

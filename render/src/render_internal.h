@@ -126,12 +126,15 @@ struct rd_context {
      * first use. */
     struct rd_tonemap_program {
         unsigned id;
-        int u_source, u_exposure, u_white, u_mode;
+        int u_source, u_exposure, u_white, u_mode, u_wb;
         int u_refined, u_threshold, u_samples; /* adaptive supersampling only */
     } tonemap[4][2];
     /* Adaptive supersampling (renderer_adaptive.c): the resolves by samples per side and
      * output, and the edge mask, made on first use. */
     struct rd_tonemap_program tonemap_adaptive[4][2], edge_mask, mask_stencil;
+    /* Auto exposure (exposure_meter.c): log luminance at a grid of the main pass's samples. */
+    struct rd_tonemap_program exposure_meter;
+    rd_target meter;
     struct rd_adaptive_target {
         unsigned fbo, color, depth_stencil; /* s x s samples; the stencil marks refined pixels */
         int width, height;
@@ -143,7 +146,8 @@ struct rd_context {
     rd_target display; /* RGBA8 tone-mapped output */
     rd_target linear;  /* RGBA32F exposed radiance at output size (for EXR) */
     int out_width, out_height, has_frame;
-    rd_view frame_view; /* the last rendered view, for rd_read_linear */
+    rd_view frame_view;      /* the last rendered view, for rd_read_linear */
+    float frame_exposure_ev; /* the EV it was resolved with (rd_exposure_resolve) */
     int frame_samples;
     rd_mesh floor_quad; /* the benchmark floor's full-screen quad */
 };
@@ -174,6 +178,13 @@ const struct rd_tonemap_program *rd_tonemap_adaptive_program(rd_context *ctx, in
                                                              int linear);
 const struct rd_tonemap_program *rd_edge_mask_program(rd_context *ctx);
 const struct rd_tonemap_program *rd_mask_stencil_program(rd_context *ctx);
+const struct rd_tonemap_program *rd_exposure_meter_program(rd_context *ctx);
+/* Sets the tone map uniforms every program over tonemap.glsl reads (exposure 2^ev, white,
+ * mode, white balance) on the program in use. */
+void rd_tonemap_uniforms(const struct rd_tonemap_program *t, const rd_view *v, float exposure_ev);
+/* The EV a view is resolved with: v->exposure_ev, or with v->auto_exposure the EV measured
+ * from the radiance in ctx->hdr (the main pass just drawn) plus v->exposure_ev. */
+rd_result rd_exposure_resolve(rd_context *ctx, const rd_view *v, float *ev);
 /* After the once-per-pixel main pass of an adaptive view (v->adaptive, samples > 1): marks
  * the pixels to refine and renders their s x s samples (renderer_adaptive.c). */
 rd_result rd_adaptive_refine(rd_context *ctx, rd_scene *scene, const rd_view *v, int samples,

@@ -93,9 +93,7 @@ static rd_result tonemap_pass(rd_context *ctx, const rd_view *v, int samples, un
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, ctx->hdr.color);
     glUniform1i(t->u_source, 0);
-    glUniform1f(t->u_exposure, exp2f(v->exposure_ev));
-    glUniform1f(t->u_white, v->white > 0.0f ? v->white : 4.0f);
-    glUniform1i(t->u_mode, v->tonemap == RD_TONEMAP_CLAMP ? 1 : 0);
+    rd_tonemap_uniforms(t, v, ctx->frame_exposure_ev);
     glBindVertexArray(ctx->empty_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return RD_OK;
@@ -156,6 +154,10 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     ctx->stats = stats;
     begin_hdr_pass(ctx);
     r = rd_draw_view(ctx, scene, vp, view_rot, v->eye, shaded);
+    /* The exposure before the adaptive edge mask, which judges pixels in display values. */
+    if (r == RD_OK)
+        r = rd_exposure_resolve(ctx, v, &ctx->frame_exposure_ev);
+    ctx->stats.exposure_ev = ctx->frame_exposure_ev;
     if (r == RD_OK && adaptive(v, samples)) {
         rd_phase_mark("main pass, once per pixel");
         r = rd_adaptive_refine(ctx, scene, v, samples, vp, view_rot);

@@ -96,9 +96,7 @@ static long long mark_samples(rd_context *ctx, const rd_view *v, int samples,
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     glUseProgram(mask->id);
-    glUniform1f(mask->u_exposure, exp2f(v->exposure_ev));
-    glUniform1f(mask->u_white, v->white > 0.0f ? v->white : 4.0f);
-    glUniform1i(mask->u_mode, v->tonemap == RD_TONEMAP_CLAMP ? 1 : 0);
+    rd_tonemap_uniforms(mask, v, ctx->frame_exposure_ev);
     glUniform1f(mask->u_threshold,
                 v->adaptive_threshold > 0.0f ? v->adaptive_threshold : DEFAULT_THRESHOLD);
     glActiveTexture(GL_TEXTURE0);

@@ -90,6 +90,9 @@ void planner_view(const planner *p, int width, int height, rd_view *v)
     v->height = height;
     v->exposure_ev = p->project.render.exposure_ev;
     v->white = p->project.render.white;
+    v->auto_exposure = p->project.render.exposure_auto;
+    v->tonemap = app_tone_to_rd(p->project.render.tone);
+    v->white_balance_k = p->project.render.white_balance_k;
     const app_quality *q = app_quality_find(ui_quality_names[p->quality]);
     v->supersample = q && q->supersample > 1 ? q->supersample : 1;
 }

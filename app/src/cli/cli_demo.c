@@ -51,7 +51,7 @@ int cli_cmd_demo(const cli_options *args)
     }
     if (rc == CLI_OK && o.stats) { /* the last camera's frame */
         rd_frame_stats st = rd_last_frame_stats(s.ctx);
-        rc = cli_write_stats(o.stats, &s, &o, &view, &st);
+        rc = cli_write_stats(o.stats, &s, &o, &view, &st, NULL);
     }
     if (rc == CLI_OK) /* the print set with these renders (docs/printing.md) */
         rc = app_cli_print_demo(&s.project, out_dir);

@@ -38,6 +38,32 @@ static int parse_self_reflections(const char *v, cli_options *o)
     return 1;
 }
 
+/* rd_tonemap + 1 */
+static int parse_tone(const char *v, cli_options *o)
+{
+    rd_tonemap t;
+    if (rd_tonemap_parse(v, &t) != RD_OK)
+        return 0;
+    o->tone = (int)t + 1;
+    return 1;
+}
+
+/* auto, or a number of EV in (-64, 64) */
+static int parse_exposure(const char *v, cli_options *o)
+{
+    if (!strcmp(v, "auto")) {
+        o->exposure = CLI_EXPOSURE_AUTO;
+        return 1;
+    }
+    char *end;
+    double ev = strtod(v, &end);
+    if (end == v || *end || !(ev > -64.0 && ev < 64.0))
+        return 0;
+    o->exposure = CLI_EXPOSURE_FIXED;
+    o->exposure_ev = (float)ev;
+    return 1;
+}
+
 static int parse_paper(const char *v, cli_options *o)
 {
     app_paper p;
@@ -179,6 +205,12 @@ static const cli_option_spec options[] = {
     ENUM("blur", blur, blur_names, "how probes are blurred for rough surfaces"),
     ENUM("ambient", ambient, ambient_names, "the ambient light's model"),
     ENUM("shadows", shadows, shadow_names, "shadows from every light"),
+    CUSTOM("tone", parse_tone, "neutral|agx|reinhard|clamp", "neutral, agx, reinhard or clamp",
+           "the tone curve (default: the project's, else neutral)"),
+    CUSTOM("exposure", parse_exposure, "auto|EV", "auto or a number of EV in (-64, 64)",
+           "exposure: chosen from the scene, or fixed in EV (default: the project's)"),
+    FLOAT("white-balance", white_balance, 1000, 40000, "K",
+          "the colour temperature shown as white (default: the project's, else none)"),
     INT("samples", samples, 1, 1 << 20, "N",
         "Monte-Carlo rays a glossy lookup, or paths a subsample with --bounces (reference)"),
     INT("bounces", bounces, 0, 1024, "N", "indirect bounces of the reference (0: direct only)"),

@@ -12,6 +12,7 @@
 #include "render/render.h"
 
 enum { CLI_OK = 0, CLI_FAILED = 1, CLI_USAGE = 2 };
+enum { CLI_EXPOSURE_AUTO = 1, CLI_EXPOSURE_FIXED = 2 };
 
 #define CLI_MAX_ARGS 64
 
@@ -45,8 +46,12 @@ typedef struct cli_options {
     rd_backend backend;
     rd_probe_update probes; /* the scene's default update policy; 0 = the project's */
     rd_blur_method blur;
-    int ambient; /* 0 the project's, 1 constant, 2 sh9 */
-    int shadows; /* 0 the preset's (or off), else rd_shadow_mode + 1 */
+    int ambient;  /* 0 the project's, 1 constant, 2 sh9 */
+    int shadows;  /* 0 the preset's (or off), else rd_shadow_mode + 1 */
+    int tone;     /* 0 the project's, else rd_tonemap + 1 */
+    int exposure; /* 0 the project's, CLI_EXPOSURE_AUTO or CLI_EXPOSURE_FIXED (exposure_ev) */
+    float exposure_ev;
+    double white_balance; /* K; 0 the project's */
     int dpi, tile;
 
     /* Timing, video, reference. */
@@ -74,6 +79,19 @@ int cli_usage_error(const cli_options *o);
 
 /* "1280x720" -> 1280, 720; each side 1..1000000 (larger sizes fail later with the limit named). */
 int cli_parse_size(const char *text, int *w, int *h);
+
+/* --tone, --exposure and --white-balance over the project's in a view. */
+static inline void cli_apply_tone_options(const cli_options *o, rd_view *v)
+{
+    if (o->tone)
+        v->tonemap = (rd_tonemap)(o->tone - 1);
+    if (o->exposure) {
+        v->auto_exposure = o->exposure == CLI_EXPOSURE_AUTO;
+        v->exposure_ev = o->exposure == CLI_EXPOSURE_FIXED ? o->exposure_ev : 0.0f;
+    }
+    if (o->white_balance > 0.0)
+        v->white_balance_k = (float)o->white_balance;
+}
 
 /* The resolved on/off of a switch: `set` unless unset, else `preset`. */
 static inline int cli_switch_on(rd_switch set, int preset)

@@ -73,6 +73,10 @@ static int make_panorama(cli_session *s, const cli_options *o, int w, int h)
             v.up[c] = up[k][c];
         }
         rc = cli_render_pixels(s, &v, o->tile, faces[k], NULL, NULL);
+        if (base.auto_exposure) { /* the first face's exposure for all six: no seams */
+            base.exposure_ev = rd_last_frame_stats(s->ctx).exposure_ev;
+            base.auto_exposure = 0;
+        }
         cli_progress_update(&bar, k + 1, 6);
     }
     if (rc == CLI_OK && o->faces)

@@ -63,7 +63,7 @@ int cli_cmd_render(const cli_options *o)
     }
     if (rc == CLI_OK && o->stats) {
         rd_frame_stats st = rd_last_frame_stats(s.ctx);
-        rc = cli_write_stats(o->stats, &s, o, &view, &st);
+        rc = cli_write_stats(o->stats, &s, o, &view, &st, o->all_views ? NULL : o->output);
     }
     cli_session_close(&s);
     return rc;

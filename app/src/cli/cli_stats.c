@@ -1,7 +1,9 @@
 #include "cli_stats.h"
 
+#include "app/measure/image_contrast.h"
 #include "app/scene/quality.h"
 #include "app/scene/scene_bake.h"
+#include "render/image_io.h"
 
 #include <cjson/cJSON.h>
 #include <errno.h>
@@ -30,6 +32,7 @@ static cJSON *frame_json(const rd_frame_stats *st)
     FIELD(emitter_probes);
     FIELD(self_traced_probes);
     FIELD(self_triangles);
+    FIELD(exposure_ev);
 #undef FIELD
     return f;
 }
@@ -51,6 +54,12 @@ static cJSON *settings_json(const cli_session *s, const cli_options *o, const rd
     cJSON_AddNumberToObject(j, "self_reflection_rays", d.self_reflections);
     cJSON_AddNumberToObject(j, "probe_resolution", d.resolution);
     cJSON_AddStringToObject(j, "shadows", rd_shadow_mode_name(sh.mode));
+    cJSON_AddStringToObject(j, "tone", rd_tonemap_name(view->tonemap));
+    if (view->auto_exposure)
+        cJSON_AddStringToObject(j, "exposure", "auto");
+    else
+        cJSON_AddNumberToObject(j, "exposure", view->exposure_ev);
+    cJSON_AddNumberToObject(j, "white_balance", view->white_balance_k);
     return j;
 }
 
@@ -111,14 +120,41 @@ int cli_write_json_atomic(const char *path, cJSON *root)
     return rc;
 }
 
+
+/* The written image's contrast (app_image_contrast); NULL for a linear (float) file. */
+static cJSON *image_json(const char *image_path)
+{
+    rd_image img;
+    char err[1024];
+    if (rd_image_read(image_path, &img, NULL, err, sizeof err) != RD_IMAGE_OK)
+        return NULL;
+    app_image_contrast c;
+    int ok = img.srgb_encoded &&
+             app_image_contrast_of(img.pixels, img.width, img.height, img.channels, &c) == 0;
+    free(img.pixels);
+    if (!ok)
+        return NULL;
+    cJSON *j = cJSON_CreateObject();
+    cJSON_AddStringToObject(j, "file", image_path);
+    cJSON_AddNumberToObject(j, "luma_p1", c.luma_p1);
+    cJSON_AddNumberToObject(j, "luma_p50", c.luma_p50);
+    cJSON_AddNumberToObject(j, "luma_p99", c.luma_p99);
+    cJSON_AddNumberToObject(j, "luma_mean", c.luma_mean);
+    cJSON_AddNumberToObject(j, "clipped_fraction", c.clipped_fraction);
+    return j;
+}
+
 int cli_write_stats(const char *path, const cli_session *s, const cli_options *o,
-                    const rd_view *view, const rd_frame_stats *st)
+                    const rd_view *view, const rd_frame_stats *st, const char *image_path)
 {
     cJSON *root = cJSON_CreateObject();
     cJSON_AddStringToObject(root, "project", s->project.path);
     cJSON_AddItemToObject(root, "settings", settings_json(s, o, view));
     cJSON_AddItemToObject(root, "frame", frame_json(st));
     cJSON_AddItemToObject(root, "bake", cli_bake_stats_json());
+    cJSON *image = image_path ? image_json(image_path) : NULL;
+    if (image)
+        cJSON_AddItemToObject(root, "image", image);
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     if (!text) {

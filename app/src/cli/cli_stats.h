@@ -5,12 +5,14 @@
 
 #include "cli_options.h"
 
-/* Writes `st` (every rd_frame_stats field by its C name, under "frame") and the resolved
- * settings of `s` and `view` (under "settings": the preset, each switch "on" or "off") to
- * `path`, atomically (a temporary file next to it, then rename). Prints the problem naming the
- * file and returns CLI_FAILED if it cannot be written. */
+/* Writes `st` (every rd_frame_stats field by its C name, under "frame"), the resolved
+ * settings of `s` and `view` (under "settings": the preset, each switch "on" or "off", the
+ * tone curve, exposure and white balance) and, when image_path names an 8-bit image just
+ * written, its contrast (under "image": luma percentiles, clipped fraction) to `path`,
+ * atomically (a temporary file next to it, then rename). Prints the problem naming the file
+ * and returns CLI_FAILED if it cannot be written. */
 int cli_write_stats(const char *path, const cli_session *s, const cli_options *o,
-                    const rd_view *view, const rd_frame_stats *st);
+                    const rd_view *view, const rd_frame_stats *st, const char *image_path);
 
 /* The last bake's counts (app_bake_last_stats) as a JSON object, and a JSON document written
  * atomically (root is freed). */

@@ -88,6 +88,10 @@ static int render_frames(cli_session *s, const cli_options *o, const char *dir, 
         memcpy(v.target, k.target, sizeof v.target);
         v.fov_y_deg = k.fov_deg;
         rc = cli_render_pixels(s, &v, o->tile, rgba, NULL, NULL);
+        if (base.auto_exposure) { /* the first frame's exposure throughout: no flicker */
+            base.exposure_ev = rd_last_frame_stats(s->ctx).exposure_ev;
+            base.auto_exposure = 0;
+        }
         char path[4200], err[1024];
         snprintf(path, sizeof path, "%s/frame-%05d.png", dir, f);
         if (rc == CLI_OK &&

@@ -138,7 +138,7 @@ int cli_cmd_bench(const cli_options *args)
     }
     fprintf(stderr, "\n");
     if (rc == CLI_OK && o.stats) /* the last timed frame's */
-        rc = cli_write_stats(o.stats, &s, &o, &view, &stats[o.frames - 1]);
+        rc = cli_write_stats(o.stats, &s, &o, &view, &stats[o.frames - 1], NULL);
     if (rc == CLI_OK && o.csv)
         rc = write_csv(o.csv, frame, floor_ms, cpu, stats, o.frames);
     if (rc == CLI_OK) {

@@ -97,6 +97,7 @@ int cli_cmd_reference(const cli_options *o)
     }
     if (o->supersample)
         view.supersample = o->supersample;
+    cli_apply_tone_options(o, &view);
     if (o->ambient)
         p.render.ambient_model = o->ambient == 2; /* as `render --ambient` (cli_session.c) */
     double t0 = cli_now_ms();

@@ -62,6 +62,8 @@ void pj_default_render(app_render_settings *r)
     memset(r, 0, sizeof *r);
     set3f(r->ambient, 0.1f, 0.1f, 0.1f);
     r->exposure_ev = 0.0f;
+    r->exposure_auto = 1;
+    r->tone = APP_TONE_NEUTRAL;
     r->white = 4.0f;
     r->width = 1280;
     r->height = 720;

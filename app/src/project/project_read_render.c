@@ -1,10 +1,62 @@
-/* $.render: image size, supersampling, ambient light and tone mapping. */
+/* $.render: image size, supersampling, ambient light, exposure, tone curve, white balance. */
 #include "project_internal.h"
 
 #include <math.h>
 #include <string.h>
 
 static const pj_range EXPOSURE = {-64.0, 64.0, 0, 0, 1};
+static const pj_range WHITE_BALANCE = {0.0, 40000.0, 0, 0, 1};
+
+/* "exposure": "auto" or a number of EV. */
+static app_result read_exposure(pj_ctx *c, const cJSON *render, app_render_settings *out)
+{
+    const cJSON *e = cJSON_GetObjectItemCaseSensitive(render, "exposure");
+    if (!e)
+        return APP_OK;
+    if (cJSON_IsString(e)) {
+        if (strcmp(e->valuestring, "auto")) {
+            pj_path_key(c, "exposure");
+            return pj_fail(c, APP_ERR_SCHEMA,
+                           "unknown value \"%s\" (use \"auto\" or a number of EV)", e->valuestring);
+        }
+        out->exposure_auto = 1;
+        return APP_OK;
+    }
+    out->exposure_auto = 0;
+    return pj_get_float(c, render, "exposure", 0, EXPOSURE, &out->exposure_ev);
+}
+
+static const char *const tone_names[] = {"neutral", "agx", "reinhard", "clamp"};
+
+const char *app_tone_name(app_tone t)
+{
+    return (unsigned)t < sizeof tone_names / sizeof tone_names[0] ? tone_names[t] : "neutral";
+}
+
+int app_tone_parse(const char *name, app_tone *out)
+{
+    for (int i = 0; name && i < (int)(sizeof tone_names / sizeof tone_names[0]); i++)
+        if (!strcmp(name, tone_names[i])) {
+            *out = (app_tone)i;
+            return 1;
+        }
+    return 0;
+}
+
+/* "tone": neutral, agx, reinhard, clamp. */
+static app_result read_tone(pj_ctx *c, const cJSON *render, app_render_settings *out)
+{
+    char tone[16] = "";
+    app_result r = pj_get_string(c, render, "tone", 0, 0, tone, sizeof tone);
+    if (r != APP_OK || !tone[0])
+        return r;
+    if (!app_tone_parse(tone, &out->tone)) {
+        pj_path_key(c, "tone");
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "unknown tone curve \"%s\" (use neutral, agx, reinhard or clamp)", tone);
+    }
+    return APP_OK;
+}
 
 app_result pj_read_render(pj_ctx *c, const cJSON *root)
 {
@@ -16,8 +68,11 @@ app_result pj_read_render(pj_ctx *c, const cJSON *root)
         return r;
     size_t mark = pj_path_key(c, "render");
     if ((r = pj_get_color(c, render, "ambient", 0, out->ambient)) != APP_OK ||
-        (r = pj_get_float(c, render, "exposure", 0, EXPOSURE, &out->exposure_ev)) != APP_OK ||
+        (r = read_exposure(c, render, out)) != APP_OK ||
+        (r = read_tone(c, render, out)) != APP_OK ||
         (r = pj_get_float(c, render, "white", 0, PJ_POSITIVE, &out->white)) != APP_OK ||
+        (r = pj_get_float(c, render, "white_balance", 0, WHITE_BALANCE, &out->white_balance_k)) !=
+            APP_OK ||
         (r = pj_get_int(c, render, "supersample", 0, 1, 4, &out->supersample)) != APP_OK)
         return r;
     char model[16] = "";

@@ -342,8 +342,14 @@ static void put_render(jb *b, cJSON *root)
     cJSON *o = put_container(b, root, "render", 0);
     size_t mark = pj_path_key(b->c, "render");
     put_vec(b, o, "ambient", NULL, r->ambient, 3);
-    put_num(b, o, "exposure", r->exposure_ev, 1);
+    if (r->exposure_auto)
+        put_str(b, o, "exposure", "auto", 8);
+    else
+        put_num(b, o, "exposure", r->exposure_ev, 1);
+    put_str(b, o, "tone", app_tone_name(r->tone), 16);
     put_num(b, o, "white", r->white, 1);
+    if (r->white_balance_k > 0.0f)
+        put_num(b, o, "white_balance", r->white_balance_k, 1);
     cJSON *size = put_container(b, o, "size", 1);
     if (size) {
         attach(b, size, NULL, cJSON_CreateNumber(r->width));

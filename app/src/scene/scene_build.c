@@ -256,6 +256,20 @@ void app_scene_release(rd_context *ctx, app_scene *s)
     memset(s, 0, sizeof *s);
 }
 
+rd_tonemap app_tone_to_rd(app_tone t)
+{
+    switch (t) {
+    case APP_TONE_AGX:
+        return RD_TONEMAP_AGX;
+    case APP_TONE_REINHARD:
+        return RD_TONEMAP_PHOTOGRAPHIC;
+    case APP_TONE_CLAMP:
+        return RD_TONEMAP_CLAMP;
+    default:
+        return RD_TONEMAP_NEUTRAL;
+    }
+}
+
 app_result app_view_from_camera(const app_project *p, const char *camera, int width, int height,
                                 rd_view *out, char *err, size_t err_size)
 {
@@ -275,6 +289,9 @@ app_result app_view_from_camera(const app_project *p, const char *camera, int wi
                  .height = height > 0 ? height : p->render.height,
                  .supersample = p->render.supersample,
                  .exposure_ev = p->render.exposure_ev,
+                 .auto_exposure = p->render.exposure_auto,
+                 .tonemap = app_tone_to_rd(p->render.tone),
+                 .white_balance_k = p->render.white_balance_k,
                  .white = p->render.white};
     for (int k = 0; k < 3; k++) {
         v.eye[k] = (float)(c->position_mm[k] * 1e-3);

@@ -356,6 +356,7 @@ typedef struct rd_frame_stats {
     int emitter_probes;       /* probes captured without them (their readers are all sharp) */
     int self_traced_probes;   /* probes whose lookups trace their own parts (self_trace.c) */
     int self_triangles;       /* the triangles those traces hold */
+    float exposure_ev;        /* the exposure the tone map used (auto_exposure: measured) */
 } rd_frame_stats;
 rd_frame_stats rd_last_frame_stats(const rd_context *ctx);
 
@@ -373,7 +374,31 @@ void rd_cubemap_destroy(rd_context *ctx, rd_cubemap map);
 typedef enum rd_tonemap {
     RD_TONEMAP_PHOTOGRAPHIC = 0, /* Reinhard et al. 2002, eq. 4, on luminance, with L_white */
     RD_TONEMAP_CLAMP,            /* exposure then clamp to [0, 1] */
+    RD_TONEMAP_NEUTRAL,          /* Khronos PBR Neutral: true colours up to 0.76, then a
+                                    soft shoulder (product renders) */
+    RD_TONEMAP_AGX,              /* AgX (Sobotka), the minimal polynomial fit: filmic contrast,
+                                    highlights desaturate to white */
 } rd_tonemap;
+/* "reinhard" (also "photographic"), "clamp", "neutral", "agx" <-> mode. */
+rd_result rd_tonemap_parse(const char *name, rd_tonemap *out);
+const char *rd_tonemap_name(rd_tonemap t);
+
+/* The exposure a scene asks for (Reinhard et al. 2002, "Photographic tone reproduction for
+ * digital images", eqs. 1-2): the log-average luminance L_avg = exp(mean(log(delta + L)))
+ * mapped to the key a: EV = log2(a / L_avg) + compensation_ev. The key is that paper's
+ * high-key value a = 0.36 (section 3: 0.18 is middle grey, 0.36 and 0.72 for high-key
+ * scenes), as a photographer opens up a reflected-light reading by one stop for a white
+ * scene: a tiled bathroom is mostly white glaze, and at 0.18 its white walls are shown grey.
+ * sum_log is the sum of log(delta + L) over count samples; count 0 gives compensation_ev. */
+#define RD_EXPOSURE_KEY 0.36f
+#define RD_EXPOSURE_DELTA 1e-4f
+float rd_auto_exposure_ev(double sum_log, long long count, float compensation_ev);
+
+/* White balance: the 3 x 3 matrix (row-major, linear Rec. 709 RGB) that renders a light of
+ * colour temperature kelvin as neutral white: a von Kries adaptation in the Bradford cone
+ * space from the Planckian white of that temperature to D65. kelvin <= 0: identity; others
+ * are clamped to the locus fit's 1667 to 25000 K. */
+void rd_white_balance_matrix(float kelvin, float m[9]);
 
 typedef struct rd_view {
     float eye[3], target[3], up[3]; /* up all zero = +Z */
@@ -381,10 +406,17 @@ typedef struct rd_view {
     float near_m, far_m;            /* 0 = fitted to the scene */
     int width, height;              /* output pixels */
     int supersample;                /* 0 or 1 = none; 2..4 = s x s samples per pixel */
-    float exposure_ev;              /* scale by 2^ev before the tone map */
+    float exposure_ev;              /* scale by 2^ev before the tone map (auto_exposure:
+                                       the compensation added to the measured EV) */
     rd_tonemap tonemap;
-    float white;   /* L_white of the photographic operator; 0 = 4 */
-    int to_window; /* RD_BACKEND_ADOPT: also draw the result into framebuffer 0 */
+    float white; /* L_white of the photographic operator; 0 = 4 */
+    /* 1: the exposure is measured from this render's own radiance (rd_auto_exposure_ev over
+     * a grid of at most 96 x 96 samples of the main pass); rd_last_frame_stats gives the EV
+     * used. A tiled render measures a small render of the whole view first. */
+    int auto_exposure;
+    float white_balance_k; /* colour temperature rendered as white (rd_white_balance_matrix);
+                              0 = none */
+    int to_window;         /* RD_BACKEND_ADOPT: also draw the result into framebuffer 0 */
     /* A window of a larger image (tiled rendering): when full_width > 0, this render is the
      * width x height pixels at (crop_x, crop_y) (top-left origin) of a full_width x
      * full_height image of the same camera, with an off-centre projection. */

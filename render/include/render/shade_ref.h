@@ -39,6 +39,12 @@ void rd_ref_shade(const rd_material *m, const float albedo_scale[3], const float
                   const float n[3], const float eye[3], const rd_light *lights, int light_count,
                   const float ambient_light[3], float out[3]);
 
+/* The tone curves alone, on exposed linear RGB (>= 0), giving display-linear values in [0, 1];
+ * NaN in, 0 out. The GPU twins are in shaders/tonemap.glsl. */
+void rd_ref_tone_curve(const float c[3], rd_tonemap mode, float white, float out[3]);
+/* White balance (matrix of rd_white_balance_matrix) then exposure: the linear values the
+ * tone map and rd_read_linear see, clamped to [0, 1e30], NaN to 0. */
+void rd_ref_expose(const float radiance[3], float exposure_ev, const float wb[9], float out[3]);
 /* Exposure then the tone map, giving display values in [0, 1] (before sRGB encoding). */
 void rd_ref_tonemap(const float radiance[3], float exposure_ev, rd_tonemap mode, float white,
                     float out[3]);

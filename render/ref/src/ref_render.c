@@ -26,6 +26,7 @@ typedef struct job {
     const rd_view *view;
     int ss, samples, bounces, tile, tiles_x, tiles_y, total;
     uint64_t seed_key;
+    float exposure_ev, wb[9]; /* resolved (auto exposure measured) and the white balance */
     ref_image *img;
     atomic_int next;
     atomic_int done;
@@ -52,7 +53,6 @@ static void render_pixel(job *j, int x, int y, ref_trace_stats *stats)
     int ss = j->ss, n = ss * ss, hits = 0;
     float inv = 1.0f / (float)ss;
     float lin[3] = {0, 0, 0}, disp[3] = {0, 0, 0};
-    float scale = exp2f(v->exposure_ev);
     /* Subpixel rows top to bottom, columns left to right: each is one texel of the GPU's
      * supersampled target, at its centre. */
     for (int sy = 0; sy < ss; sy++)
@@ -75,13 +75,13 @@ static void render_pixel(job *j, int x, int y, ref_trace_stats *stats)
                 ref_trace_primary(j->scene, j->camera.eye, dir, &diff, j->samples,
                                   mix64(j->seed_key ^ index), rad, &reflective, stats);
             hits += reflective;
+            float c[3];
+            rd_ref_expose(rad, j->exposure_ev, j->wb, c); /* tonemap.frag, LINEAR_OUT */
+            rd_ref_tone_curve(c, v->tonemap, v->white, d);
             for (int k = 0; k < 3; k++) {
-                float c = rad[k] * scale; /* tonemap.frag, LINEAR_OUT */
-                lin[k] += isnan(c) ? 0.0f : fminf(fmaxf(c, 0.0f), 1e30f);
-            }
-            rd_ref_tonemap(rad, v->exposure_ev, v->tonemap, v->white, d);
-            for (int k = 0; k < 3; k++)
+                lin[k] += c[k];
                 disp[k] += d[k];
+            }
         }
     size_t p = (size_t)y * (size_t)v->width + (size_t)x;
     ref_image *img = j->img;
@@ -94,6 +94,40 @@ static void render_pixel(job *j, int x, int y, ref_trace_stats *stats)
     img->linear[4 * p + 3] = 1.0f;
     img->rgba8[4 * p + 3] = 255;
     img->mask[p] = 2 * hits >= n ? 1 : 0;
+}
+
+/* Auto exposure as render/src/exposure_meter.c measures it: log(delta + L) of the
+ * white-balanced radiance at the same grid of the GPU's main-pass samples (one a pixel in an
+ * adaptive view, else s x s), summed into rd_auto_exposure_ev. */
+static float measure_exposure(job *j)
+{
+    const rd_view *v = j->view;
+    int shaded = v->adaptive && j->ss > 1 ? 1 : (j->ss < 4 ? j->ss : 4);
+    int hw = v->width * shaded, hh = v->height * shaded;
+    int gw = hw < 96 ? hw : 96, gh = hh < 96 ? hh : 96;
+    double sum = 0.0;
+    ref_trace_stats stats = {0};
+    for (int gy = 0; gy < gh; gy++)
+        for (int gx = 0; gx < gw; gx++) {
+            /* the texel exposure_meter.frag fetches, counted from the top row */
+            int px = (int)(((float)gx + 0.5f) * (float)hw / (float)gw);
+            int py = hh - 1 - (int)(((float)gy + 0.5f) * (float)hh / (float)gh);
+            float fx = ((float)px + 0.5f) / (float)shaded, fy = ((float)py + 0.5f) / (float)shaded;
+            float inv = 1.0f / (float)shaded, dir[3], rad[3], c[3];
+            ref_ray_diff diff;
+            ref_camera_dir(&j->camera, fx, fy, dir);
+            ref_camera_dir(&j->camera, fx + inv, fy, diff.dir_dx);
+            ref_camera_dir(&j->camera, fx, fy + inv, diff.dir_dy);
+            int reflective;
+            ref_trace_primary(j->scene, j->camera.eye, dir, &diff, j->samples,
+                              mix64(j->seed_key ^ (uint64_t)(gy * gw + gx)), rad, &reflective,
+                              &stats);
+            rd_ref_expose(rad, 0.0f, j->wb, c);
+            float y = 0.2126f * c[0] + 0.7152f * c[1] + 0.0722f * c[2];
+            sum += log(RD_EXPOSURE_DELTA + (double)y);
+        }
+    atomic_fetch_add(&j->rays, stats.rays);
+    return rd_auto_exposure_ev(sum, (long long)gw * gh, v->exposure_ev);
 }
 
 static void *worker(void *arg)
@@ -240,6 +274,9 @@ ref_result ref_render(ref_scene *s, const ref_render_desc *d, ref_image *out)
     atomic_init(&j->next, 0);
     atomic_init(&j->done, 0);
     atomic_init(&j->rays, 0);
+    rd_white_balance_matrix(v->white_balance_k, j->wb);
+    j->exposure_ev = v->auto_exposure ? measure_exposure(j) : v->exposure_ev;
+    out->exposure_ev = j->exposure_ev;
 
     int threads = d->threads;
     if (threads == 0) {

@@ -151,13 +151,30 @@ typedef struct app_room {
     int floor_material, wall_material, ceiling_material; /* indices into materials */
 } app_room;
 
+/* $.render.tone: the tone curve (the renderer's rd_tonemap, named here so the document needs
+ * no renderer). */
+typedef enum app_tone {
+    APP_TONE_NEUTRAL = 0,
+    APP_TONE_AGX,
+    APP_TONE_REINHARD,
+    APP_TONE_CLAMP
+} app_tone;
+/* "neutral", "agx", "reinhard", "clamp"; parse returns 0 for anything else. */
+const char *app_tone_name(app_tone t);
+int app_tone_parse(const char *name, app_tone *out);
+
 typedef struct app_render_settings {
-    float ambient[3];  /* I_a, default 0.1,0.1,0.1 */
-    float exposure_ev; /* default 0 */
-    float white;       /* photographic tone map L_white, default 4 */
-    int width, height; /* default 1280 x 720 */
-    int supersample;   /* 1..4, default 1 */
-    int ambient_model; /* 0 "constant" (I_a), 1 "sh9" (irradiance from a probe, section 7) */
+    float ambient[3];      /* I_a, default 0.1,0.1,0.1 */
+    float exposure_ev;     /* "exposure": EV when exposure_auto is 0; default 0 */
+    int exposure_auto;     /* "exposure": "auto" (the default): chosen from the scene by its
+                              log-average luminance (rd_view.auto_exposure) */
+    app_tone tone;         /* "tone": default APP_TONE_NEUTRAL */
+    float white;           /* photographic tone map L_white, default 4 */
+    float white_balance_k; /* "white_balance": colour temperature shown as white, K; 0 (the
+                              default) = none */
+    int width, height;     /* default 1280 x 720 */
+    int supersample;       /* 1..4, default 1 */
+    int ambient_model;     /* 0 "constant" (I_a), 1 "sh9" (irradiance from a probe, section 7) */
 } app_render_settings;
 
 typedef struct app_project {

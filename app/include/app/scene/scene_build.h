@@ -45,7 +45,11 @@ app_result app_scene_move_object(app_scene *s, app_project *p, int object,
 /* The room's geometry, the same for the GPU scene and the reference tracer's scene, is
  * app_room_geometry_build (app/design/room_mesh.h). */
 
-/* The view of a named camera (NULL = the first) at a size (0 = the project's render size). */
+/* The renderer's tone curve for a project's $.render.tone. */
+rd_tonemap app_tone_to_rd(app_tone t);
+
+/* The view of a named camera (NULL = the first) at a size (0 = the project's render size), with
+ * the project's exposure ("auto": rd_view.auto_exposure), tone curve and white balance. */
 app_result app_view_from_camera(const app_project *p, const char *camera, int width, int height,
                                 rd_view *out, char *err, size_t err_size);
 

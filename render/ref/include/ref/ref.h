@@ -134,9 +134,10 @@ typedef struct ref_image {
     /* One byte per pixel: 1 where at least half of the pixel's subpixel rays first hit a
      * surface with reflectivity > 0 or transparency > 0 (the GPU's probe objects), else 0. */
     unsigned char *mask;
-    long long rays;   /* rays traced, primary and secondary */
-    double seconds;   /* wall time of the trace (the commit excluded) */
-    int threads_used; /* worker threads that ran */
+    long long rays;    /* rays traced, primary and secondary */
+    double seconds;    /* wall time of the trace (the commit excluded) */
+    int threads_used;  /* worker threads that ran */
+    float exposure_ev; /* the exposure used (view.auto_exposure: measured as rd_render does) */
 } ref_image;
 
 /* Traces a view of the scene. On success *out owns its arrays (ref_image_free); on failure it
