@@ -36,7 +36,7 @@ int ui_gui_mouse_down(int button);
 /* The pointer in window pixels as of this frame's events. */
 void ui_gui_pointer(double *x, double *y);
 /* Where the last frame drew the button or text field labelled label (window pixels x0 y0 x1
- * y1) and whether it was inside its panel's visible area; 0 when it was not drawn. */
+ * y1) and whether all of it was inside its panel's visible area; 0 when it was not drawn. */
 int ui_gui_locate(const char *label, float rect[4], int *visible);
 
 /* A panel at a fixed place the first time it is shown. Always pair with ui_gui_end. */

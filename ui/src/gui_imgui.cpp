@@ -182,7 +182,9 @@ static void remember_item(const char *label)
     l.rect[1] = a.y;
     l.rect[2] = b.x;
     l.rect[3] = b.y;
-    l.visible = ImGui::IsItemVisible();
+    // Visible: all of it inside the panel's visible area, not a sliver at its edge.
+    l.visible = ImGui::IsRectVisible(ImVec2(a.x + 1, a.y + 1), ImVec2(a.x + 1, a.y + 1)) &&
+                ImGui::IsRectVisible(ImVec2(b.x - 1, b.y - 1), ImVec2(b.x - 1, b.y - 1));
     l.frame = g_frame_number;
 }
 
