@@ -1,8 +1,9 @@
 #!/bin/sh
 # Real X input under Xvfb, sent by xdotool through XTEST as a hand would, while every frame is
 # slowed to about 10 fps (TESSERA_FRAME_DELAY_MS=100):
-# 1. typing into the catalog search with Backspace, arrows, Home/End and Ctrl+A gives exactly
-#    the string a desktop text field would (read back from the window's log and expect-search);
+# 1. typing into the catalog search with Backspace, Delete, arrows, Home/End, Ctrl+A and
+#    Ctrl+C/V gives exactly the string a desktop text field would (read back from the window's
+#    log and expect-search); a V typed there is text, and after Enter V switches the view;
 # 2. 20 clicks of 30 ms, each shorter than a frame, alternately on two fixtures of the plan:
 #    every one selects its fixture;
 # 3. the wheel over the View panel scrolls it until its "Share folder" button, below the fold,
@@ -22,10 +23,11 @@ fi
 tessera=$1 out=$2 check=$3 project=$4
 log="$out/stderr.txt"
 
-# wait_log PATTERN: until the window's log has a line matching PATTERN (grep -E), 30 s at most.
+# wait_log PATTERN [N]: until the window's log has N lines (1) matching PATTERN (grep -E), 30 s
+# at most.
 wait_log() {
     i=0
-    until grep -qE "$1" "$log"; do
+    until [ "$(grep -cE "$1" "$log")" -ge "${2:-1}" ]; do
         kill -0 "$pid" 2>/dev/null || { cat "$log"; echo "FAIL: the window exited early"; exit 1; }
         i=$((i + 1))
         test $i -le 300 || { cat "$log"; echo "FAIL: no \"$1\" in the log within 30 s"; exit 1; }
@@ -41,7 +43,7 @@ where() {
 # click X Y MS: a left click held MS milliseconds, at X Y.
 click() {
     xdotool mousemove "$1" "$2"
-    sleep 0.3
+    sleep 0.15
     xdotool mousedown 1 sleep "$(echo "$3" | awk '{print $1 / 1000}')" mouseup 1
 }
 
@@ -51,7 +53,7 @@ view plan
 wait 3
 locate widget search
 wait-file $out/typed
-expect-search metro-hall
+expect-search metro-hallmetro-hall
 screenshot $out/typed.png
 locate fixture wc
 locate fixture bath
@@ -71,11 +73,11 @@ TESSERA_FRAME_DELAY_MS=100 "$tessera" open "$project" --size 1024x600 --script "
 pid=$!
 
 # 1. Typing. The field gets the keyboard with a click; each line's result is what any
-# desktop text field gives.
+# desktop text field gives. The V typed is text, not the view shortcut.
 wait_log "waiting for .*/typed"
 set -- $(where 'widget "search"')
 click "$1" "$2" 30
-xdotool type --delay 40 "basinx"
+xdotool type --delay 40 "basinv"
 xdotool key --delay 40 BackSpace               # basin
 xdotool key --delay 40 Left Left BackSpace     # bain
 xdotool key --delay 40 End                     #
@@ -84,9 +86,17 @@ xdotool key --delay 40 ctrl+a                  # all selected
 xdotool type --delay 40 "metro-hallx"          # metro-hallx
 xdotool key --delay 40 BackSpace Home Delete   # etro-hall
 xdotool type --delay 40 "m"                    # metro-hall
-wait_log 'catalog search "metro-hall"'
+wait_log 'catalog search "metro-hall"$'
+xdotool key --delay 40 ctrl+a ctrl+c End ctrl+v # metro-hallmetro-hall (the clipboard)
+wait_log 'catalog search "metro-hallmetro-hall"$'
 sleep 0.5 # nothing more arrives
+# Enter lets go of the keyboard: V is the view shortcut again (to the 3D view and back).
 xdotool key Return
+sleep 0.5
+xdotool key v
+wait_log '^tessera: view 3D'
+xdotool key v
+wait_log '^tessera: view plan' 2 # the script's own "view plan" was the first
 touch "$out/typed"
 
 # 2. Clicks shorter than a frame, alternately on two fixtures: each one selects.

@@ -29,10 +29,13 @@ static void typed(const char *s)
 
 /* A text field's editing as Dear ImGui 1.86 applies a frame: its characters first, then its
  * key presses (InputTextEx). Backspace deletes before the cursor; Ctrl+A then a character
- * replaces everything; Home and End move the cursor. */
+ * replaces everything; Home and End move the cursor; characters typed while Ctrl is held are
+ * dropped. */
 static void edit(char *text, int *cursor, int *all_selected)
 {
-    for (int i = 0; i < f.count; i++) {
+    /* Dear ImGui takes a frame's characters for a shortcut while Ctrl is held. */
+    int ctrl = q.key_down[GLFW_KEY_LEFT_CONTROL];
+    for (int i = 0; i < f.count && !ctrl; i++) {
         const ui_input_event *e = &f.events[i];
         if (e->kind != UI_INPUT_CHAR)
             continue;
@@ -175,6 +178,24 @@ static void test_typing_keeps_its_order(void)
     CHECK(frames < 20);
 }
 
+/* A character typed just before Ctrl goes down is still text. */
+static void test_text_then_ctrl(void)
+{
+    ui_input_queue_init(&q, 0, 0);
+    typed("ab");
+    key(GLFW_KEY_LEFT_CONTROL, GLFW_PRESS, GLFW_MOD_CONTROL);
+    key(GLFW_KEY_LEFT_CONTROL, GLFW_RELEASE, 0);
+    typed("c");
+    char text[16] = "";
+    int cursor = 0, all = 0, frames = 0;
+    while (q.count > 0 && frames < 10) {
+        ui_input_take_frame(&q, &f);
+        edit(text, &cursor, &all);
+        frames++;
+    }
+    CHECK_MSG(!strcmp(text, "abc"), "typed \"%s\", expected \"abc\"", text);
+}
+
 static void test_wheel_after_a_press_waits(void)
 {
     ui_input_queue_init(&q, 0, 0);
@@ -211,6 +232,7 @@ int main(void)
     test_key_tap_inside_one_frame();
     test_ctrl_a_in_one_frame();
     test_typing_keeps_its_order();
+    test_text_then_ctrl();
     test_wheel_after_a_press_waits();
     test_full_queue_coalesces_moves();
     return check_report("input_queue");

@@ -32,18 +32,12 @@ void ui_input_push(ui_input_queue *q, const ui_input_event *e)
     q->count++;
 }
 
-static int is_modifier(int key)
-{
-    return key >= GLFW_KEY_LEFT_SHIFT && key <= GLFW_KEY_RIGHT_SUPER;
-}
-
 /* Keys whose order against typed characters changes a text field's content: the editing and
- * moving keys, and any key with Ctrl or Super (select all, copy, paste, undo). Modifiers alone
- * and plain printable keys do not: their characters arrive as UI_INPUT_CHAR. */
-static int edits_text(const ui_input_event *e)
+ * moving keys, any key with Ctrl or Super (select all, copy, paste, undo), and the modifiers
+ * themselves (Dear ImGui drops a frame's characters while Ctrl is held, taking them for a
+ * shortcut). Plain printable keys do not: their characters arrive as UI_INPUT_CHAR. */
+static int orders_with_text(const ui_input_event *e)
 {
-    if (is_modifier(e->code))
-        return 0;
     return e->code >= GLFW_KEY_ESCAPE || (e->mods & (GLFW_MOD_CONTROL | GLFW_MOD_SUPER)) != 0;
 }
 
@@ -60,7 +54,7 @@ static int valid_button(int button)
 void ui_input_take_frame(ui_input_queue *q, ui_input_frame *f)
 {
     unsigned char key_changed[UI_INPUT_KEYS] = {0};
-    int button_changed = 0, moved = 0, wheeled = 0, typed = 0, edit_key_changed = 0;
+    int button_changed = 0, moved = 0, wheeled = 0, typed = 0, ordered_key_changed = 0;
     f->count = 0;
     f->scroll_x = f->scroll_y = 0;
     while (q->count > 0) {
@@ -71,13 +65,13 @@ void ui_input_take_frame(ui_input_queue *q, ui_input_frame *f)
             if (!valid_key(e->code))
                 break;
             if (e->action == GLFW_REPEAT)
-                stop = typed && edits_text(e);
+                stop = typed && orders_with_text(e);
             else
                 stop = q->key_down[e->code] != (e->action == GLFW_PRESS) &&
-                       (key_changed[e->code] || (typed && edits_text(e)) || button_changed);
+                       (key_changed[e->code] || (typed && orders_with_text(e)) || button_changed);
             break;
         case UI_INPUT_CHAR:
-            stop = edit_key_changed || button_changed;
+            stop = ordered_key_changed || button_changed;
             break;
         case UI_INPUT_BUTTON:
             if (valid_button(e->code))
@@ -99,7 +93,7 @@ void ui_input_take_frame(ui_input_queue *q, ui_input_frame *f)
                 q->key_down[e->code] != (e->action == GLFW_PRESS)) {
                 q->key_down[e->code] = e->action == GLFW_PRESS;
                 key_changed[e->code] = 1;
-                edit_key_changed |= edits_text(e);
+                ordered_key_changed |= orders_with_text(e);
             }
             break;
         case UI_INPUT_CHAR:

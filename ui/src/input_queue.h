@@ -59,7 +59,8 @@ void ui_input_push(ui_input_queue *q, const ui_input_event *e);
  * change a key or a button a second time; press or release a button after the pointer moved,
  * a button changed or the wheel turned (the press lands where the pointer was, on what the
  * last frame showed there); move the pointer or turn the wheel after a button changed; or mix
- * typed characters with keys that edit text (Backspace, arrows, Ctrl+A, ...) in either order.
+ * typed characters with keys that edit text (Backspace, arrows, Ctrl+A, ...) or modifiers in
+ * either order.
  * The rest waits for the next frame. Fills f (f->count may be 0). */
 void ui_input_take_frame(ui_input_queue *q, ui_input_frame *f);
 

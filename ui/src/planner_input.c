@@ -91,14 +91,21 @@ static void frame_delay(void)
     }
 }
 
-/* While a script runs, what the hand changed in the selection and the catalog search is
- * logged: tests that drive the window with real events read it back. */
+/* While a script runs, what the hand changed in the view, the selection and the catalog
+ * search is logged: tests that drive the window with real events read it back. */
 static void log_changes(const planner *p)
 {
-    static int last_selected = -1;
+    static const char *const view_names[] = {"3D", "plan", "elevation"}; /* UI_VIEW_* */
+    static int last_view = -1, last_selected = -1;
     static char last_search[sizeof p->browser.text];
     if (!p->script.count)
         return;
+    if (last_view < 0)
+        last_view = p->view;
+    if (p->view != last_view && p->view >= 0 && p->view < 3) {
+        fprintf(stderr, "tessera: view %s\n", view_names[p->view]);
+        last_view = p->view;
+    }
     int s = p->plan_o.selected_object;
     if (s != last_selected) {
         if (s >= 0 && s < p->project.object_count)
