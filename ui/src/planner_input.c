@@ -1,19 +1,21 @@
 /* Mouse and keyboard to navigation: left drag orbits (or looks around when walking), the wheel
- * zooms, W A S D walk at 1.2 m/s (shift: 2.5 m/s), Tab switches orbit and walk, 1-4 pick the
- * quality, F1-F9 fly to stored viewpoints, V switches the 3D and the plan view, Ctrl+Z undo,
- * Ctrl+Y (or Ctrl+Shift+Z) redo, Ctrl+S save, Delete removes the selected fixture. Presentation: P
- * shows or hides the UI, T starts or stops the tour, R the turntable, F11 fullscreen, F12 a
- * print-quality screenshot.
- * The events come from the frame's share of the input queue (gui.h, input_queue.h): Dear ImGui
- * sees every one of them; the planner acts only on those the widgets do not want (a key while
- * no text field has the keyboard, the wheel and the buttons while the pointer is over no panel).
+ * zooms (the plan and the elevation too, about the pointer and the centre), W A S D walk at 1.2 m/s
+ * (shift: 2.5 m/s), Tab switches orbit and walk, 1-4 pick the quality, F1-F9 fly to stored
+ * viewpoints, V switches the 3D and the plan view, Ctrl+Z undo, Ctrl+Y (or Ctrl+Shift+Z) redo,
+ * Ctrl+S save, Delete removes the selected fixture. Presentation: P shows or hides the UI, T starts
+ * or stops the tour, R the turntable, F11 fullscreen, F12 a print-quality screenshot. The events
+ * come from the frame's share of the input queue (gui.h, input_queue.h): Dear ImGui sees every one
+ * of them; the planner acts only on those the widgets do not want (a key while no text field has
+ * the keyboard, the wheel and the buttons while the pointer is over no panel).
  */
 #include "planner.h"
 
 #include "gui.h"
 #include "input_queue.h"
+#include "tiles.h"
 
 #include <GLFW/glfw3.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,7 +27,14 @@ static void on_scroll(planner *p, double dy)
         return;
     if (p->view == UI_VIEW_PLAN)
         planner_plan_scroll(p, dy);
-    else if (p->mode == UI_MODE_ORBIT)
+    else if (p->view == UI_VIEW_ELEVATION) {
+        /* The same steps and limits as the tile panel's + and - buttons. */
+        ui_tiles *t = planner_tiles(p);
+        if (!t)
+            return;
+        double z = (t->zoom > 0 ? t->zoom : 1) * pow(1.25, dy);
+        t->zoom = z < 0.25 ? 0.25 : z > 20 ? 20 : z;
+    } else if (p->mode == UI_MODE_ORBIT)
         ui_orbit_zoom(&p->orbit, dy);
 }
 
