@@ -76,6 +76,7 @@ pid=$!
 # desktop text field gives. The V typed is text, not the view shortcut.
 wait_log "waiting for .*/typed"
 set -- $(where 'widget "search"')
+test $# -eq 2 || { cat "$log"; echo "FAIL: the window did not locate its search field"; exit 1; }
 click "$1" "$2" 30
 xdotool type --delay 40 "basinv"
 xdotool key --delay 40 BackSpace               # basin
@@ -109,7 +110,6 @@ while [ $n -lt 10 ]; do
     click "$3" "$4" 30
     n=$((n + 1))
 done
-sleep 1
 touch "$out/clicked"
 
 # 3. The wheel: over the View panel it scrolls the panel, over the plan it zooms the plan.
@@ -117,7 +117,6 @@ wait_log "waiting for .*/scrolled"
 xdotool mousemove 120 150 sleep 0.3 click --repeat 8 --delay 60 5
 sleep 0.5
 xdotool mousemove 470 240 sleep 0.3 click --repeat 3 --delay 60 4
-sleep 1
 touch "$out/scrolled"
 
 set +e

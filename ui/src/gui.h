@@ -31,6 +31,8 @@ int ui_gui_wants_keyboard(void);
 struct ui_input_frame;
 void ui_gui_take_input(void);
 const struct ui_input_frame *ui_gui_input(void);
+/* Events still waiting for a later frame. */
+int ui_gui_input_pending(void);
 /* 1 while the button (GLFW_MOUSE_BUTTON_*) is held this frame. */
 int ui_gui_mouse_down(int button);
 /* The pointer in window pixels as of this frame's events. */

@@ -210,6 +210,11 @@ extern "C" void ui_gui_take_input(void)
     g_frame_taken = true;
 }
 
+extern "C" int ui_gui_input_pending(void)
+{
+    return g_queue.count;
+}
+
 extern "C" const ui_input_frame *ui_gui_input(void)
 {
     return &g_frame;

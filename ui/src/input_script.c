@@ -12,25 +12,31 @@
 
 enum { WAIT_FILE_SECONDS = 60 };
 
+/* Done once PATH exists and every event sent before it was handled: the driver creates PATH
+ * after its last event reached the X server, so one more frame's poll has them all queued, and
+ * the script goes on when the queue is empty (a slow frame can leave clicks waiting). */
 int planner_wait_file(planner *p, const ui_action *a)
 {
-    static int waiting_action = -1;
+    static int waiting_action = -1, file_seen;
     static double since;
     double now = glfwGetTime();
     if (waiting_action != p->action) {
         waiting_action = p->action;
+        file_seen = 0;
         since = now;
         fprintf(stderr, "tessera: script line %d: waiting for %s\n", a->line, a->text);
     }
-    if (access(a->text, F_OK) == 0) {
+    if (file_seen && ui_gui_input_pending() == 0) {
         waiting_action = -1;
         p->action++;
         p->action_frame = 0;
         return 0;
     }
+    file_seen = file_seen || access(a->text, F_OK) == 0;
     if (now - since > WAIT_FILE_SECONDS) {
-        fprintf(stderr, "tessera: script line %d: %s did not appear within %d s\n", a->line,
-                a->text, WAIT_FILE_SECONDS);
+        fprintf(stderr, "tessera: script line %d: %s within %d s\n", a->line,
+                file_seen ? "the input was not handled" : "the file did not appear",
+                WAIT_FILE_SECONDS);
         waiting_action = -1;
         p->exit_code = 1;
         return 1;
