@@ -68,11 +68,10 @@ void planner_drag_ghost(planner *p, int hit, double x, double y)
 void planner_drag_drop_frame(planner *p)
 {
     ui_drag_drop *d = &p->drop;
-    int scripted = p->script.count && p->action < p->script.count;
-    if (!scripted) {
+    if (planner_input_live(p)) {
         double mx, my;
-        glfwGetCursorPos(p->window, &mx, &my);
-        int down = glfwGetMouseButton(p->window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        ui_gui_pointer(&mx, &my);
+        int down = ui_gui_mouse_down(GLFW_MOUSE_BUTTON_LEFT);
         if (!d->active && p->browser.drag_hit >= 0 && down) {
             if (p->browser.drag_hit != p->browser.selected)
                 ui_catalog_browser_select(&p->browser, p->browser.drag_hit);

@@ -205,7 +205,7 @@ static void level_marks(const ui_tiles *t, const app_tiling *g, float x, double 
 static void handle_input(planner *p, ui_tiles *t, app_point2 lo, app_point2 hi)
 {
     double mx, my;
-    glfwGetCursorPos(p->window, &mx, &my);
+    ui_gui_pointer(&mx, &my);
     double s, tt;
     ui_elev_to_surface(&t->view, (float)mx, (float)my, &s, &tt);
     int free_pointer = !ui_gui_wants_mouse();
@@ -213,7 +213,7 @@ static void handle_input(planner *p, ui_tiles *t, app_point2 lo, app_point2 hi)
     t->hover[0] = s;
     t->hover[1] = tt;
     /* The right button pans: the surface point under the pointer stays under it. */
-    int right = glfwGetMouseButton(p->window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    int right = ui_gui_mouse_down(GLFW_MOUSE_BUTTON_RIGHT);
     if (right && (t->panning || free_pointer)) {
         if (t->panning) {
             double s0, t0;
@@ -227,7 +227,7 @@ static void handle_input(planner *p, ui_tiles *t, app_point2 lo, app_point2 hi)
     } else {
         t->panning = 0;
     }
-    int left = glfwGetMouseButton(p->window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    int left = ui_gui_mouse_down(GLFW_MOUSE_BUTTON_LEFT);
     if (left && !t->pressed && t->hovering) {
         t->pressed = 1;
         t->press_x = (float)mx;
@@ -270,7 +270,7 @@ void planner_elevation_frame(planner *p, int width, int height)
     t->view.px_per_mm *= t->zoom > 0 ? t->zoom : 1;
     t->view.centre[0] += t->pan[0];
     t->view.centre[1] += t->pan[1];
-    if (!p->script.count || p->action >= p->script.count)
+    if (planner_input_live(p))
         handle_input(p, t, lo, hi);
 
     polyline(t, t->region.outer.points, t->region.outer.count, rgba(200, 200, 195, 255), 1.0f);

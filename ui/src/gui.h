@@ -23,6 +23,24 @@ void ui_gui_render(void);
 int ui_gui_wants_mouse(void);
 int ui_gui_wants_keyboard(void);
 
+/* Input (input_queue.h). ui_gui_init installs the window's key, character, button, pointer
+ * and wheel callbacks (chained to any installed before); they queue every event. Once a frame,
+ * before anything reads input, ui_gui_take_input takes the frame's share; ui_gui_new_frame
+ * hands the same events to Dear ImGui. The planner reads them here, never by polling GLFW, so
+ * a press and release inside one frame is still seen as one frame held. */
+struct ui_input_frame;
+void ui_gui_take_input(void);
+const struct ui_input_frame *ui_gui_input(void);
+/* Events still waiting for a later frame. */
+int ui_gui_input_pending(void);
+/* 1 while the button (GLFW_MOUSE_BUTTON_*) is held this frame. */
+int ui_gui_mouse_down(int button);
+/* The pointer in window pixels as of this frame's events. */
+void ui_gui_pointer(double *x, double *y);
+/* Where the last frame drew the button or text field labelled label (window pixels x0 y0 x1
+ * y1) and whether all of it was inside its panel's visible area; 0 when it was not drawn. */
+int ui_gui_locate(const char *label, float rect[4], int *visible);
+
 /* A panel at a fixed place the first time it is shown. Always pair with ui_gui_end. */
 int ui_gui_begin(const char *title, float x, float y, float width, float height);
 /* A panel placed by the layout (panel_layout.h): place = 1 moves and sizes it to the

@@ -1,10 +1,13 @@
 // The C seam over Dear ImGui (ui/src/gui.h): widgets forwarded one to one, no logic here.
 #include "gui.h"
+#include "input_queue.h"
 
 #include <GLFW/glfw3.h>
+#include <cfloat>
 #include <cstdarg>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 
 #include "imgui.h"
@@ -12,6 +15,221 @@
 #include "backends/imgui_impl_opengl3.h"
 
 static bool g_ready = false;
+
+// Input: the window's GLFW callbacks are this file's. Each pushes its event into one queue
+// (input_queue.h) and calls whatever callback was installed before it; each frame takes its
+// share once (ui_gui_take_input) and hands the same events to Dear ImGui's GLFW callbacks
+// (ui_gui_new_frame) and to the planner (ui_gui_input), so neither misses an event and a
+// click shorter than a frame is still a click. Dear ImGui's backend installs no callbacks of
+// its own: it would set a key down and up again before the frame saw it.
+static GLFWwindow *g_window = nullptr;
+static ui_input_queue g_queue;
+static ui_input_frame g_frame;
+static bool g_frame_taken = false;
+static struct {
+    GLFWkeyfun key;
+    GLFWcharfun chr;
+    GLFWmousebuttonfun button;
+    GLFWcursorposfun cursor;
+    GLFWscrollfun scroll;
+    GLFWwindowfocusfun focus;
+    GLFWcursorenterfun enter;
+} g_previous;
+
+static void push(ui_input_kind kind, int code, int action, int mods, double x, double y)
+{
+    ui_input_event e;
+    e.kind = kind;
+    e.code = code;
+    e.action = action;
+    e.mods = mods;
+    e.x = x;
+    e.y = y;
+    ui_input_push(&g_queue, &e);
+}
+
+static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
+{
+    push(UI_INPUT_KEY, key, action, mods, 0, 0);
+    if (g_previous.key)
+        g_previous.key(w, key, scancode, action, mods);
+}
+
+static void on_char(GLFWwindow *w, unsigned int c)
+{
+    push(UI_INPUT_CHAR, (int)c, 0, 0, 0, 0);
+    if (g_previous.chr)
+        g_previous.chr(w, c);
+}
+
+static void on_button(GLFWwindow *w, int button, int action, int mods)
+{
+    push(UI_INPUT_BUTTON, button, action, mods, 0, 0);
+    if (g_previous.button)
+        g_previous.button(w, button, action, mods);
+}
+
+static void on_cursor(GLFWwindow *w, double x, double y)
+{
+    push(UI_INPUT_CURSOR, 0, 0, 0, x, y);
+    if (g_previous.cursor)
+        g_previous.cursor(w, x, y);
+}
+
+static void on_scroll(GLFWwindow *w, double dx, double dy)
+{
+    push(UI_INPUT_SCROLL, 0, 0, 0, dx, dy);
+    if (g_previous.scroll)
+        g_previous.scroll(w, dx, dy);
+}
+
+// Focus and the pointer entering need no ordering: Dear ImGui takes them at once.
+static void on_focus(GLFWwindow *w, int focused)
+{
+    ImGui_ImplGlfw_WindowFocusCallback(w, focused);
+    if (g_previous.focus)
+        g_previous.focus(w, focused);
+}
+
+static void on_enter(GLFWwindow *w, int entered)
+{
+    ImGui_ImplGlfw_CursorEnterCallback(w, entered);
+    if (g_previous.enter)
+        g_previous.enter(w, entered);
+}
+
+static void install_callbacks(GLFWwindow *window)
+{
+    double x, y;
+    glfwGetCursorPos(window, &x, &y);
+    ui_input_queue_init(&g_queue, x, y);
+    std::memset(&g_frame, 0, sizeof g_frame);
+    g_frame.x = x;
+    g_frame.y = y;
+    g_window = window;
+    g_previous.key = glfwSetKeyCallback(window, on_key);
+    g_previous.chr = glfwSetCharCallback(window, on_char);
+    g_previous.button = glfwSetMouseButtonCallback(window, on_button);
+    g_previous.cursor = glfwSetCursorPosCallback(window, on_cursor);
+    g_previous.scroll = glfwSetScrollCallback(window, on_scroll);
+    g_previous.focus = glfwSetWindowFocusCallback(window, on_focus);
+    g_previous.enter = glfwSetCursorEnterCallback(window, on_enter);
+}
+
+static void remove_callbacks(void)
+{
+    glfwSetKeyCallback(g_window, g_previous.key);
+    glfwSetCharCallback(g_window, g_previous.chr);
+    glfwSetMouseButtonCallback(g_window, g_previous.button);
+    glfwSetCursorPosCallback(g_window, g_previous.cursor);
+    glfwSetScrollCallback(g_window, g_previous.scroll);
+    glfwSetWindowFocusCallback(g_window, g_previous.focus);
+    glfwSetCursorEnterCallback(g_window, g_previous.enter);
+    g_window = nullptr;
+}
+
+// Hands this frame's key, character and wheel events to Dear ImGui in their order, then its
+// buttons and pointer (the backend's NewFrame polls GLFW for those: the frame's own state
+// replaces what it polled).
+static void feed_imgui(void)
+{
+    for (int i = 0; i < g_frame.count; i++) {
+        const ui_input_event &e = g_frame.events[i];
+        if (e.kind == UI_INPUT_KEY)
+            ImGui_ImplGlfw_KeyCallback(g_window, e.code, 0, e.action, e.mods);
+        else if (e.kind == UI_INPUT_CHAR)
+            ImGui_ImplGlfw_CharCallback(g_window, (unsigned)e.code);
+        else if (e.kind == UI_INPUT_SCROLL)
+            ImGui_ImplGlfw_ScrollCallback(g_window, e.x, e.y);
+    }
+}
+
+static void feed_imgui_pointer(void)
+{
+    ImGuiIO &io = ImGui::GetIO();
+    for (int b = 0; b < IM_ARRAYSIZE(io.MouseDown) && b < UI_INPUT_BUTTONS; b++)
+        io.MouseDown[b] = g_frame.button_down[b] != 0;
+    if (io.MousePos.x != -FLT_MAX) // the pointer is over the window (else the backend knows)
+        io.MousePos = ImVec2((float)g_frame.x, (float)g_frame.y);
+}
+
+// Where the last frame drew each labelled button and text field, for scripts that drive the
+// window with real pointer events (ui_gui_locate).
+enum { LOCATED_MAX = 96 };
+static struct located {
+    char label[64];
+    float rect[4];
+    bool visible;
+    long frame;
+} g_located[LOCATED_MAX];
+static long g_frame_number = 0;
+
+static void remember_item(const char *label)
+{
+    int slot = -1;
+    for (int i = 0; i < LOCATED_MAX && slot < 0; i++)
+        if (!std::strncmp(g_located[i].label, label, sizeof g_located[i].label - 1))
+            slot = i;
+    for (int i = 0; i < LOCATED_MAX && slot < 0; i++)
+        if (!g_located[i].label[0] || g_located[i].frame < g_frame_number - 1)
+            slot = i;
+    if (slot < 0)
+        return;
+    located &l = g_located[slot];
+    std::snprintf(l.label, sizeof l.label, "%s", label);
+    ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    l.rect[0] = a.x;
+    l.rect[1] = a.y;
+    l.rect[2] = b.x;
+    l.rect[3] = b.y;
+    // Visible: all of it inside the panel's visible area, not a sliver at its edge.
+    l.visible = ImGui::IsRectVisible(ImVec2(a.x + 1, a.y + 1), ImVec2(a.x + 1, a.y + 1)) &&
+                ImGui::IsRectVisible(ImVec2(b.x - 1, b.y - 1), ImVec2(b.x - 1, b.y - 1));
+    l.frame = g_frame_number;
+}
+
+extern "C" int ui_gui_locate(const char *label, float rect[4], int *visible)
+{
+    for (int i = 0; i < LOCATED_MAX; i++) {
+        const located &l = g_located[i];
+        if (l.label[0] && l.frame == g_frame_number &&
+            !std::strncmp(l.label, label, sizeof l.label - 1)) {
+            std::memcpy(rect, l.rect, sizeof l.rect);
+            *visible = l.visible;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+extern "C" void ui_gui_take_input(void)
+{
+    if (!g_window)
+        return;
+    ui_input_take_frame(&g_queue, &g_frame);
+    g_frame_taken = true;
+}
+
+extern "C" int ui_gui_input_pending(void)
+{
+    return g_queue.count;
+}
+
+extern "C" const ui_input_frame *ui_gui_input(void)
+{
+    return &g_frame;
+}
+
+extern "C" int ui_gui_mouse_down(int button)
+{
+    return button >= 0 && button < UI_INPUT_BUTTONS && g_frame.button_down[button];
+}
+
+extern "C" void ui_gui_pointer(double *x, double *y)
+{
+    *x = g_frame.x;
+    *y = g_frame.y;
+}
 
 extern "C" int ui_gui_init(GLFWwindow *window, char *err, size_t err_size)
 {
@@ -21,7 +239,7 @@ extern "C" int ui_gui_init(GLFWwindow *window, char *err, size_t err_size)
         ImGuiIO &io = ImGui::GetIO();
         io.IniFilename = nullptr; // the planner keeps no imgui.ini next to the user's files
         ImGui::StyleColorsDark();
-        if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) {
+        if (!ImGui_ImplGlfw_InitForOpenGL(window, false)) {
             std::snprintf(err, err_size, "Dear ImGui: the GLFW backend failed to start");
             ImGui::DestroyContext();
             return 1;
@@ -32,6 +250,7 @@ extern "C" int ui_gui_init(GLFWwindow *window, char *err, size_t err_size)
             ImGui::DestroyContext();
             return 1;
         }
+        install_callbacks(window);
         g_ready = true;
         return 0;
     } catch (const std::exception &e) {
@@ -44,6 +263,7 @@ extern "C" void ui_gui_shutdown(void)
 {
     if (!g_ready)
         return;
+    remove_callbacks();
     ImGui_ImplOpenGL3_Shutdown();
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
@@ -54,8 +274,14 @@ extern "C" void ui_gui_new_frame(void)
 {
     if (!g_ready)
         return;
+    if (!g_frame_taken) // nothing read this frame's input before the panels
+        ui_gui_take_input();
+    g_frame_taken = false;
+    g_frame_number++;
+    feed_imgui();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    feed_imgui_pointer();
     ImGui::NewFrame();
 }
 
@@ -74,7 +300,9 @@ extern "C" int ui_gui_wants_mouse(void)
 
 extern "C" int ui_gui_wants_keyboard(void)
 {
-    return g_ready && ImGui::GetIO().WantCaptureKeyboard;
+    // A text field activated by this frame's click has the keyboard before the next NewFrame
+    // says so.
+    return g_ready && (ImGui::GetIO().WantCaptureKeyboard || ImGui::IsAnyItemActive());
 }
 
 extern "C" int ui_gui_begin(const char *title, float x, float y, float width, float height)
@@ -142,7 +370,11 @@ extern "C" void ui_gui_same_line(void)
 
 extern "C" int ui_gui_button(const char *label)
 {
-    return g_ready && ImGui::Button(label);
+    if (!g_ready)
+        return 0;
+    bool pressed = ImGui::Button(label);
+    remember_item(label);
+    return pressed;
 }
 
 extern "C" int ui_gui_combo(const char *label, int *current, const char *const *items, int count)
@@ -157,7 +389,11 @@ extern "C" int ui_gui_slider_float(const char *label, float *value, float lo, fl
 
 extern "C" int ui_gui_input_text(const char *label, char *buf, size_t size)
 {
-    return g_ready && ImGui::InputText(label, buf, size);
+    if (!g_ready)
+        return 0;
+    bool changed = ImGui::InputText(label, buf, size);
+    remember_item(label);
+    return changed;
 }
 
 extern "C" int ui_gui_selectable(const char *label, int selected)

@@ -126,6 +126,13 @@ extern const char *const ui_quality_names[4];
 
 /* planner_input.c: the window's events since the last frame, applied to the navigation. */
 void planner_handle_input(planner *p, double dt);
+/* 1 when the pointer and the keys drive the window: no script runs, or it waits for outside
+ * input (wait-file). */
+int planner_input_live(const planner *p);
+/* input_script.c: wait-file (0 waiting or done, 1 failed: message printed), locate and
+ * expect-search (0 ok, 1 failed: why in p->status). */
+int planner_wait_file(planner *p, const ui_action *a);
+int planner_input_action(planner *p, const ui_action *a);
 /* planner_panels.c */
 void planner_draw_panels(planner *p, int width, int height);
 /* planner_script.c: runs this frame's share of the script; 0 ok, 1 failed (message printed). */

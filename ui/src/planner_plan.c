@@ -203,9 +203,8 @@ const char *planner_unique_name(const planner *p, const char *stem)
 
 static void handle_plan_input(planner *p)
 {
-    GLFWwindow *win = p->window;
     double mx, my;
-    glfwGetCursorPos(win, &mx, &my);
+    ui_gui_pointer(&mx, &my);
     float sx = (float)mx, sy = (float)my;
     double x, y;
     ui_plan_to_plan(&p->plan_t, sx, sy, &x, &y);
@@ -213,8 +212,8 @@ static void handle_plan_input(planner *p)
     int free_pointer = !ui_gui_wants_mouse();
     o->hover_corner =
         free_pointer ? ui_plan_hit_corner(&p->plan_t, &p->project.plan, sx, sy, 8) : -1;
-    int left = glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-    int right = glfwGetMouseButton(win, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    int left = ui_gui_mouse_down(GLFW_MOUSE_BUTTON_LEFT);
+    int right = ui_gui_mouse_down(GLFW_MOUSE_BUTTON_RIGHT);
 
     if (right && free_pointer) {
         if (p->panning) {
@@ -307,7 +306,7 @@ void planner_plan_frame(planner *p, int width, int height)
         p->plan_t.height = (float)height;
         p->plan_fitted = 1;
     }
-    if (!p->script.count || p->action >= p->script.count)
+    if (planner_input_live(p))
         handle_plan_input(p);
     ui_plan_draw(&p->plan_t, &p->project, p->fixtures, p->free_areas, p->fixture_count,
                  &p->findings, &p->plan_o);
@@ -317,6 +316,6 @@ void planner_plan_frame(planner *p, int width, int height)
 void planner_plan_scroll(planner *p, double steps)
 {
     double mx, my;
-    glfwGetCursorPos(p->window, &mx, &my);
+    ui_gui_pointer(&mx, &my);
     ui_plan_zoom_at(&p->plan_t, (float)mx, (float)my, pow(1.15, steps));
 }

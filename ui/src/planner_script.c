@@ -266,6 +266,10 @@ static int apply(planner *p, const ui_action *a)
     case UI_ACT_EXPECT_TILES:
     case UI_ACT_TILE_PANEL:
         return planner_tile_action(p, a) ? fail(a, p->status) : 0;
+    case UI_ACT_WAIT_FILE: /* input_script.c */
+    case UI_ACT_LOCATE:
+    case UI_ACT_EXPECT_SEARCH:
+        return planner_input_action(p, a) ? fail(a, p->status) : 0;
     case UI_ACT_QUIT:
         p->quit = 1;
         return 0;
@@ -278,6 +282,8 @@ int planner_script_step(planner *p)
     if (p->action >= p->script.count)
         return 0;
     const ui_action *a = &p->script.actions[p->action];
+    if (a->kind == UI_ACT_WAIT_FILE) /* the hand drives the window meanwhile */
+        return planner_wait_file(p, a);
     p->dragging = 0;
     /* wait N spreads nothing over N frames; every other action takes at least one. */
     int frames = a->kind == UI_ACT_WAIT ? (int)a->a : a->frames;

@@ -63,6 +63,9 @@ static const struct {
     {"expect-pattern", UI_ACT_EXPECT_PATTERN, 0, 2},
     {"expect-tiles", UI_ACT_EXPECT_TILES, 0, 2},
     {"tile-panel", UI_ACT_TILE_PANEL, 0, 1},
+    {"wait-file", UI_ACT_WAIT_FILE, 0, 1},
+    {"locate", UI_ACT_LOCATE, 0, 2}, /* widget|fixture, then the label or name */
+    {"expect-search", UI_ACT_EXPECT_SEARCH, 0, 2},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 

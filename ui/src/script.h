@@ -56,6 +56,14 @@
  *   tile-panel on|off      the tile panel over the 3D view too (it shows in the elevation)
  *   expect-probe MATERIAL UPDATE  fail unless the material's probe updates so (every-frame,
  *                          once, on-change, time-sliced, static, default; docs/editing.md)
+ *   wait-file PATH         hold the script until PATH exists (60 s at most) and the input
+ *                          sent before it was handled, the window taking live input meanwhile:
+ *                          an outside driver (xdotool in the input tests) works the window,
+ *                          then creates PATH
+ *   locate widget LABEL... log where a button or text field labelled LABEL is, in window
+ *                          pixels, and whether its panel shows it (input_script.c)
+ *   locate fixture NAME... log where a fixture's centre is in the plan view (view plan first)
+ *   expect-search TEXT...  fail unless the catalog browser's search field holds exactly TEXT
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -112,6 +120,9 @@ typedef enum ui_action_kind {
     UI_ACT_TILE_PANEL,
     UI_ACT_DRAG3D,
     UI_ACT_MOVE_WALL,
+    UI_ACT_WAIT_FILE, /* driving the window with outside input (input_script.c) */
+    UI_ACT_LOCATE,
+    UI_ACT_EXPECT_SEARCH,
     UI_ACT_QUIT
 } ui_action_kind;
 

@@ -1,0 +1,101 @@
+/* Script actions for tests that work the window with real X events (xdotool) instead of
+ * scripted ones: wait-file holds the script while the outside driver works, locate tells it
+ * where to click, expect-search reads a text field back (script.h). */
+#include "planner.h"
+
+#include "gui.h"
+
+#include <GLFW/glfw3.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+enum { WAIT_FILE_SECONDS = 60 };
+
+/* Done once PATH exists and every event sent before it was handled: the driver creates PATH
+ * after its last event reached the X server, so one more frame's poll has them all queued, and
+ * the script goes on when the queue is empty (a slow frame can leave clicks waiting). */
+int planner_wait_file(planner *p, const ui_action *a)
+{
+    static int waiting_action = -1, file_seen;
+    static double since;
+    double now = glfwGetTime();
+    if (waiting_action != p->action) {
+        waiting_action = p->action;
+        file_seen = 0;
+        since = now;
+        fprintf(stderr, "tessera: script line %d: waiting for %s\n", a->line, a->text);
+    }
+    if (file_seen && ui_gui_input_pending() == 0) {
+        waiting_action = -1;
+        p->action++;
+        p->action_frame = 0;
+        return 0;
+    }
+    file_seen = file_seen || access(a->text, F_OK) == 0;
+    if (now - since > WAIT_FILE_SECONDS) {
+        fprintf(stderr, "tessera: script line %d: %s within %d s\n", a->line,
+                file_seen ? "the input was not handled" : "the file did not appear",
+                WAIT_FILE_SECONDS);
+        waiting_action = -1;
+        p->exit_code = 1;
+        return 1;
+    }
+    return 0;
+}
+
+static int locate_fixture(planner *p, const char *name)
+{
+    if (p->view != UI_VIEW_PLAN) {
+        snprintf(p->status, sizeof p->status, "locate fixture needs the plan view (view plan)");
+        return 1;
+    }
+    for (int i = 0; i < p->fixture_count; i++) {
+        const app_fixture *f = &p->fixtures[i];
+        if (f->object < 0 || f->object >= p->project.object_count ||
+            strcmp(p->project.objects[f->object].name, name))
+            continue;
+        float sx, sy;
+        ui_plan_to_screen(&p->plan_t, f->centre[0], f->centre[1], &sx, &sy);
+        fprintf(stderr, "tessera: locate fixture \"%s\" at %.0f %.0f\n", name, sx, sy);
+        return 0;
+    }
+    snprintf(p->status, sizeof p->status, "the plan has no fixture \"%s\"", name);
+    return 1;
+}
+
+static int locate_widget(planner *p, const char *label)
+{
+    float r[4];
+    int visible;
+    if (!ui_gui_locate(label, r, &visible)) {
+        snprintf(p->status, sizeof p->status, "no button or text field \"%s\" is drawn", label);
+        return 1;
+    }
+    fprintf(stderr, "tessera: locate widget \"%s\" at %.0f %.0f %s (%.0f %.0f %.0f %.0f)\n", label,
+            (r[0] + r[2]) / 2, (r[1] + r[3]) / 2, visible ? "visible" : "hidden", r[0], r[1], r[2],
+            r[3]);
+    return 0;
+}
+
+int planner_input_action(planner *p, const ui_action *a)
+{
+    if (a->kind == UI_ACT_EXPECT_SEARCH) {
+        if (strcmp(p->browser.text, a->text)) {
+            snprintf(p->status, sizeof p->status,
+                     "the catalog search holds \"%.120s\", expected \"%.120s\"", p->browser.text,
+                     a->text);
+            return 1;
+        }
+        return 0;
+    }
+    if (a->kind == UI_ACT_LOCATE) {
+        if (!strncmp(a->text, "fixture ", 8))
+            return locate_fixture(p, a->text + 8);
+        if (!strncmp(a->text, "widget ", 7))
+            return locate_widget(p, a->text + 7);
+        snprintf(p->status, sizeof p->status, "locate widget LABEL or locate fixture NAME");
+        return 1;
+    }
+    return 0; /* wait-file runs in planner_wait_file */
+}
