@@ -37,6 +37,9 @@ extern "C" int ui_gui_init(GLFWwindow *window, char *err, size_t err_size)
         ImGuiIO &io = ImGui::GetIO();
         io.IniFilename = nullptr; // the planner keeps no imgui.ini next to the user's files
         ImGui::StyleColorsDark();
+        // Docked panels are opaque: nothing of a view shows through them, and a panel's pixels
+        // are the same colour wherever it is (tests/ui/layout_session.sh looks for them).
+        ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 1.0f;
         if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) {
             std::snprintf(err, err_size, "Dear ImGui: the GLFW backend failed to start");
             ImGui::DestroyContext();
@@ -402,10 +405,12 @@ extern "C" int ui_gui_begin_bar(const char *id, float x, float y, float width, f
     ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(pad, pad));
     ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
     ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    // The splitter is narrower than a window's default least size (32 px).
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));
     bool open = ImGui::Begin(id, nullptr,
                              fixed_flags | ImGuiWindowFlags_NoScrollbar |
                                  ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoNav);
-    ImGui::PopStyleVar(3);
+    ImGui::PopStyleVar(4);
     return open;
 }
 

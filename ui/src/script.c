@@ -63,6 +63,8 @@ static const struct {
     {"expect-pattern", UI_ACT_EXPECT_PATTERN, 0, 2},
     {"expect-tiles", UI_ACT_EXPECT_TILES, 0, 2},
     {"tile-panel", UI_ACT_TILE_PANEL, 0, 1},
+    {"panes", UI_ACT_PANES, 0, 1},
+    {"split", UI_ACT_SPLIT, 1, 0},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 
@@ -141,6 +143,10 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
                 a->kind == UI_ACT_DRAG_SELECTED) &&
                strcmp(a->text, "3d") && strcmp(a->text, "plan")) {
         snprintf(why, why_size, "%s is 3d or plan, not \"%s\"", verb, a->text);
+        return 0;
+    }
+    if (a->kind == UI_ACT_PANES && strcmp(a->text, "both") && strcmp(a->text, "one")) {
+        snprintf(why, why_size, "%s is both or one, not \"%s\"", verb, a->text);
         return 0;
     }
     if ((a->kind == UI_ACT_PRESENT || a->kind == UI_ACT_TOUR || a->kind == UI_ACT_TURNTABLE ||

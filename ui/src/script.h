@@ -56,6 +56,8 @@
  *   tile-panel on|off      the tile panel over the 3D view too (it shows in the elevation)
  *   expect-probe MATERIAL UPDATE  fail unless the material's probe updates so (every-frame,
  *                          once, on-change, time-sliced, static, default; docs/editing.md)
+ *   panes both|one         plan and 3D side by side, or the active view alone (View menu)
+ *   split SX               drag the splitter between the panes to window x SX
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -112,6 +114,8 @@ typedef enum ui_action_kind {
     UI_ACT_TILE_PANEL,
     UI_ACT_DRAG3D,
     UI_ACT_MOVE_WALL,
+    UI_ACT_PANES, /* the window's layout (panel_layout.h) */
+    UI_ACT_SPLIT,
     UI_ACT_QUIT
 } ui_action_kind;
 

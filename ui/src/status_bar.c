@@ -98,18 +98,26 @@ void planner_status_bar(planner *p, double now)
     note_mode(p, now);
     const ui_rect *r = &p->layout.status;
     if (ui_gui_begin_bar("##status", r->x, r->y, r->w, r->h, 4.0f)) {
-        ui_gui_text("[%s]", mode_name(current_mode(p)));
-        ui_gui_same_line();
-        if (now < p->mode_message_until)
-            ui_gui_text("%s", p->mode_message);
-        else
-            ui_gui_text("%s%s%s", planner_tool_hint(p), p->status[0] ? "  |  " : "", p->status);
         float ms = mean(p->frame_ms, p->frame_count), rms = mean(p->render_ms, p->frame_count);
-        char right[160];
+        char right[160], left[800];
         snprintf(right, sizeof right, "%s  |  3D %.1f ms at %.0f %%  |  %.1f ms %.0f fps",
                  ui_quality_names[p->quality], rms, p->render_scale * 100.0f, ms,
                  ms > 0 ? 1000.0f / ms : 0.0f);
+        if (r->w < 1100) /* a narrow window keeps the hint and the speed only */
+            snprintf(right, sizeof right, "%.0f fps", ms > 0 ? 1000.0f / ms : 0.0f);
+        if (now < p->mode_message_until)
+            snprintf(left, sizeof left, "[%s] %s", mode_name(current_mode(p)), p->mode_message);
+        else
+            snprintf(left, sizeof left, "[%s] %s%s%s", mode_name(current_mode(p)),
+                     planner_tool_hint(p), p->status[0] ? "  |  " : "", p->status);
         float x = r->w - ui_gui_text_width(right) - 8.0f;
+        /* The left part ends before the right one starts: cut, with an ellipsis. */
+        size_t n = strlen(left);
+        while (n > 4 && ui_gui_text_width(left) > x - 16.0f) {
+            n = n * 9 / 10;
+            memcpy(left + n - 3, "...", 4);
+        }
+        ui_gui_text("%s", left);
         ui_gui_same_line_at(x);
         ui_gui_text("%s", right);
     }
