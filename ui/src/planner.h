@@ -120,6 +120,7 @@ typedef struct planner {
     float split;
     int view_2d;
     int layout_logged[5]; /* width, height, panes, the 2D pane's width, presenting */
+    int splitter_held;
     double pointer_seen[2];
     int columns_placed; /* the columns' sections were opened or collapsed for this size */
     /* The status bar (status_bar.c): the mode it last said, and a message with its expiry. */

@@ -21,7 +21,7 @@ static void log_layout(planner *p, int width, int height)
     int same = 1;
     for (int i = 0; i < 5; i++)
         same &= now[i] == p->layout_logged[i];
-    if (same)
+    if (same || p->splitter_held) /* a drag logs where it ends, not every frame of it */
         return;
     for (int i = 0; i < 5; i++)
         p->layout_logged[i] = now[i];
@@ -97,7 +97,8 @@ void planner_splitter(planner *p)
         return;
     if (ui_gui_begin_bar("##splitter", s.x, s.y, s.w, s.h, 0.0f)) {
         float x;
-        if (ui_gui_drag_handle("##split", s.w, s.h, &x))
+        p->splitter_held = ui_gui_drag_handle("##split", s.w, s.h, &x);
+        if (p->splitter_held)
             p->split = ui_layout_split_at(&p->layout, x);
     }
     ui_gui_end();
