@@ -81,9 +81,12 @@ void planner_toolbar(planner *p)
     if (ui_gui_begin_bar("##toolbar", r->x, r->y, r->w, r->h, 4.0f)) {
         if (tool("##new", page, 7, 0, "New project (the empty room)"))
             planner_file_request(p, UI_FILE_NEW);
-        if (tool("##open", folder, 6, 0, "Open the file named in the Project panel"))
+        if (tool("##open", folder, 6, 0, "Open the file named in the Project panel")) {
             if (p->file_path[0])
                 planner_file_request(p, UI_FILE_OPEN);
+            else
+                planner_status(p, "open: type the file's path in the Project panel first");
+        }
         if (tool("##save", disk, 8, 0, "Save (Ctrl+S)"))
             planner_save(p, NULL);
         gap();
