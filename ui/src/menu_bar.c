@@ -209,11 +209,11 @@ static void shortcuts_window(planner *p)
     if (!p->show_shortcuts)
         return;
     const ui_rect *c = &p->layout.centre;
-    if (ui_gui_begin_closable("Keyboard shortcuts", c->x + 20, c->y + 20, 460, 380,
+    if (ui_gui_begin_closable("Keyboard shortcuts", c->x + 20, c->y + 20, 640, 400,
                               &p->show_shortcuts)) {
         for (size_t i = 0; i < sizeof shortcuts / sizeof shortcuts[0]; i++) {
             ui_gui_text("%s", shortcuts[i][0]);
-            ui_gui_same_line_at(150);
+            ui_gui_same_line_at(180);
             ui_gui_text("%s", shortcuts[i][1]);
         }
     }
