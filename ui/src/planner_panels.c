@@ -54,8 +54,8 @@ static void view_panel(planner *p)
     ui_gui_end();
 }
 
-/* The project and its file: new, open, save, save as. Open and save as take
- * the path typed into the field; new and open ask first when there are unsaved changes. */
+/* The share export into "PROJECT-share" beside the project's file (the View panel, the File
+ * and Render menus). */
 void planner_share_beside(planner *p)
 {
     char dir[1100];
@@ -66,6 +66,8 @@ void planner_share_beside(planner *p)
     planner_share(p, dir);
 }
 
+/* The project and its file: new, open, save, save as. Open and save as take
+ * the path typed into the field; new and open ask first when there are unsaved changes. */
 void planner_file_request(planner *p, int what)
 {
     if (p->dirty) {
