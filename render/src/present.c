@@ -28,6 +28,31 @@ rd_result rd_present(rd_context *ctx, int window_width, int window_height)
                                                : rd_fail(RD_ERR_GL, "rd_present: blit failed");
 }
 
+rd_result rd_present_rect(rd_context *ctx, int window_width, int window_height, int x, int y,
+                          int width, int height)
+{
+    if (!ctx || !ctx->has_frame)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_present_rect: nothing has been rendered");
+    if (ctx->backend != RD_BACKEND_ADOPT)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT,
+                       "rd_present_rect: only an adopted context has a window");
+    if (window_width <= 0 || window_height <= 0 || width <= 0 || height <= 0)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_present_rect: window %dx%d, rectangle %dx%d",
+                       window_width, window_height, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, window_width, window_height);
+    glClearColor(0.1f, 0.1f, 0.11f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    /* GL's window origin is its bottom-left corner. */
+    int y0 = window_height - (y + height);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, ctx->display.fbo);
+    glBlitFramebuffer(0, 0, ctx->out_width, ctx->out_height, x, y0, x + width, y0 + height,
+                      GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return rd_gl_drain_errors() == GL_NO_ERROR ? RD_OK
+                                               : rd_fail(RD_ERR_GL, "rd_present_rect: blit failed");
+}
+
 rd_result rd_read_window_rgba8(rd_context *ctx, int width, int height, uint8_t *out,
                                size_t out_size)
 {

@@ -4,7 +4,12 @@
  *
  * screenshot_check --golden GOLDEN.png [--mask X0,Y0,X1,Y1]... SHOT.png: SHOT equals GOLDEN
  * within 8/255 per channel on 99.5 % of the pixels outside the masks (the frame-time overlay
- * changes from run to run). TESSERA_UPDATE_GOLDEN=1 writes SHOT over GOLDEN instead. */
+ * changes from run to run). TESSERA_UPDATE_GOLDEN=1 writes SHOT over GOLDEN instead.
+ *
+ * screenshot_check --panes SHOT.png panel X,Y,W,H... view X,Y,W,H...: the panel rectangles
+ * show the panels' background (their most common colour covers at least 30 % of them), and no
+ * view rectangle shows it on more than 1 % of its pixels (no panel is drawn over a view) while
+ * each shows a drawing (at least 20 colours). */
 #include "render/image_io.h"
 
 #include <math.h>
@@ -110,10 +115,121 @@ static int golden(int argc, char **argv)
     return share <= 0.005 ? 0 : 1;
 }
 
+typedef struct region {
+    int x, y, w, h;
+} region;
+
+/* The colour (8 bits a channel) at pixel i. */
+static unsigned pixel_colour(const rd_image *img, long i)
+{
+    const float *p = &img->pixels[i * img->channels];
+    unsigned c = 0;
+    for (int k = 0; k < 3; k++) {
+        float v = p[k % img->channels];
+        c = (c << 8) | (unsigned)(v <= 0 ? 0 : v >= 1 ? 255 : (int)lroundf(v * 255.0f));
+    }
+    return c;
+}
+
+static int near_colour(unsigned a, unsigned b, int tolerance)
+{
+    for (int k = 0; k < 3; k++) {
+        int d = (int)((a >> (8 * k)) & 255) - (int)((b >> (8 * k)) & 255);
+        if (d < -tolerance || d > tolerance)
+            return 0;
+    }
+    return 1;
+}
+
+static int panes(int argc, char **argv)
+{
+    rd_image img = {0};
+    char err[1024];
+    if (rd_image_read(argv[2], &img, NULL, err, sizeof err) != RD_IMAGE_OK) {
+        fprintf(stderr, "FAIL: %s\n", err);
+        return 1;
+    }
+    region panels[16], views[16];
+    int np = 0, nv = 0, kind = 0, rc = 0;
+    for (int i = 3; i < argc; i++) {
+        region r;
+        if (!strcmp(argv[i], "panel") || !strcmp(argv[i], "view")) {
+            kind = argv[i][0] == 'v';
+        } else if (sscanf(argv[i], "%d,%d,%d,%d", &r.x, &r.y, &r.w, &r.h) == 4 && r.w > 0 &&
+                   r.h > 0 && r.x >= 0 && r.y >= 0 && r.x + r.w <= img.width &&
+                   r.y + r.h <= img.height && (kind ? nv : np) < 16) {
+            if (kind)
+                views[nv++] = r;
+            else
+                panels[np++] = r;
+        } else {
+            fprintf(stderr, "FAIL: bad or out-of-image rectangle %s (%dx%d)\n", argv[i], img.width,
+                    img.height);
+            rd_image_free(&img);
+            return 2;
+        }
+    }
+    /* The panels' background: the most common colour over the panel rectangles. */
+    enum { BUCKETS = 1 << 15 };
+    static unsigned keys[BUCKETS];
+    static long counts[BUCKETS];
+    memset(counts, 0, sizeof counts);
+    unsigned bg = 0;
+    long best = 0, total = 0;
+    for (int k = 0; k < np; k++)
+        for (int y = panels[k].y; y < panels[k].y + panels[k].h; y++)
+            for (int x = panels[k].x; x < panels[k].x + panels[k].w; x++) {
+                unsigned c = pixel_colour(&img, (long)y * img.width + x);
+                unsigned h = (c * 2654435761u) >> 17;
+                while (counts[h] && keys[h] != c)
+                    h = (h + 1) & (BUCKETS - 1);
+                keys[h] = c;
+                total++;
+                if (++counts[h] > best) {
+                    best = counts[h];
+                    bg = c;
+                }
+            }
+    double share = total ? (double)best / (double)total : 0;
+    printf("%s: panel background #%06x on %.1f %% of %d panel rectangle(s)\n", argv[2], bg,
+           100 * share, np);
+    if (share < 0.3) {
+        printf("FAIL: the panel rectangles do not show the panels\n");
+        rc = 1;
+    }
+    for (int k = 0; k < nv; k++) {
+        long n = 0, panel_like = 0;
+        static unsigned char seen[4096];
+        memset(seen, 0, sizeof seen);
+        int colours = 0;
+        for (int y = views[k].y; y < views[k].y + views[k].h; y++)
+            for (int x = views[k].x; x < views[k].x + views[k].w; x++) {
+                unsigned c = pixel_colour(&img, (long)y * img.width + x);
+                n++;
+                panel_like += near_colour(c, bg, 3);
+                unsigned q = ((c >> 20) & 15) << 8 | ((c >> 12) & 15) << 4 | ((c >> 4) & 15);
+                colours += !seen[q];
+                seen[q] = 1;
+            }
+        double like = (double)panel_like / (double)n;
+        printf("view %d,%d,%d,%d: %.2f %% panel-coloured, %d colours\n", views[k].x, views[k].y,
+               views[k].w, views[k].h, 100 * like, colours);
+        if (like > 0.01 || colours < 20) {
+            printf("FAIL: %s\n",
+                   colours < 20 ? "nothing drawn in the view" : "a panel covers part of the view");
+            rc = 1;
+        }
+    }
+    rd_image_free(&img);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     if (argc >= 3 && !strcmp(argv[1], "--golden"))
         return golden(argc, argv);
+    if (argc >= 3 && !strcmp(argv[1], "--panes"))
+        return panes(argc, argv);
     int rc = 0;
     rd_image prev = {0};
     for (int i = 1; i < argc; i++) {

@@ -1,9 +1,9 @@
 /* The planner's panel layout (ui/src/panel_layout.h) and the Selection panel's probe policy
  * lines (ui/src/probe_props.h), without a window.
- * Layout: at 640x360 .. 1920x1080, with and without a selection, the panels that show together
- * in the 3D view (View, Selection, Project, Edit, Catalog, Quantities, the frame-time overlay)
- * and the plan view's Tiles panel do not overlap and stay inside the window; small windows
- * start with Project and Quantities collapsed; the catalog's list keeps three rows.
+ * Layout: at 640x360 .. 2560x1440, with both panes or one, the menu bar, toolbar, status bar,
+ * the two panel columns, the panes and the splitter do not overlap, stay inside the window and
+ * cover it; from 1024 wide plan and 3D fit side by side; the splitter follows a drag within
+ * its limits; the catalog's list keeps three rows.
  * Probe lines: each combo choice's line runs through app's script as one undo step and sets
  * exactly that field of the demo's basin material (which the basin shares with nobody else
  * here, and every object sharing it would follow); undo restores the document. */
@@ -17,53 +17,78 @@
 
 static int inside(ui_rect r, int w, int h)
 {
-    return r.x >= 0 && r.y >= 0 && r.x + r.w <= w + 0.5f && r.y + r.h <= h + 0.5f && r.w >= 60 &&
-           r.h >= UI_LAYOUT_TITLE_H;
+    return r.x >= 0 && r.y >= 0 && r.x + r.w <= w + 0.5f && r.y + r.h <= h + 0.5f;
+}
+
+/* The area of r, 0 for a hidden pane. */
+static float area(ui_rect r)
+{
+    return r.w > 0 && r.h > 0 ? r.w * r.h : 0.0f;
 }
 
 static void test_layout(void)
 {
-    static const int sizes[][2] = {{640, 360},  {800, 450},  {1024, 600},
-                                   {1280, 720}, {1366, 768}, {1920, 1080}};
-    static const char *const names[] = {"view",    "selection",  "project", "edit",
-                                        "catalog", "quantities", "overlay", "tiles"};
+    static const int sizes[][2] = {{640, 360},  {800, 450},   {1024, 600}, {1280, 720},
+                                   {1366, 768}, {1920, 1080}, {2560, 1440}};
+    static const char *const names[] = {"menu",  "toolbar", "status", "left",
+                                        "right", "2d",      "3d",     "splitter"};
     for (size_t s = 0; s < sizeof sizes / sizeof sizes[0]; s++)
-        for (int sel = 0; sel < 2; sel++) {
-            int w = sizes[s][0], h = sizes[s][1];
-            ui_layout l;
-            ui_layout_compute(w, h, sel, &l);
-            ui_rect r[8] = {l.view,    l.selection,  l.project, l.edit,
-                            l.catalog, l.quantities, l.overlay, l.tiles};
-            for (int i = 0; i < 8; i++) {
-                if (i == 1 && !sel)
-                    continue;
-                CHECK_MSG(inside(r[i], w, h), "%dx%d sel %d: %s at %.0f,%.0f %.0fx%.0f", w, h, sel,
-                          names[i], r[i].x, r[i].y, r[i].w, r[i].h);
-                for (int k = i + 1; k < 8; k++) {
-                    if (k == 1 && !sel)
+        for (int panes = 0; panes < 2; panes++)
+            for (int active_2d = 0; active_2d < 2; active_2d++) {
+                int w = sizes[s][0], h = sizes[s][1];
+                ui_layout l;
+                ui_layout_compute(w, h, panes, 0.5f, active_2d, &l);
+                ui_rect r[8] = {l.menu,  l.toolbar, l.status,  l.left,
+                                l.right, l.pane_2d, l.pane_3d, l.splitter};
+                float total = 0;
+                for (int i = 0; i < 8; i++) {
+                    total += area(r[i]);
+                    if (!area(r[i]))
                         continue;
-                    CHECK_MSG(!ui_rect_overlap(r[i], r[k]), "%dx%d sel %d: %s overlaps %s", w, h,
-                              sel, names[i], names[k]);
+                    CHECK_MSG(inside(r[i], w, h), "%dx%d: %s at %.0f,%.0f %.0fx%.0f", w, h,
+                              names[i], r[i].x, r[i].y, r[i].w, r[i].h);
+                    for (int k = i + 1; k < 8; k++)
+                        CHECK_MSG(!area(r[k]) || !ui_rect_overlap(r[i], r[k]),
+                                  "%dx%d panes %d: %s overlaps %s", w, h, panes, names[i],
+                                  names[k]);
                 }
+                /* Nothing left uncovered: the window is exactly its parts. */
+                CHECK_MSG(total == (float)w * (float)h, "%dx%d: the parts cover %.0f of %.0f px", w,
+                          h, total, (float)w * (float)h);
+                /* From 1024 wide, the plan and the 3D view fit side by side, each at least
+                 * UI_LAYOUT_MIN_PANE_W; alone, the active one takes the whole centre. */
+                int both = panes == UI_PANES_BOTH && w >= 1024;
+                CHECK_MSG(!both || (l.pane_2d.w >= UI_LAYOUT_MIN_PANE_W &&
+                                    l.pane_3d.w >= UI_LAYOUT_MIN_PANE_W && l.splitter.w > 0),
+                          "%dx%d: side by side %.0f | %.0f", w, h, l.pane_2d.w, l.pane_3d.w);
+                if (!both && panes == UI_PANES_ONE) {
+                    ui_rect shown = active_2d ? l.pane_2d : l.pane_3d;
+                    ui_rect hidden = active_2d ? l.pane_3d : l.pane_2d;
+                    CHECK(!memcmp(&shown, &l.centre, sizeof shown) && !area(hidden));
+                }
+                CHECK_MSG(l.catalog_list_h >= 3 * 44.0f, "%dx%d: list %.0f", w, h,
+                          l.catalog_list_h);
+                CHECK(l.left.w >= 220 && l.right.w >= 250);
             }
-            CHECK_MSG(l.catalog_list_h >= 3 * 44.0f, "%dx%d: list %.0f", w, h, l.catalog_list_h);
-            CHECK(l.quantities_collapsed == (h < UI_LAYOUT_TALL));
-            CHECK(l.project_collapsed == (h < UI_LAYOUT_TALL || sel));
-            /* The collapsed panels take their title bar only, at the window's bottom. */
-            if (l.quantities_collapsed)
-                CHECK(l.quantities.h == UI_LAYOUT_TITLE_H);
-            if (sel)
-                CHECK_MSG(l.selection.h >= (h < UI_LAYOUT_TALL ? 180.0f : 390.0f),
-                          "%dx%d: selection %.0f tall", w, h, l.selection.h);
-        }
-    /* The two sizes the tests run at. */
-    ui_layout small, big;
-    ui_layout_compute(800, 450, 1, &small);
-    ui_layout_compute(1280, 720, 0, &big);
-    CHECK(small.edit_narrow && !big.edit_narrow);
-    CHECK(!big.project_collapsed && !big.quantities_collapsed && big.view.h == 250.0f);
+    /* The splitter follows a drag and stops where a pane would get too narrow. */
+    ui_layout l;
+    ui_layout_compute(1280, 720, UI_PANES_BOTH, 0.5f, 0, &l);
+    float s = ui_layout_split_at(&l, l.centre.x + 400);
+    ui_layout_compute(1280, 720, UI_PANES_BOTH, s, 0, &l);
+    CHECK_MSG(l.splitter.x + l.splitter.w / 2 > l.centre.x + 399 &&
+                  l.splitter.x + l.splitter.w / 2 < l.centre.x + 401,
+              "splitter at %.1f", l.splitter.x);
+    ui_layout_compute(1280, 720, UI_PANES_BOTH, ui_layout_split_at(&l, 0), 0, &l);
+    CHECK(l.pane_2d.w == UI_LAYOUT_MIN_PANE_W);
+    ui_layout_compute(1280, 720, UI_PANES_BOTH, ui_layout_split_at(&l, 5000), 0, &l);
+    CHECK(l.pane_3d.w >= UI_LAYOUT_MIN_PANE_W && l.pane_3d.w < UI_LAYOUT_MIN_PANE_W + 1);
+    /* 800 x 450 (the sessions' size) is too narrow for two panes: the active view alone. */
+    ui_layout_compute(800, 450, UI_PANES_BOTH, 0.5f, 1, &l);
+    CHECK(area(l.pane_2d) > 0 && !area(l.pane_3d) && l.edit_narrow);
     CHECK(ui_rect_overlap((ui_rect){0, 0, 10, 10}, (ui_rect){5, 5, 10, 10}));
     CHECK(!ui_rect_overlap((ui_rect){0, 0, 10, 10}, (ui_rect){10, 0, 10, 10}));
+    CHECK(ui_rect_contains((ui_rect){0, 0, 10, 10}, 0, 9.5) &&
+          !ui_rect_contains((ui_rect){0, 0, 10, 10}, 10, 5));
 }
 
 static void run_line(app_project *p, app_history *h, const char *line)

@@ -62,6 +62,12 @@ int main(void)
     expect_error("print-shot\n", "print-shot needs a file name");
     expect_error("share\n", "share needs a file name");
     expect_error("view side\n", "view is 3d or plan");
+    expect_error("panes three\n", "panes is both or one");
+    expect_error("split\n", "split needs 1 number");
+    CHECK(read_text("panes one\nsplit 600\n", &s, err, sizeof err) == 0 && s.count == 2 &&
+          s.actions[0].kind == UI_ACT_PANES && !strcmp(s.actions[0].text, "one") &&
+          s.actions[1].kind == UI_ACT_SPLIT && s.actions[1].a == 600);
+    ui_script_free(&s);
     expect_error("drag basin 10\n", "drag needs a name and a plan point");
     expect_error("expect-objects 2.5\n", "expect-objects needs a whole number");
     rc = read_text("fly bath 1.5\npresent on\ntour off\nturntable on\nprint-shot a.png\n", &s, err,

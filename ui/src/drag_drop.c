@@ -34,8 +34,11 @@ int planner_drop_selected(planner *p, int view, double sx, double sy)
         }
         ui_plan_to_plan(&p->plan_t, (float)sx, (float)sy, &x, &y);
     } else {
-        int w, h;
-        glfwGetFramebufferSize(p->window, &w, &h);
+        /* Window pixels to the 3D view's pane. */
+        ui_rect r = planner_view_rect(p);
+        int w = (int)r.w, h = (int)r.h;
+        sx -= r.x;
+        sy -= r.y;
         rd_view v;
         planner_view(p, w, h, &v);
         double eye[3], target[3], pt[2];
@@ -85,8 +88,12 @@ void planner_drag_drop_frame(planner *p)
             d->active = 0;
             if (ui_gui_pointer_over_panel())
                 planner_status(p, "dropped on a panel: nothing placed");
+            else if (ui_rect_contains(p->layout.pane_2d, mx, my) && p->view_2d == UI_VIEW_PLAN)
+                planner_drop_selected(p, UI_VIEW_PLAN, mx, my);
+            else if (ui_rect_contains(p->layout.pane_3d, mx, my))
+                planner_drop_selected(p, UI_VIEW_3D, mx, my);
             else
-                planner_drop_selected(p, p->view, mx, my);
+                planner_status(p, "dropped outside the plan and the 3D view: nothing placed");
         }
     }
     if (d->active) {

@@ -240,9 +240,22 @@ static void handle_input(planner *p, ui_tiles *t, app_point2 lo, app_point2 hi)
     }
 }
 
+static void elevation_in_pane(planner *p, ui_rect r);
+
 void planner_elevation_frame(planner *p, int width, int height)
 {
-    float bg[8] = {0, 0, (float)width, 0, (float)width, (float)height, 0, (float)height};
+    (void)width;
+    (void)height;
+    /* The elevation fills the 2D pane (panel_layout.h), clipped to it. */
+    ui_rect r = p->layout.pane_2d;
+    ui_gui_clip_push(r.x, r.y, r.x + r.w, r.y + r.h);
+    elevation_in_pane(p, r);
+    ui_gui_clip_pop();
+}
+
+static void elevation_in_pane(planner *p, ui_rect r)
+{
+    float bg[8] = {r.x, r.y, r.x + r.w, r.y, r.x + r.w, r.y + r.h, r.x, r.y + r.h};
     ui_gui_draw_quad_filled(bg, rgba(246, 244, 238, 255));
     ui_tiles *t = planner_tiles(p);
     if (!t)
@@ -250,27 +263,19 @@ void planner_elevation_frame(planner *p, int width, int height)
     ui_tiles_refresh(p, t);
     unsigned ink = rgba(20, 20, 20, 255);
     if (!t->region_ok) {
-        ui_gui_draw_text(300, 60, rgba(180, 30, 30, 255), t->error);
+        ui_gui_draw_text(r.x + 20, r.y + 60, rgba(180, 30, 30, 255), t->error);
         return;
     }
     app_point2 lo, hi;
     if (!ui_elev_bounds(t->region.outer.points, t->region.outer.count, &lo, &hi))
         return;
-    /* Between the panels (panel_layout.h): right of the Tiles panel, left of the catalog,
-     * above the Edit panel. A window too small for that draws under the panels. */
-    ui_layout l;
-    int sel = p->plan_o.selected_object >= 0 && p->plan_o.selected_object < p->project.object_count;
-    ui_layout_compute(width, height, sel, &l);
-    float left = l.tiles.x + l.tiles.w + 10.0f, right = (float)width - l.catalog.x + 10.0f;
-    float below = (float)height - l.edit.y + 8.0f;
-    if ((float)width - left - right < 200.0f || (float)height - below - 40.0f < 150.0f)
-        left = right = below = 0.0f;
-    t->view = ui_elev_fit(lo.x, lo.y, hi.x, hi.y, ui_elev_mirrored(&t->frame), left, 40.0f,
-                          (float)width - right, (float)height - below, 50.0f);
+    float left = r.x, right_x = r.x + r.w, top = r.y;
+    t->view = ui_elev_fit(lo.x, lo.y, hi.x, hi.y, ui_elev_mirrored(&t->frame), left, top + 40.0f,
+                          right_x, r.y + r.h, 50.0f);
     t->view.px_per_mm *= t->zoom > 0 ? t->zoom : 1;
     t->view.centre[0] += t->pan[0];
     t->view.centre[1] += t->pan[1];
-    if (planner_input_live(p))
+    if (p->view == UI_VIEW_ELEVATION && planner_input_live(p))
         handle_input(p, t, lo, hi);
 
     polyline(t, t->region.outer.points, t->region.outer.count, rgba(200, 200, 195, 255), 1.0f);
@@ -304,7 +309,7 @@ void planner_elevation_frame(planner *p, int width, int height)
                  t->surface);
     else
         snprintf(title, sizeof title, "%s, seen from the room", t->surface);
-    ui_gui_draw_text(left + 10, 8, ink, title);
+    ui_gui_draw_text(left + 10, top + 8, ink, title);
     char line[1200];
     if (tilings)
         snprintf(line, sizeof line,
@@ -313,10 +318,10 @@ void planner_elevation_frame(planner *p, int width, int height)
                  whole, cut, t->refresh_ms);
     else
         snprintf(line, sizeof line, "not tiled%s%s", t->error[0] ? ": " : "", t->error);
-    ui_gui_draw_text(left + 10, 24, rgba(60, 60, 60, 255), line);
+    ui_gui_draw_text(left + 10, top + 24, rgba(60, 60, 60, 255), line);
     if (t->hovering) {
         char at[64];
         snprintf(at, sizeof at, "s %.0f  t %.0f mm", t->hover[0], t->hover[1]);
-        ui_gui_draw_text((float)width - right - 150, 8, rgba(60, 60, 60, 255), at);
+        ui_gui_draw_text(right_x - 150, top + 8, rgba(60, 60, 60, 255), at);
     }
 }

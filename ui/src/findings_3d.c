@@ -17,9 +17,14 @@ static double finding_height(const planner *p, const app_finding *f)
     return 1000.0;
 }
 
-void planner_findings_3d(planner *p, int width, int height)
+void planner_findings_3d(planner *p, int window_width, int window_height)
 {
-    if (!p->findings.count)
+    (void)window_width;
+    (void)window_height;
+    /* Projected into the 3D view's pane, drawn there only. */
+    ui_rect r = planner_view_rect(p);
+    int width = (int)r.w, height = (int)r.h;
+    if (!p->findings.count || width <= 0 || height <= 0)
         return;
     rd_view v;
     planner_view(p, width, height, &v);
@@ -28,12 +33,15 @@ void planner_findings_3d(planner *p, int width, int height)
         eye[k] = v.eye[k] * 1e3;
         target[k] = v.target[k] * 1e3;
     }
+    ui_gui_clip_push(r.x, r.y, r.x + r.w, r.y + r.h);
     for (int i = 0; i < p->findings.count; i++) {
         const app_finding *f = &p->findings.items[i];
         double pt[3] = {f->position_mm[0], f->position_mm[1], finding_height(p, f)}, sx, sy;
         if (!ui_view_project(eye, target, v.fov_y_deg, width, height, pt, &sx, &sy) || sx < 0 ||
             sy < 0 || sx > width || sy > height)
             continue;
+        sx += r.x;
+        sy += r.y;
         /* The plan's colours (plan_draw.c), as ImGui's ABGR. */
         unsigned colour = f->severity == APP_SEVERITY_ERROR     ? 0xff1e1ed7u
                           : f->severity == APP_SEVERITY_WARNING ? 0xff0096ebu
@@ -43,4 +51,5 @@ void planner_findings_3d(planner *p, int width, int height)
         ui_gui_draw_text((float)sx + 12.0f, (float)sy - 7.0f, colour,
                          app_finding_kind_name(f->kind));
     }
+    ui_gui_clip_pop();
 }

@@ -9,11 +9,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The ray from the eye through window pixel (sx, sy) of the 3D view, mm. */
+/* The ray from the eye through window pixel (sx, sy) of the 3D view's pane, mm. */
 static int pixel_ray(planner *p, double sx, double sy, double eye[3], double dir[3])
 {
-    int w, h;
-    glfwGetFramebufferSize(p->window, &w, &h);
+    ui_rect r = planner_view_rect(p);
+    int w = (int)r.w, h = (int)r.h;
+    sx -= r.x;
+    sy -= r.y;
     rd_view v;
     planner_view(p, w, h, &v);
     double target[3];

@@ -99,6 +99,45 @@ void ui_gui_draw_ghost(float x, float y, unsigned texture, float image_size, con
  * then text; returns 1 when clicked. */
 int ui_gui_image_row(const char *id, const char *text, int selected, unsigned texture, float size);
 
+/* The window's frame (menu_bar.c, toolbar.c, status_bar.c, window_panes.c). */
+/* The main menu bar at the window's top; ui_gui_end_menu_bar only when begin returned 1. */
+int ui_gui_begin_menu_bar(void);
+void ui_gui_end_menu_bar(void);
+/* A menu of the bar (or a submenu); ui_gui_end_menu only when begin returned 1. */
+int ui_gui_begin_menu(const char *label, int enabled);
+void ui_gui_end_menu(void);
+/* A menu entry with its keyboard shortcut shown at the right (NULL: none); checked 0/1 shows a
+ * check mark, -1 none. Returns 1 when chosen. */
+int ui_gui_menu_item(const char *label, const char *shortcut, int checked, int enabled);
+/* A fixed undecorated window at a rectangle (toolbar, status bar, splitter) with pad pixels of
+ * padding, never scrolled. Always pair with ui_gui_end. */
+int ui_gui_begin_bar(const char *id, float x, float y, float width, float height, float pad);
+/* A docked panel column at a rectangle: it scrolls, and every panel opened inside it with
+ * ui_gui_begin_placed or ui_gui_begin becomes a collapsible section of it (its ui_gui_end
+ * closes the section). Always pair with ui_gui_end_column. */
+int ui_gui_begin_column(const char *id, float x, float y, float width, float height);
+void ui_gui_end_column(void);
+/* A square toolbar button of size pixels (id "##..."), its icon drawn from count line segments
+ * (x0 y0 x1 y1, in a unit square, y down), the tooltip on hover; active draws it pressed.
+ * Returns 1 when clicked. */
+int ui_gui_icon_button(const char *id, const float *segments, int count, float size, int active,
+                       const char *tooltip);
+/* A tooltip for the last widget while the pointer is over it. */
+void ui_gui_item_tooltip(const char *text);
+/* An invisible handle of width x height at the cursor (the splitter); *pointer_x gets the
+ * pointer's window x. Returns 1 while it is being dragged. */
+int ui_gui_drag_handle(const char *id, float width, float height, float *pointer_x);
+/* The next widget on this row, starting x pixels from the window's left edge. */
+void ui_gui_same_line_at(float x);
+/* The width of text in the current font, pixels. */
+float ui_gui_text_width(const char *text);
+/* A window the user can close (its title bar's X clears *open). Always pair with ui_gui_end. */
+int ui_gui_begin_closable(const char *title, float x, float y, float width, float height,
+                          int *open);
+/* Drawing on the background list inside a rectangle only (a pane); pairs. */
+void ui_gui_clip_push(float x0, float y0, float x1, float y1);
+void ui_gui_clip_pop(void);
+
 #ifdef __cplusplus
 }
 #endif

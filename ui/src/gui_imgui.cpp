@@ -15,6 +15,21 @@
 #include "backends/imgui_impl_opengl3.h"
 
 static bool g_ready = false;
+// Inside a docked column (ui_gui_begin_column), panels are its sections: how many are open.
+static bool g_in_column = false;
+static int g_sections = 0;
+
+// A panel of a docked column: a collapsible header, open at first. collapsed 0/1 applies with
+// place (a new layout), -1 leaves it to the user.
+static bool begin_section(const char *title, int place, int collapsed)
+{
+    if (place && collapsed >= 0)
+        ImGui::SetNextItemOpen(collapsed == 0, ImGuiCond_Always);
+    const char *id = std::strstr(title, "###"); // the stable part of a changing title
+    ImGui::PushID(id ? id : title);
+    g_sections++;
+    return ImGui::CollapsingHeader(title, ImGuiTreeNodeFlags_DefaultOpen);
+}
 
 // Input: the window's GLFW callbacks are this file's. Each pushes its event into one queue
 // (input_queue.h) and calls whatever callback was installed before it; each frame takes its
@@ -239,6 +254,9 @@ extern "C" int ui_gui_init(GLFWwindow *window, char *err, size_t err_size)
         ImGuiIO &io = ImGui::GetIO();
         io.IniFilename = nullptr; // the planner keeps no imgui.ini next to the user's files
         ImGui::StyleColorsDark();
+        // Docked panels are opaque: nothing of a view shows through them, and a panel's pixels
+        // are the same colour wherever it is (tests/ui/layout_session.sh looks for them).
+        ImGui::GetStyle().Colors[ImGuiCol_WindowBg].w = 1.0f;
         if (!ImGui_ImplGlfw_InitForOpenGL(window, false)) {
             std::snprintf(err, err_size, "Dear ImGui: the GLFW backend failed to start");
             ImGui::DestroyContext();
@@ -309,6 +327,8 @@ extern "C" int ui_gui_begin(const char *title, float x, float y, float width, fl
 {
     if (!g_ready)
         return 0;
+    if (g_in_column)
+        return begin_section(title, 0, -1);
     ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_FirstUseEver);
     return ImGui::Begin(title);
@@ -319,6 +339,8 @@ extern "C" int ui_gui_begin_placed(const char *title, float x, float y, float wi
 {
     if (!g_ready)
         return 0;
+    if (g_in_column)
+        return begin_section(title, place, collapsed);
     ImGuiCond cond = place ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
     ImGui::SetNextWindowPos(ImVec2(x, y), cond);
     ImGui::SetNextWindowSize(ImVec2(width, height), cond);
@@ -329,8 +351,14 @@ extern "C" int ui_gui_begin_placed(const char *title, float x, float y, float wi
 
 extern "C" void ui_gui_end(void)
 {
-    if (g_ready)
-        ImGui::End();
+    if (!g_ready)
+        return;
+    if (g_in_column && g_sections > 0) {
+        ImGui::PopID();
+        g_sections--;
+        return;
+    }
+    ImGui::End();
 }
 
 extern "C" int ui_gui_begin_overlay(const char *id, float x, float y, float alpha)
@@ -564,4 +592,163 @@ extern "C" int ui_gui_image_row(const char *id, const char *text, int selected, 
     d->AddText(ImVec2(start.x + size + 8.0f, start.y + (size - th) * 0.5f),
                ImGui::GetColorU32(ImGuiCol_Text), text);
     return clicked;
+}
+
+extern "C" int ui_gui_begin_menu_bar(void)
+{
+    return g_ready && ImGui::BeginMainMenuBar();
+}
+
+extern "C" void ui_gui_end_menu_bar(void)
+{
+    if (g_ready)
+        ImGui::EndMainMenuBar();
+}
+
+extern "C" int ui_gui_begin_menu(const char *label, int enabled)
+{
+    return g_ready && ImGui::BeginMenu(label, enabled != 0);
+}
+
+extern "C" void ui_gui_end_menu(void)
+{
+    if (g_ready)
+        ImGui::EndMenu();
+}
+
+extern "C" int ui_gui_menu_item(const char *label, const char *shortcut, int checked, int enabled)
+{
+    if (!g_ready)
+        return 0;
+    if (checked < 0)
+        return ImGui::MenuItem(label, shortcut, false, enabled != 0);
+    return ImGui::MenuItem(label, shortcut, checked != 0, enabled != 0);
+}
+
+static const ImGuiWindowFlags fixed_flags =
+    ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
+    ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoFocusOnAppearing;
+
+extern "C" int ui_gui_begin_bar(const char *id, float x, float y, float width, float height,
+                                float pad)
+{
+    if (!g_ready)
+        return 0;
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(pad, pad));
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+    // The splitter is narrower than a window's default least size (32 px).
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));
+    bool open = ImGui::Begin(id, nullptr,
+                             fixed_flags | ImGuiWindowFlags_NoScrollbar |
+                                 ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoNav);
+    ImGui::PopStyleVar(4);
+    return open;
+}
+
+extern "C" int ui_gui_begin_column(const char *id, float x, float y, float width, float height)
+{
+    if (!g_ready)
+        return 0;
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+    ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+    bool open = ImGui::Begin(id, nullptr, fixed_flags);
+    ImGui::PopStyleVar();
+    g_in_column = true;
+    g_sections = 0;
+    return open;
+}
+
+extern "C" void ui_gui_end_column(void)
+{
+    if (!g_ready)
+        return;
+    while (g_sections > 0) { // a panel left without its ui_gui_end
+        ImGui::PopID();
+        g_sections--;
+    }
+    g_in_column = false;
+    ImGui::End();
+}
+
+extern "C" int ui_gui_icon_button(const char *id, const float *segments, int count, float size,
+                                  int active, const char *tooltip)
+{
+    if (!g_ready)
+        return 0;
+    if (active)
+        ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+    ImVec2 at = ImGui::GetCursorScreenPos();
+    bool clicked = ImGui::Button(id, ImVec2(size, size));
+    if (active)
+        ImGui::PopStyleColor();
+    ImDrawList *d = ImGui::GetWindowDrawList();
+    float pad = size * 0.2f, s = size - 2.0f * pad;
+    ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text);
+    for (int i = 0; i < count; i++) {
+        const float *g = segments + 4 * i;
+        d->AddLine(ImVec2(at.x + pad + g[0] * s, at.y + pad + g[1] * s),
+                   ImVec2(at.x + pad + g[2] * s, at.y + pad + g[3] * s), ink, 1.5f);
+    }
+    if (tooltip && ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", tooltip);
+    return clicked;
+}
+
+extern "C" void ui_gui_item_tooltip(const char *text)
+{
+    if (g_ready && ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", text);
+}
+
+extern "C" int ui_gui_drag_handle(const char *id, float width, float height, float *pointer_x)
+{
+    if (!g_ready)
+        return 0;
+    ImGui::InvisibleButton(id, ImVec2(width, height));
+    bool held = ImGui::IsItemActive();
+    if (held || ImGui::IsItemHovered())
+        ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+    *pointer_x = ImGui::GetIO().MousePos.x;
+    return held;
+}
+
+extern "C" void ui_gui_same_line_at(float x)
+{
+    if (g_ready)
+        ImGui::SameLine(x);
+}
+
+extern "C" float ui_gui_text_width(const char *text)
+{
+    return g_ready ? ImGui::CalcTextSize(text).x : 0.0f;
+}
+
+extern "C" int ui_gui_begin_closable(const char *title, float x, float y, float width, float height,
+                                     int *open)
+{
+    if (!g_ready)
+        return 0;
+    ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
+    bool keep = *open != 0;
+    bool shown = ImGui::Begin(title, &keep, ImGuiWindowFlags_NoSavedSettings);
+    *open = keep;
+    return shown;
+}
+
+extern "C" void ui_gui_clip_push(float x0, float y0, float x1, float y1)
+{
+    if (g_ready)
+        background()->PushClipRect(ImVec2(x0, y0), ImVec2(x1, y1), true);
+}
+
+extern "C" void ui_gui_clip_pop(void)
+{
+    if (g_ready)
+        background()->PopClipRect();
 }

@@ -1,63 +1,70 @@
-/* Panel rectangles from the window's size (panel_layout.h). The numbers are the panels'
- * contents in Dear ImGui's default style: a row (combo, input, button) is about 23 px, a line
- * of text 17 px, a title bar 19-20 px. */
+/* The window's rectangles from its size (panel_layout.h). The column widths hold the panels'
+ * widest rows in Dear ImGui's default style (a combo with its label, the catalog's rows with a
+ * 40 px thumbnail); wider windows give the extra room to the views. */
 #include "panel_layout.h"
-
-#define MARGIN 10.0f
-#define GAP 8.0f
 
 static float clampf(float v, float lo, float hi)
 {
     return v < lo ? lo : v > hi ? hi : v;
 }
 
-void ui_layout_compute(int width, int height, int has_selection, ui_layout *out)
+static float column_width(float w, int right)
 {
-    float w = (float)(width < 640 ? 640 : width), h = (float)(height < 360 ? 360 : height);
-    int tall = h >= UI_LAYOUT_TALL;
-    float left_w = w >= 1100 ? 260.0f : w >= 800 ? 250.0f : 220.0f;
-    float right_w = w >= 1100 ? 340.0f : w >= 800 ? 300.0f : 250.0f;
-    /* The Project panel gives its room to a selection's properties (its reflection and probe
-     * fields need about 420 px) and comes back when nothing is selected. */
-    out->project_collapsed = !tall || has_selection;
-    out->quantities_collapsed = !tall;
+    if (w >= 1800)
+        return right ? 380.0f : 320.0f;
+    if (w >= 1200)
+        return right ? 330.0f : 280.0f;
+    if (w >= 900)
+        return right ? 280.0f : 250.0f;
+    return right ? 250.0f : 220.0f;
+}
 
-    /* Left column: View on top, Project at the bottom, Selection between them. */
-    float project_h = out->project_collapsed ? UI_LAYOUT_TITLE_H : 180.0f;
-    out->project = (ui_rect){MARGIN, h - MARGIN - project_h, left_w, project_h};
-    float room = out->project.y - GAP - MARGIN; /* for View and Selection */
-    float view_h = 250.0f;                      /* every row of the View panel */
-    if (has_selection)
-        view_h = tall ? clampf(room - 420.0f - GAP, 150.0f, 250.0f)
-                      : clampf(room * 0.38f, 110.0f, 250.0f);
-    view_h = clampf(view_h, 60.0f, room);
-    out->view = (ui_rect){MARGIN, MARGIN, left_w, view_h};
-    float sel_y = MARGIN + view_h + GAP;
-    out->selection = (ui_rect){MARGIN, sel_y, left_w, out->project.y - GAP - sel_y};
+static void place_panes(ui_layout *out, int panes, float split, int active_2d)
+{
+    ui_rect c = out->centre;
+    out->pane_2d = out->pane_3d = out->splitter = (ui_rect){0, 0, 0, 0};
+    if (panes == UI_PANES_BOTH && c.w >= 2 * UI_LAYOUT_MIN_PANE_W + UI_LAYOUT_SPLITTER_W) {
+        float room = c.w - UI_LAYOUT_SPLITTER_W;
+        float w2d = clampf(split * room, UI_LAYOUT_MIN_PANE_W, room - UI_LAYOUT_MIN_PANE_W);
+        w2d = (float)(int)w2d; /* whole pixels: the 3D view's viewport is in pixels */
+        out->pane_2d = (ui_rect){c.x, c.y, w2d, c.h};
+        out->splitter = (ui_rect){c.x + w2d, c.y, UI_LAYOUT_SPLITTER_W, c.h};
+        float x3 = c.x + w2d + UI_LAYOUT_SPLITTER_W;
+        out->pane_3d = (ui_rect){x3, c.y, c.x + c.w - x3, c.h};
+    } else if (active_2d) {
+        out->pane_2d = c;
+    } else {
+        out->pane_3d = c;
+    }
+}
 
-    /* Right column: the overlay, then Catalog, Quantities at the bottom. */
-    float right_x = w - MARGIN - right_w;
-    out->overlay = (ui_rect){w - UI_LAYOUT_OVERLAY_W, MARGIN, UI_LAYOUT_OVERLAY_W - MARGIN,
-                             UI_LAYOUT_OVERLAY_H};
-    float quant_h = tall ? 130.0f : UI_LAYOUT_TITLE_H;
-    out->quantities = (ui_rect){right_x, h - MARGIN - quant_h, right_w, quant_h};
-    float cat_y = MARGIN + UI_LAYOUT_OVERLAY_H + GAP;
-    out->catalog = (ui_rect){right_x, cat_y, right_w, out->quantities.y - GAP - cat_y};
-    /* The catalog: title, search, category, width filter and count (about 130 px), the
-     * selected product's details below the list (about 150 px); the list takes the rest, at
-     * least three rows (the panel scrolls to the details then). */
-    out->catalog_list_h = clampf(out->catalog.h - 130.0f - 150.0f, 3 * 44.0f, 300.0f);
+void ui_layout_compute(int width, int height, int panes, float split, int active_2d, ui_layout *out)
+{
+    float w = (float)(width < UI_LAYOUT_MIN_W ? UI_LAYOUT_MIN_W : width);
+    float h = (float)(height < UI_LAYOUT_MIN_H ? UI_LAYOUT_MIN_H : height);
+    out->menu = (ui_rect){0, 0, w, UI_LAYOUT_MENU_H};
+    out->toolbar = (ui_rect){0, UI_LAYOUT_MENU_H, w, UI_LAYOUT_TOOLBAR_H};
+    out->status = (ui_rect){0, h - UI_LAYOUT_STATUS_H, w, UI_LAYOUT_STATUS_H};
+    float top = UI_LAYOUT_MENU_H + UI_LAYOUT_TOOLBAR_H, body_h = h - UI_LAYOUT_STATUS_H - top;
+    float left_w = column_width(w, 0), right_w = column_width(w, 1);
+    out->left = (ui_rect){0, top, left_w, body_h};
+    out->right = (ui_rect){w - right_w, top, right_w, body_h};
+    out->centre = (ui_rect){left_w, top, w - left_w - right_w, body_h};
+    place_panes(out, panes, split, active_2d);
+    /* The catalog's list: three 44 px rows at least, more on a tall window (the column
+     * scrolls to the product's details below it). */
+    out->catalog_list_h = clampf(body_h * 0.45f, 3 * 44.0f, 420.0f);
+    out->edit_narrow = left_w < 380.0f;
+}
 
-    /* Centre: Edit at the bottom between the columns, at most 400 wide; Tiles above it. */
-    float centre_l = MARGIN + left_w + MARGIN, centre_r = right_x - MARGIN;
-    float edit_w = clampf(centre_r - centre_l, 60.0f, 560.0f);
-    float edit_h = tall ? 140.0f : 120.0f;
-    out->edit =
-        (ui_rect){(centre_l + centre_r) / 2 - edit_w / 2, h - MARGIN - edit_h, edit_w, edit_h};
-    out->edit_narrow = edit_w < 380.0f;
-    /* Tiles: beside the View panel (tile_panel.c places it at x 280, 280 wide). */
-    out->tiles = (ui_rect){centre_l, MARGIN, clampf(centre_r - centre_l, 60.0f, 280.0f),
-                           out->edit.y - GAP - MARGIN};
+float ui_layout_split_at(const ui_layout *l, float x)
+{
+    float room = l->centre.w - UI_LAYOUT_SPLITTER_W;
+    if (room <= 0)
+        return 0.5f;
+    float w2d = clampf(x - UI_LAYOUT_SPLITTER_W / 2 - l->centre.x, UI_LAYOUT_MIN_PANE_W,
+                       room - UI_LAYOUT_MIN_PANE_W);
+    return w2d / room;
 }
 
 int ui_rect_overlap(ui_rect a, ui_rect b)
@@ -65,4 +72,9 @@ int ui_rect_overlap(ui_rect a, ui_rect b)
     float ox = (a.x + a.w < b.x + b.w ? a.x + a.w : b.x + b.w) - (a.x > b.x ? a.x : b.x);
     float oy = (a.y + a.h < b.y + b.h ? a.y + a.h : b.y + b.h) - (a.y > b.y ? a.y : b.y);
     return ox > 1.0f && oy > 1.0f;
+}
+
+int ui_rect_contains(ui_rect r, double x, double y)
+{
+    return x >= r.x && y >= r.y && x < r.x + r.w && y < r.y + r.h;
 }

@@ -255,7 +255,8 @@ void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fi
                   const app_free_area *areas, int fixture_count, const app_findings *findings,
                   const ui_plan_overlay *o)
 {
-    float bg[8] = {0, 0, t->width, 0, t->width, t->height, 0, t->height};
+    float l = t->x0, r = t->x0 + t->width, top = t->y0, b = t->y0 + t->height;
+    float bg[8] = {l, top, r, top, r, b, l, b};
     ui_gui_draw_quad_filled(bg, rgba(246, 244, 238, 255));
     if (p->plan.corner_count < 3)
         return;
@@ -265,7 +266,7 @@ void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fi
     draw_openings(t, p, o);
     draw_findings(t, findings);
     /* A scale bar of one metre. */
-    float x0 = 20, y0 = t->height - 20, len = (float)(1000 * t->px_per_mm);
+    float x0 = t->x0 + 20, y0 = t->y0 + t->height - 20, len = (float)(1000 * t->px_per_mm);
     ui_gui_draw_line(x0, y0, x0 + len, y0, rgba(20, 20, 20, 255), 2.0f);
     ui_gui_draw_text(x0, y0 - 18, rgba(20, 20, 20, 255), "1 m");
 }

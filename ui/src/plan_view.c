@@ -12,7 +12,7 @@ static double clampd(double v, double lo, double hi)
 
 ui_plan_transform ui_plan_fit(const app_room_plan *plan, float width, float height, float margin_px)
 {
-    ui_plan_transform t = {{0, 0}, 0.1, width, height};
+    ui_plan_transform t = {{0, 0}, 0.1, width, height, 0, 0};
     if (plan->corner_count < 1 || width <= 2 * margin_px || height <= 2 * margin_px)
         return t;
     double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
@@ -34,14 +34,14 @@ ui_plan_transform ui_plan_fit(const app_room_plan *plan, float width, float heig
 
 void ui_plan_to_screen(const ui_plan_transform *t, double x_mm, double y_mm, float *sx, float *sy)
 {
-    *sx = (float)(t->width / 2 + (x_mm - t->centre_mm[0]) * t->px_per_mm);
-    *sy = (float)(t->height / 2 - (y_mm - t->centre_mm[1]) * t->px_per_mm);
+    *sx = (float)(t->x0 + t->width / 2 + (x_mm - t->centre_mm[0]) * t->px_per_mm);
+    *sy = (float)(t->y0 + t->height / 2 - (y_mm - t->centre_mm[1]) * t->px_per_mm);
 }
 
 void ui_plan_to_plan(const ui_plan_transform *t, float sx, float sy, double *x_mm, double *y_mm)
 {
-    *x_mm = t->centre_mm[0] + (sx - t->width / 2) / t->px_per_mm;
-    *y_mm = t->centre_mm[1] - (sy - t->height / 2) / t->px_per_mm;
+    *x_mm = t->centre_mm[0] + (sx - t->x0 - t->width / 2) / t->px_per_mm;
+    *y_mm = t->centre_mm[1] - (sy - t->y0 - t->height / 2) / t->px_per_mm;
 }
 
 void ui_plan_zoom_at(ui_plan_transform *t, float sx, float sy, double factor)
@@ -50,8 +50,8 @@ void ui_plan_zoom_at(ui_plan_transform *t, float sx, float sy, double factor)
     ui_plan_to_plan(t, sx, sy, &x, &y);
     t->px_per_mm = clampd(t->px_per_mm * factor, 0.005, 5);
     /* Move the centre so (x, y) is under (sx, sy) again. */
-    t->centre_mm[0] = x - (sx - t->width / 2) / t->px_per_mm;
-    t->centre_mm[1] = y + (sy - t->height / 2) / t->px_per_mm;
+    t->centre_mm[0] = x - (sx - t->x0 - t->width / 2) / t->px_per_mm;
+    t->centre_mm[1] = y + (sy - t->y0 - t->height / 2) / t->px_per_mm;
 }
 
 int ui_plan_hit_corner(const ui_plan_transform *t, const app_room_plan *plan, float sx, float sy,

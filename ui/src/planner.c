@@ -155,16 +155,21 @@ static int frame(planner *p)
     double now = glfwGetTime();
     double dt = now - p->last_time;
     p->last_time = now;
+    planner_layout_frame(p, fw, fh); /* window_panes.c: the panes for this size */
     planner_handle_input(p, dt);
     planner_animate(p, p->fixed_dt > 0 ? p->fixed_dt : dt);
 
-    int rw = (int)lroundf(fw * p->render_scale), rh = (int)lroundf(fh * p->render_scale);
+    /* The 3D view fills its pane (the whole window while presenting), nothing more. */
+    ui_rect pane = planner_view_rect(p);
+    int vw = (int)pane.w, vh = (int)pane.h;
+    int rw = (int)lroundf(vw * p->render_scale), rh = (int)lroundf(vh * p->render_scale);
     float render_ms = 0;
-    if (p->view == UI_VIEW_3D && p->scene_ready) {
+    if (vw > 0 && vh > 0 && p->scene_ready) {
         rd_view v;
         planner_view(p, rw < 1 ? 1 : rw, rh < 1 ? 1 : rh, &v);
         double t0 = glfwGetTime();
-        if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK || rd_present(p->ctx, fw, fh) != RD_OK) {
+        if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK ||
+            rd_present_rect(p->ctx, fw, fh, (int)pane.x, (int)pane.y, vw, vh) != RD_OK) {
             fprintf(stderr, "tessera: rendering the 3D view failed: %s\n", rd_last_error());
             return 1;
         }
@@ -173,16 +178,18 @@ static int frame(planner *p)
     }
 
     ui_gui_new_frame();
-    if (p->view == UI_VIEW_PLAN && !p->presenting)
-        planner_plan_frame(p, fw, fh);
-    if (p->view == UI_VIEW_ELEVATION && !p->presenting)
-        planner_elevation_frame(p, fw, fh);
-    if (p->view == UI_VIEW_3D && !p->presenting)
-        planner_findings_3d(p, fw, fh);
-    if (p->presenting)
+    if (p->presenting) {
         planner_draw_presentation(p, fw, fh);
-    else
+    } else {
+        if (p->layout.pane_2d.w > 0 && p->view_2d == UI_VIEW_ELEVATION)
+            planner_elevation_frame(p, fw, fh);
+        else if (p->layout.pane_2d.w > 0)
+            planner_plan_frame(p, fw, fh);
+        if (vw > 0)
+            planner_findings_3d(p, fw, fh);
         planner_draw_panels(p, fw, fh);
+        planner_status_bar(p, now);
+    }
     planner_autosave_tick(p, now);
     ui_gui_render();
     if (p->script.count && planner_script_step(p))

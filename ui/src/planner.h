@@ -112,9 +112,22 @@ typedef struct planner {
     /* The tile panel and the elevation view (tiles.h), made on first use. */
     struct ui_tiles *tiles;
 
-    /* This frame's panel rectangles from the window's size (panel_layout.h), and
-     * where each panel was last placed (a panel is moved back when its rectangle changes). */
-    ui_layout layout, placed;
+    /* The window's frame (window_panes.c): this frame's rectangles (panel_layout.h), the
+     * panes shown (UI_PANES_*), the 2D pane's share of the centre, the 2D view it shows
+     * (UI_VIEW_PLAN or UI_VIEW_ELEVATION; p->view is the active pane's view). */
+    ui_layout layout;
+    int panes;
+    float split;
+    int view_2d;
+    int layout_logged[5]; /* width, height, panes, the 2D pane's width, presenting */
+    int splitter_held;
+    double pointer_seen[2];
+    int columns_placed; /* the columns' sections were opened or collapsed for this size */
+    /* The status bar (status_bar.c): the mode it last said, and a message with its expiry. */
+    int status_mode;
+    char mode_message[160];
+    double mode_message_until;
+    int show_shortcuts; /* Help > Keyboard shortcuts */
 
     /* A placed fixture dragged in the 3D view (fixture_drag.c). */
     ui_fixture_drag fixture_drag;
@@ -135,6 +148,34 @@ int planner_wait_file(planner *p, const ui_action *a);
 int planner_input_action(planner *p, const ui_action *a);
 /* planner_panels.c */
 void planner_draw_panels(planner *p, int width, int height);
+/* New (UI_FILE_NEW) or open the Project panel's path (UI_FILE_OPEN), asking first when there
+ * are unsaved changes. */
+void planner_file_request(planner *p, int what);
+/* Starts the share export into "PROJECT-share" beside the project's file. */
+void planner_share_beside(planner *p);
+/* window_panes.c: the frame's rectangles from the window's size, the active pane from the
+ * pointer, the splitter; logs the pane rectangles to stderr whenever they change. */
+void planner_layout_frame(planner *p, int width, int height);
+/* The splitter between the panes (a drag moves it). */
+void planner_splitter(planner *p);
+/* The rectangle the 3D view is drawn into, window pixels (w = 0: not shown). */
+ui_rect planner_view_rect(const planner *p);
+/* Shows the plan and the 3D view side by side (both = 1) or the active view alone. */
+void planner_show_panes(planner *p, int both);
+/* menu_bar.c, toolbar.c, status_bar.c: the window's frame around the views. */
+void planner_menu_bar(planner *p);
+void planner_toolbar(planner *p);
+void planner_status_bar(planner *p, double now);
+/* The hint for the active tool (status_bar.c). */
+const char *planner_tool_hint(const planner *p);
+/* planner_plan.c: the selected wall's length and its door, window, pre-wall and niche. */
+void planner_wall_panel(planner *p);
+/* The selected fixture: delete, rotate by 90 degrees (one undo step each). */
+int planner_delete_selected(planner *p);
+int planner_rotate_selected(planner *p);
+void planner_toggle_tour(planner *p);
+/* A print-quality screenshot named after the time (F12). */
+int planner_print_shot_now(planner *p);
 /* planner_script.c: runs this frame's share of the script; 0 ok, 1 failed (message printed). */
 int planner_script_step(planner *p);
 int planner_screenshot(planner *p, const char *path);

@@ -1,6 +1,6 @@
-/* The planner's panels: the frame-time overlay (speed for accuracy, live), the
- * view panel (quality, navigation mode, stored viewpoints), the project summary and the
- * selection's properties. Where they go comes from the window's size (panel_layout.h). */
+/* The planner's panels: the view panel (quality, navigation mode, stored viewpoints), the
+ * project summary and the selection's properties, docked in the window's columns beside the
+ * views (panel_layout.h); each panel is a collapsible section of its column. */
 #include "planner.h"
 
 #include "app/project/commands.h"
@@ -12,41 +12,17 @@
 #include <stdio.h>
 #include <string.h>
 
-static float mean(const float *v, long count)
+/* Opens a panel as a section of the column being drawn (ui_gui_begin_column); collapsed 0/1
+ * applies when place is 1 (the window's first frame), -1 leaves it to the user. Pair with
+ * ui_gui_end. */
+static int begin_panel(const char *title, ui_rect r, int place, int collapsed)
 {
-    int n = count < UI_FRAME_HISTORY ? (int)count : UI_FRAME_HISTORY;
-    double s = 0;
-    for (int i = 0; i < n; i++)
-        s += v[i];
-    return n ? (float)(s / n) : 0.0f;
-}
-
-/* Opens a panel at its layout rectangle `r`: moved there when the rectangle changed since the
- * last frame (a resize, a selection that appeared), else where the user left it; collapsed
- * (0/1) is applied with the move, -1 leaves it to the user. Pair with ui_gui_end. */
-static int begin_panel(const char *title, ui_rect r, ui_rect *last, int collapsed)
-{
-    int place = memcmp(&r, last, sizeof r) != 0;
-    *last = r;
-    return ui_gui_begin_placed(title, r.x, r.y, r.w, r.h, place, place ? collapsed : -1);
-}
-
-static void frame_overlay(planner *p)
-{
-    if (ui_gui_begin_overlay("##frame-time", p->layout.overlay.x, p->layout.overlay.y, 0.55f)) {
-        float ms = mean(p->frame_ms, p->frame_count), rms = mean(p->render_ms, p->frame_count);
-        ui_gui_text("%.1f ms  %.0f fps", ms, ms > 0 ? 1000.0f / ms : 0.0f);
-        ui_gui_text("3D view %.1f ms at %.0f %%", rms, p->render_scale * 100.0f);
-        ui_gui_text("quality: %s, catalog search %.1f ms", ui_quality_names[p->quality],
-                    p->browser.search_ms);
-        ui_gui_plot_lines("##ms", p->frame_ms, UI_FRAME_HISTORY, 0.0f, 100.0f, 200.0f, 30.0f);
-    }
-    ui_gui_end();
+    return ui_gui_begin_placed(title, r.x, r.y, r.w, r.h, place, collapsed);
 }
 
 static void view_panel(planner *p)
 {
-    if (begin_panel("View", p->layout.view, &p->placed.view, -1)) {
+    if (begin_panel("View", p->layout.left, 0, -1)) {
         int q = p->quality;
         if (ui_gui_combo("quality", &q, ui_quality_names, 4))
             planner_set_quality(p, q);
@@ -72,21 +48,27 @@ static void view_panel(planner *p)
         ui_gui_same_line();
         if (ui_gui_button(p->turntable ? "Stop turning" : "Turn (R)"))
             p->turntable = !p->turntable;
-        if (ui_gui_button("Share folder")) {
-            char dir[1100];
-            snprintf(dir, sizeof dir, "%s-share", p->project.path[0] ? p->project.path : "tessera");
-            char *dot = strrchr(dir, '.');
-            if (dot && !strcmp(dot, ".json-share"))
-                memmove(dot, "-share", 7);
-            planner_share(p, dir);
-        }
+        if (ui_gui_button("Share folder"))
+            planner_share_beside(p);
     }
     ui_gui_end();
 }
 
+/* The share export into "PROJECT-share" beside the project's file (the View panel, the File
+ * and Render menus). */
+void planner_share_beside(planner *p)
+{
+    char dir[1100];
+    snprintf(dir, sizeof dir, "%s-share", p->project.path[0] ? p->project.path : "tessera");
+    char *dot = strrchr(dir, '.');
+    if (dot && !strcmp(dot, ".json-share"))
+        memmove(dot, "-share", 7);
+    planner_share(p, dir);
+}
+
 /* The project and its file: new, open, save, save as. Open and save as take
  * the path typed into the field; new and open ask first when there are unsaved changes. */
-static void file_request(planner *p, int what)
+void planner_file_request(planner *p, int what)
 {
     if (p->dirty) {
         p->file_pending = what; /* prompts() asks, then runs it */
@@ -100,18 +82,19 @@ static void file_request(planner *p, int what)
 
 static void project_panel(planner *p)
 {
-    if (begin_panel("Project", p->layout.project, &p->placed.project,
-                    p->layout.project_collapsed)) {
+    /* Short windows start with it closed: the selection's fields need the room. */
+    int first = !p->columns_placed;
+    if (begin_panel("Project", p->layout.left, first, first ? p->layout.left.h < 560 : -1)) {
         ui_gui_text("%s%s", p->project.name, p->dirty ? " *" : "");
         ui_gui_text("%s", p->project.path[0] ? p->project.path : "(not saved yet)");
         ui_gui_text("%.0f x %.0f x %.0f mm", p->project.room.width_mm, p->project.room.depth_mm,
                     p->project.room.height_mm);
         ui_gui_text("%d objects, %d lights", p->project.object_count, p->project.light_count);
         if (ui_gui_button("New"))
-            file_request(p, UI_FILE_NEW);
+            planner_file_request(p, UI_FILE_NEW);
         ui_gui_same_line();
         if (ui_gui_button("Open"))
-            file_request(p, UI_FILE_OPEN);
+            planner_file_request(p, UI_FILE_OPEN);
         ui_gui_same_line();
         if (ui_gui_button("Save"))
             planner_save(p, NULL);
@@ -128,7 +111,7 @@ static void project_panel(planner *p)
 
 static void edit_panel(planner *p)
 {
-    if (begin_panel("Edit", p->layout.edit, &p->placed.edit, -1)) {
+    if (begin_panel("Edit", p->layout.left, 0, -1)) {
         int narrow = p->layout.edit_narrow; /* one button a row */
         char label[160];
         const char *u = app_history_undo_label(p->history), *r = app_history_redo_label(p->history);
@@ -291,7 +274,7 @@ static void selection_panel(planner *p)
     if (i < 0 || i >= p->project.object_count)
         return;
     const app_object *o = &p->project.objects[i];
-    if (begin_panel("Selection", p->layout.selection, &p->placed.selection, -1)) {
+    if (begin_panel("Selection", p->layout.left, 0, -1)) {
         char line[256];
         ui_gui_text("%s", o->name);
         if (o->has_product)
@@ -376,13 +359,13 @@ static void prompts(planner *p, int width, int height)
             int what = p->file_pending;
             if (ui_gui_button("Save first") && planner_save(p, NULL) == 0) {
                 p->file_pending = 0;
-                file_request(p, what);
+                planner_file_request(p, what);
             }
             ui_gui_same_line();
             if (ui_gui_button("Discard them")) {
                 p->file_pending = 0;
                 p->dirty = 0;
-                file_request(p, what);
+                planner_file_request(p, what);
             }
             ui_gui_same_line();
             if (ui_gui_button("Cancel"))
@@ -408,28 +391,33 @@ static void prompts(planner *p, int width, int height)
 
 void planner_draw_panels(planner *p, int width, int height)
 {
-    int selected =
-        p->plan_o.selected_object >= 0 && p->plan_o.selected_object < p->project.object_count;
-    ui_layout_compute(width, height, selected, &p->layout);
-    view_panel(p);
-    edit_panel(p);
-    selection_panel(p);
-    prompts(p, width, height);
-    project_panel(p);
-    planner_tile_panel(p, width, height); /* tile_panel.c */
-    if (!p->browser.thumbs && p->ctx) {   /* the browser was opened after the document */
+    const ui_layout *l = &p->layout;
+    if (!p->browser.thumbs && p->ctx) { /* the browser was opened after the document */
         ui_thumbnails_init(&p->thumbs, p->ctx);
         p->browser.thumbs = &p->thumbs;
     }
-    ui_rect c = p->layout.catalog, q = p->layout.quantities;
-    int place = memcmp(&c, &p->placed.catalog, sizeof c) != 0;
-    p->placed.catalog = c;
-    ui_catalog_browser_draw(&p->browser, c.x, c.y, c.w, c.h, p->layout.catalog_list_h, place);
-    place = memcmp(&q, &p->placed.quantities, sizeof q) != 0;
-    p->placed.quantities = q;
-    ui_quantities_draw(&p->quantities, &p->project, p->browser.db, q.x, q.y, q.w, q.h, place,
-                       p->layout.quantities_collapsed);
-    frame_overlay(p);
+    ui_gui_begin_column("##left", l->left.x, l->left.y, l->left.w, l->left.h);
+    view_panel(p);
+    edit_panel(p);
+    selection_panel(p);
+    planner_wall_panel(p); /* planner_plan.c: in the Selection's place, for a wall */
+    project_panel(p);
+    ui_gui_end_column();
+
+    ui_gui_begin_column("##right", l->right.x, l->right.y, l->right.w, l->right.h);
+    ui_catalog_browser_draw(&p->browser, l->right.x, l->right.y, l->right.w, l->right.h,
+                            l->catalog_list_h, 0);
+    planner_tile_panel(p, width, height); /* tile_panel.c */
+    int first = !p->columns_placed;
+    ui_quantities_draw(&p->quantities, &p->project, p->browser.db, l->right.x, l->right.y,
+                       l->right.w, l->right.h, first, first ? l->right.h < 560 : -1);
+    ui_gui_end_column();
+    p->columns_placed = 1;
+
+    planner_splitter(p); /* window_panes.c */
+    planner_toolbar(p);  /* toolbar.c */
+    planner_menu_bar(p); /* menu_bar.c */
+    prompts(p, width, height);
     planner_drag_drop_frame(p);
     /* One thumbnail a frame (each costs a frame's worth of llvmpipe time), rendered off screen;
      * then the window is the target again. */

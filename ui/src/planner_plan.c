@@ -94,14 +94,14 @@ int planner_tile_selected(planner *p, const char *surface)
     return planner_edit(p, line);
 }
 
-static void wall_panel(planner *p)
+void planner_wall_panel(planner *p)
 {
     int w = p->plan_o.selected_wall;
     if (w < 0 || w >= p->project.plan.corner_count)
         return;
-    /* In the Selection panel's place (panel_layout.h): a wall and a fixture are never both
+    /* In the Selection panel's place in the left column: a wall and a fixture are never both
      * selected. */
-    const ui_rect *r = &p->layout.selection;
+    const ui_rect *r = &p->layout.left;
     if (ui_gui_begin("Wall", r->x, r->y, r->w, 150.0f)) {
         double length = ui_plan_wall_length(&p->project.plan, w);
         ui_gui_text("wall %d: %.0f mm", w, length);
@@ -294,23 +294,23 @@ static void handle_plan_input(planner *p)
 
 void planner_plan_frame(planner *p, int width, int height)
 {
-    if (!p->plan_fitted || p->plan_t.width != width || p->plan_t.height != height) {
-        /* Fit the plan between the panels: 280 px on the left, 360 on the right, 160 below. */
-        float left = width > 900 ? 280.0f : 0.0f, right = width > 900 ? 360.0f : 0.0f;
-        float below = height > 500 ? 160.0f : 0.0f;
-        p->plan_t =
-            ui_plan_fit(&p->project.plan, (float)width - left - right, (float)height - below, 40);
-        p->plan_t.centre_mm[0] -= (left - right) / 2 / p->plan_t.px_per_mm;
-        p->plan_t.centre_mm[1] -= below / 2 / p->plan_t.px_per_mm;
-        p->plan_t.width = (float)width;
-        p->plan_t.height = (float)height;
+    (void)width;
+    (void)height;
+    /* The plan fills its pane: fitted again when the pane's size changes, kept where the user
+     * zoomed and panned it when the pane only moves. */
+    ui_rect r = p->layout.pane_2d;
+    if (!p->plan_fitted || p->plan_t.width != r.w || p->plan_t.height != r.h) {
+        p->plan_t = ui_plan_fit(&p->project.plan, r.w, r.h, 40);
         p->plan_fitted = 1;
     }
-    if (planner_input_live(p))
+    p->plan_t.x0 = r.x;
+    p->plan_t.y0 = r.y;
+    if (p->view == UI_VIEW_PLAN && planner_input_live(p))
         handle_plan_input(p);
+    ui_gui_clip_push(r.x, r.y, r.x + r.w, r.y + r.h);
     ui_plan_draw(&p->plan_t, &p->project, p->fixtures, p->free_areas, p->fixture_count,
                  &p->findings, &p->plan_o);
-    wall_panel(p);
+    ui_gui_clip_pop();
 }
 
 void planner_plan_scroll(planner *p, double steps)

@@ -169,6 +169,14 @@ static int apply(planner *p, const ui_action *a)
                   : strcmp(a->text, "plan")     ? UI_VIEW_3D
                                                 : UI_VIEW_PLAN;
         return 0;
+    case UI_ACT_PANES:
+        planner_show_panes(p, !strcmp(a->text, "both"));
+        return 0;
+    case UI_ACT_SPLIT:
+        if (p->layout.splitter.w <= 0)
+            return fail(a, "the panes are not side by side");
+        p->split = ui_layout_split_at(&p->layout, (float)a->a);
+        return 0;
     case UI_ACT_EDIT:
         return planner_edit(p, a->text) ? fail(a, p->status) : 0;
     case UI_ACT_PLACE_SELECTED:

@@ -66,6 +66,8 @@ static const struct {
     {"wait-file", UI_ACT_WAIT_FILE, 0, 1},
     {"locate", UI_ACT_LOCATE, 0, 2}, /* widget|fixture, then the label or name */
     {"expect-search", UI_ACT_EXPECT_SEARCH, 0, 2},
+    {"panes", UI_ACT_PANES, 0, 1},
+    {"split", UI_ACT_SPLIT, 1, 0},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 
@@ -144,6 +146,10 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
                 a->kind == UI_ACT_DRAG_SELECTED) &&
                strcmp(a->text, "3d") && strcmp(a->text, "plan")) {
         snprintf(why, why_size, "%s is 3d or plan, not \"%s\"", verb, a->text);
+        return 0;
+    }
+    if (a->kind == UI_ACT_PANES && strcmp(a->text, "both") && strcmp(a->text, "one")) {
+        snprintf(why, why_size, "%s is both or one, not \"%s\"", verb, a->text);
         return 0;
     }
     if ((a->kind == UI_ACT_PRESENT || a->kind == UI_ACT_TOUR || a->kind == UI_ACT_TURNTABLE ||

@@ -64,6 +64,8 @@
  *                          pixels, and whether its panel shows it (input_script.c)
  *   locate fixture NAME... log where a fixture's centre is in the plan view (view plan first)
  *   expect-search TEXT...  fail unless the catalog browser's search field holds exactly TEXT
+ *   panes both|one         plan and 3D side by side, or the active view alone (View menu)
+ *   split SX               drag the splitter between the panes to window x SX
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -123,6 +125,8 @@ typedef enum ui_action_kind {
     UI_ACT_WAIT_FILE, /* driving the window with outside input (input_script.c) */
     UI_ACT_LOCATE,
     UI_ACT_EXPECT_SEARCH,
+    UI_ACT_PANES, /* the window's layout (panel_layout.h) */
+    UI_ACT_SPLIT,
     UI_ACT_QUIT
 } ui_action_kind;
 

@@ -144,17 +144,21 @@ static void tiling_fields(planner *p, ui_tiles *t, int i)
 
 void planner_tile_panel(planner *p, int width, int height)
 {
-    /* Shown in the elevation view, in the plan when a wall is selected (for that wall), and
-     * over the 3D view after "Back to 3D" (until closed). */
+    /* Shown with the elevation, with the plan when a wall is selected (for that wall), and
+     * with the 3D view after "Back to 3D" (until closed). */
+    (void)width;
+    (void)height;
     int wall = p->plan_o.selected_wall;
-    if (p->view == UI_VIEW_PLAN && (wall < 0 || wall >= p->project.plan.corner_count))
-        return;
-    if (p->view == UI_VIEW_3D && (!p->tiles || !p->tiles->in_3d))
+    int shown_2d = p->layout.pane_2d.w > 0;
+    int elevation = shown_2d && p->view_2d == UI_VIEW_ELEVATION;
+    int plan_wall =
+        shown_2d && p->view_2d == UI_VIEW_PLAN && wall >= 0 && wall < p->project.plan.corner_count;
+    if (!elevation && !plan_wall && (!p->tiles || !p->tiles->in_3d))
         return;
     ui_tiles *t = planner_tiles(p);
     if (!t)
         return;
-    if (p->view == UI_VIEW_PLAN && wall != t->plan_wall) {
+    if (plan_wall && wall != t->plan_wall) {
         /* A wall picked in the plan: the panel shows it (the surface list may pick another). */
         char s[32];
         snprintf(s, sizeof s, "wall:%d", wall);
@@ -162,12 +166,9 @@ void planner_tile_panel(planner *p, int width, int height)
         t->plan_wall = wall;
     }
     ui_tiles_refresh(p, t);
-    /* Where the panel layout puts it (panel_layout.h: beside the left column, above the Edit
-     * panel); the elevation is drawn right of it (elevation_draw.c). */
-    ui_layout l;
-    int sel = p->plan_o.selected_object >= 0 && p->plan_o.selected_object < p->project.object_count;
-    ui_layout_compute(width, height, sel, &l);
-    if (ui_gui_begin("Tiles", l.tiles.x, l.tiles.y, l.tiles.w, l.tiles.h)) {
+    /* A section of the right column (panel_layout.h); the elevation has the 2D pane. */
+    const ui_rect *r = &p->layout.right;
+    if (ui_gui_begin("Tiles", r->x, r->y, r->w, r->h)) {
         const char *names[MAX_SURFACES];
         int n = 0, current = -1;
         for (int k = 0; k < t->surface_count && n < MAX_SURFACES; k++, n++) {
@@ -177,17 +178,18 @@ void planner_tile_panel(planner *p, int width, int height)
         }
         if (ui_gui_combo("surface", &current, names, n) && current >= 0)
             ui_tiles_show(p, names[current]);
-        if (p->view != UI_VIEW_ELEVATION && ui_gui_button("Show its elevation"))
+        if (!elevation && ui_gui_button("Show its elevation"))
             p->view = UI_VIEW_ELEVATION;
-        if (p->view == UI_VIEW_3D) {
+        if (!elevation && !plan_wall) {
             /* Over the 3D view the edits show live in the room; Close puts the panel away. */
             ui_gui_same_line();
             if (ui_gui_button("Close"))
                 t->in_3d = 0;
         }
-        if (p->view == UI_VIEW_ELEVATION) {
-            if (ui_gui_button("Back to 3D")) { /* the panel comes along */
+        if (elevation) {
+            if (ui_gui_button("Back to 3D")) { /* the panel comes along; the plan comes back */
                 p->view = UI_VIEW_3D;
+                p->view_2d = UI_VIEW_PLAN;
                 t->in_3d = 1;
             }
             /* Zoom about the drawing's centre; the right button pans. */

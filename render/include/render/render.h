@@ -458,6 +458,10 @@ rd_result rd_read_linear(rd_context *ctx, float *out, size_t out_count);
  * (framebuffer 0) with linear filtering, and read the window back (RGBA, top row first) for
  * screenshots that include the caller's own drawing on top. */
 rd_result rd_present(rd_context *ctx, int window_width, int window_height);
+/* The same into the rectangle (x, y, width, height) of the window, in window pixels from its
+ * top-left corner (a pane beside the caller's panels); the rest of the window is cleared. */
+rd_result rd_present_rect(rd_context *ctx, int window_width, int window_height, int x, int y,
+                          int width, int height);
 rd_result rd_read_window_rgba8(rd_context *ctx, int width, int height, uint8_t *out,
                                size_t out_size);
 

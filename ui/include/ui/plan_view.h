@@ -13,9 +13,10 @@ extern "C" {
 #endif
 
 typedef struct ui_plan_transform {
-    double centre_mm[2]; /* the plan point at the window's centre */
+    double centre_mm[2]; /* the plan point at the view's centre */
     double px_per_mm;    /* zoom, clamped to [0.005, 5] */
-    float width, height; /* window pixels */
+    float width, height; /* the view's size, window pixels */
+    float x0, y0;        /* the view's top-left corner in the window (its pane), pixels */
 } ui_plan_transform;
 
 /* The whole plan centred with margin_px around it. */
