@@ -1,6 +1,7 @@
 #!/bin/sh
 # Real X input under Xvfb, sent by xdotool through XTEST as a hand would, while every frame is
-# slowed to about 10 fps (TESSERA_FRAME_DELAY_MS=100):
+# slowed to 10 fps or less (TESSERA_FRAME_DELAY_MS=100; INPUT_SESSION_FRAME_DELAY_MS=N for
+# another delay, to measure):
 # 1. typing into the catalog search with Backspace, Delete, arrows, Home/End, Ctrl+A and
 #    Ctrl+C/V gives exactly the string a desktop text field would (read back from the window's
 #    log and expect-search); a V typed there is text, and after Enter V switches the view;
@@ -68,7 +69,7 @@ screenshot $out/scrolled.png
 quit
 SCRIPT
 
-TESSERA_FRAME_DELAY_MS=100 "$tessera" open "$project" --size 1024x600 --script "$out/session.txt" \
+TESSERA_FRAME_DELAY_MS=${INPUT_SESSION_FRAME_DELAY_MS:-100} "$tessera" open "$project" --size 1024x600 --script "$out/session.txt" \
     2>"$log" &
 pid=$!
 
