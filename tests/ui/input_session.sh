@@ -44,7 +44,7 @@ where() {
 # click X Y MS: a left click held MS milliseconds, at X Y.
 click() {
     xdotool mousemove "$1" "$2"
-    sleep 0.15
+    sleep 0.1
     xdotool mousedown 1 sleep "$(echo "$3" | awk '{print $1 / 1000}')" mouseup 1
 }
 
