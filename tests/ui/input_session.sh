@@ -76,6 +76,7 @@ pid=$!
 # 1. Typing. The field gets the keyboard with a click; each line's result is what any
 # desktop text field gives. The V typed is text, not the view shortcut.
 wait_log "waiting for .*/typed"
+# shellcheck disable=SC2046 # "X Y" splits into two arguments on purpose
 set -- $(where 'widget "search"')
 test $# -eq 2 || { cat "$log"; echo "FAIL: the window did not locate its search field"; exit 1; }
 click "$1" "$2" 30
@@ -103,6 +104,7 @@ touch "$out/typed"
 
 # 2. Clicks shorter than a frame, alternately on two fixtures: each one selects.
 wait_log "waiting for .*/clicked"
+# shellcheck disable=SC2046
 set -- $(where 'fixture "wc"') $(where 'fixture "bath"')
 test $# -eq 4 || { cat "$log"; echo "FAIL: the plan has no wc and bath"; exit 1; }
 n=0
