@@ -1,6 +1,7 @@
 #!/bin/sh
 # Real X input under Xvfb, sent by xdotool through XTEST as a hand would, while every frame is
-# slowed to about 10 fps (TESSERA_FRAME_DELAY_MS=100):
+# slowed to 10 fps or less (TESSERA_FRAME_DELAY_MS=100; INPUT_SESSION_FRAME_DELAY_MS=N for
+# another delay, to measure):
 # 1. typing into the catalog search with Backspace, Delete, arrows, Home/End, Ctrl+A and
 #    Ctrl+C/V gives exactly the string a desktop text field would (read back from the window's
 #    log and expect-search); a V typed there is text, and after Enter V switches the view;
@@ -43,7 +44,7 @@ where() {
 # click X Y MS: a left click held MS milliseconds, at X Y.
 click() {
     xdotool mousemove "$1" "$2"
-    sleep 0.15
+    sleep 0.1
     xdotool mousedown 1 sleep "$(echo "$3" | awk '{print $1 / 1000}')" mouseup 1
 }
 
@@ -68,13 +69,14 @@ screenshot $out/scrolled.png
 quit
 SCRIPT
 
-TESSERA_FRAME_DELAY_MS=100 "$tessera" open "$project" --size 1024x600 --script "$out/session.txt" \
+TESSERA_FRAME_DELAY_MS=${INPUT_SESSION_FRAME_DELAY_MS:-100} "$tessera" open "$project" --size 1024x600 --script "$out/session.txt" \
     2>"$log" &
 pid=$!
 
 # 1. Typing. The field gets the keyboard with a click; each line's result is what any
 # desktop text field gives. The V typed is text, not the view shortcut.
 wait_log "waiting for .*/typed"
+# shellcheck disable=SC2046 # "X Y" splits into two arguments on purpose
 set -- $(where 'widget "search"')
 test $# -eq 2 || { cat "$log"; echo "FAIL: the window did not locate its search field"; exit 1; }
 click "$1" "$2" 30
@@ -102,6 +104,7 @@ touch "$out/typed"
 
 # 2. Clicks shorter than a frame, alternately on two fixtures: each one selects.
 wait_log "waiting for .*/clicked"
+# shellcheck disable=SC2046
 set -- $(where 'fixture "wc"') $(where 'fixture "bath"')
 test $# -eq 4 || { cat "$log"; echo "FAIL: the plan has no wc and bath"; exit 1; }
 n=0

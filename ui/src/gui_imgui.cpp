@@ -1,4 +1,5 @@
-// The C seam over Dear ImGui (ui/src/gui.h): widgets forwarded one to one, no logic here.
+// The C seam over Dear ImGui (ui/src/gui.h): widgets forwarded one to one, and the window's input
+// callbacks that feed both Dear ImGui and the planner from one queue (input_queue.h).
 #include "gui.h"
 #include "input_queue.h"
 
