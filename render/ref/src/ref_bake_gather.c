@@ -164,6 +164,13 @@ static void hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh,
 {
     const ref_scene *s = job->scene;
     const ref_mesh *m = &s->meshes[rh->hit.geomID];
+    if (m->background &&
+        (m->emission[0] > 0.0f || m->emission[1] > 0.0f || m->emission[2] > 0.0f)) {
+        /* A window's exterior panel: its light reaches the room as the rectangle light and the
+         * sun the render list gives the window, which the GPU draws as direct light. */
+        out[0] = out[1] = out[2] = 0.0f;
+        return;
+    }
     const float *tn = m->tri_normals + 3 * (size_t)rh->hit.primID;
     float ng_dot = ref_dot(tn, dir);
     if (ng_dot >= 0.0f && !m->double_sided) {

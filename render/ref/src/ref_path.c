@@ -53,6 +53,15 @@ static float emitted_power(const ref_mesh *m)
     return (m->emission[0] + m->emission[1] + m->emission[2]) / 3.0f;
 }
 
+/* Emitting objects (a lamp's shade, a mirror's light strip) are area lights. An emitting room
+ * surface is not: a window's exterior panel is stood in for by the rectangle light and the sun
+ * the render list gives it (docs/rendering.md, "Daylight"), which next-event estimation samples
+ * with the renderer's lights, so counting the panel too would let the sky in twice. */
+static int is_area_light(const ref_mesh *m)
+{
+    return emitted_power(m) > 0.0f && !m->background;
+}
+
 static float triangle_area(const ref_mesh *m, unsigned prim)
 {
     const float *n = m->tri_normals + 3 * (size_t)prim;
@@ -65,7 +74,7 @@ ref_result ref_emitters_prepare(ref_scene *s)
     ref_emitters_free(e);
     int count = 0;
     for (int i = 0; i < s->mesh_count; i++)
-        if (emitted_power(&s->meshes[i]) > 0.0f)
+        if (is_area_light(&s->meshes[i]))
             count += s->meshes[i].triangle_count;
     if (count == 0)
         return REF_OK;
@@ -80,7 +89,7 @@ ref_result ref_emitters_prepare(ref_scene *s)
     for (int i = 0; i < s->mesh_count; i++) {
         const ref_mesh *m = &s->meshes[i];
         float power = emitted_power(m);
-        if (!(power > 0.0f))
+        if (!is_area_light(m))
             continue;
         for (int t = 0; t < m->triangle_count; t++) {
             double w = (double)triangle_area(m, (unsigned)t) * power;
@@ -324,7 +333,9 @@ static void trace_path(const ref_scene *s, const float origin[3], const float di
         const ref_mesh *m = sf.mesh;
         if (depth == 0)
             *reflective = m->reflective;
-        if (emitted_power(m) > 0.0f && sf.front) {
+        /* An emitting room surface is seen by the camera and through mirrors and glass; after
+         * a lobe sample its light came in already as its rectangle light (is_area_light). */
+        if (emitted_power(m) > 0.0f && sf.front && (is_area_light(m) || !after_lobes)) {
             float w = 1.0f;
             if (after_lobes) {
                 const float *tri_n = m->tri_normals + 3 * (size_t)sf.prim;
