@@ -111,6 +111,7 @@ void rm_add_window(rm_build *b, const app_opening *o, const rm_wall *w, double T
         for (int k = 0; k < 3; k++)
             r[k] *= o->light[k];
         m->inline_material = exterior_material(o, i, r);
+        m->light_stand_in = 1;
         rm_panel(b, m, w, ps0, ps1, edges[i], edges[i + 1], off);
     }
 

@@ -63,7 +63,8 @@ static app_result add_items(const app_render_list *l, ref_scene *s, const int *t
                            .material = it->material,
                            .texture = it->texture >= 0 ? textures[it->texture] : 0,
                            .double_sided = it->double_sided,
-                           .background = it->background};
+                           .background = it->background,
+                           .light_stand_in = it->light_stand_in};
         memcpy(d.transform, it->transform, sizeof d.transform);
         ref_result r = ref_scene_add_mesh(s, &d);
         if (r != REF_OK) {

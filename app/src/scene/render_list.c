@@ -123,6 +123,7 @@ static app_result add_room(app_list_builder *b, const app_project *p)
         it->material = m;
         it->texture = texture;
         it->background = 1;
+        it->light_stand_in = rm->light_stand_in;
     }
     return APP_OK;
 }

@@ -164,8 +164,7 @@ static void hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh,
 {
     const ref_scene *s = job->scene;
     const ref_mesh *m = &s->meshes[rh->hit.geomID];
-    if (m->background &&
-        (m->emission[0] > 0.0f || m->emission[1] > 0.0f || m->emission[2] > 0.0f)) {
+    if (m->light_stand_in) {
         /* A window's exterior panel: its light reaches the room as the rectangle light and the
          * sun the render list gives the window, which the GPU draws as direct light. */
         out[0] = out[1] = out[2] = 0.0f;

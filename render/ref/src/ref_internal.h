@@ -50,6 +50,7 @@ typedef struct ref_mesh {
     bool glass;      /* transparency > 0: invisible to secondary rays (the GPU probes skip it) */
     bool reflective; /* reflectivity > 0 or transparency > 0: the GPU gives it a probe */
     bool background; /* casts no shadow (ref_shadow.c) */
+    bool light_stand_in; /* ref_mesh_desc.light_stand_in */
     float uv_scale[2];
     float emission[3]; /* max(C_emissive, 0): the radiance it emits as an area light */
 } ref_mesh;

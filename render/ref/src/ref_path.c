@@ -53,13 +53,13 @@ static float emitted_power(const ref_mesh *m)
     return (m->emission[0] + m->emission[1] + m->emission[2]) / 3.0f;
 }
 
-/* Emitting objects (a lamp's shade, a mirror's light strip) are area lights. An emitting room
- * surface is not: a window's exterior panel is stood in for by the rectangle light and the sun
- * the render list gives it (docs/rendering.md, "Daylight"), which next-event estimation samples
- * with the renderer's lights, so counting the panel too would let the sky in twice. */
+/* Emitting triangles are area lights, except a surface whose light the scene's lights carry: a
+ * window's exterior panel is stood in for by the rectangle light and the sun the render list
+ * gives it (docs/rendering.md, "Daylight"), which next-event estimation samples with the
+ * renderer's lights, so counting the panel too would let the sky in twice. */
 static int is_area_light(const ref_mesh *m)
 {
-    return emitted_power(m) > 0.0f && !m->background;
+    return emitted_power(m) > 0.0f && !m->light_stand_in;
 }
 
 static float triangle_area(const ref_mesh *m, unsigned prim)
@@ -333,8 +333,8 @@ static void trace_path(const ref_scene *s, const float origin[3], const float di
         const ref_mesh *m = sf.mesh;
         if (depth == 0)
             *reflective = m->reflective;
-        /* An emitting room surface is seen by the camera and through mirrors and glass; after
-         * a lobe sample its light came in already as its rectangle light (is_area_light). */
+        /* A stand-in is seen by the camera and through mirrors and glass; after a lobe sample
+         * its light came in already through the lights that carry it (is_area_light). */
         if (emitted_power(m) > 0.0f && sf.front && (is_area_light(m) || !after_lobes)) {
             float w = 1.0f;
             if (after_lobes) {

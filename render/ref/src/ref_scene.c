@@ -221,6 +221,7 @@ ref_result ref_scene_add_mesh(ref_scene *s, const ref_mesh_desc *d)
     m->reflective = d->material.reflectivity > 0.0f || d->material.transparency > 0.0f;
     m->glass = d->material.transparency > 0.0f;
     m->background = d->background != 0;
+    m->light_stand_in = d->light_stand_in != 0;
     for (int k = 0; k < 3; k++) {
         float e = d->material.emissive[k];
         m->emission[k] = isfinite(e) && e > 0.0f ? e : 0.0f;

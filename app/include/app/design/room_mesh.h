@@ -30,7 +30,8 @@ extern "C" {
 typedef struct app_room_mesh {
     char surface[96]; /* "floor", "ceiling", "wall:2", "prewall:wc-box", "window:0", ... */
     int material;     /* index into app_project.materials, or -1: use inline_material */
-    app_material inline_material;     /* window panels and door leaves */
+    app_material inline_material; /* window panels and door leaves */
+    int light_stand_in; /* a window's exterior: its light comes in as the window's lights */
     float *positions, *normals, *uvs; /* 3, 3, 2 per vertex */
     uint32_t *indices;
     int vertex_count, index_count;

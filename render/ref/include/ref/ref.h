@@ -73,6 +73,9 @@ typedef struct ref_mesh_desc {
     int double_sided;
     /* As rd_object_desc.background: an enclosing room surface, which casts no shadow. */
     int background;
+    /* An emitting surface whose light the scene's lights already carry (a window's exterior
+     * panel and the window's rectangle light and sun): seen, but not an area light. */
+    int light_stand_in;
 } ref_mesh_desc;
 ref_result ref_scene_add_mesh(ref_scene *s, const ref_mesh_desc *d);
 
