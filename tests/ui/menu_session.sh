@@ -64,15 +64,17 @@ if [ "$1" = "--inside" ]; then
         "the toolbar did not bring the 3D view back beside the plan"
     # The splitter dragged from its middle to x 700: the plan 700 - 3 - 280 = 417 px wide.
     mark
+    # Each position is held for seconds: the window samples the pointer once a frame, and a
+    # loaded machine's frames take that long.
     xdotool mousemove --window "$win" 615 375
-    sleep 0.5
+    sleep 1
     xdotool mousedown 1
-    sleep 0.5
+    sleep 2
     for x in 640 660 680 700; do
         xdotool mousemove --window "$win" $x 375
-        sleep 0.3
+        sleep 0.5
     done
-    sleep 0.5
+    sleep 3
     xdotool mouseup 1
     wait_for " 2d 280,53,417,645 splitter 697,53,6,645 3d 703,53,247,645 " \
         "the splitter did not follow the drag"

@@ -711,9 +711,17 @@ extern "C" int ui_gui_drag_handle(const char *id, float width, float height, flo
     if (!g_ready)
         return 0;
     ImGui::InvisibleButton(id, ImVec2(width, height));
-    bool held = ImGui::IsItemActive();
-    if (held || ImGui::IsItemHovered())
+    bool held = ImGui::IsItemActive(), hovered = ImGui::IsItemHovered();
+    if (held || hovered)
         ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+    // A grip line down the middle, lit while the pointer is on it, as separators are.
+    ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    ImGuiCol grip = held      ? ImGuiCol_SeparatorActive
+                    : hovered ? ImGuiCol_SeparatorHovered
+                              : ImGuiCol_Separator;
+    float mid = 0.5f * (a.x + b.x);
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(mid - 1.0f, a.y), ImVec2(mid + 1.0f, b.y),
+                                              ImGui::GetColorU32(grip));
     *pointer_x = ImGui::GetIO().MousePos.x;
     return held;
 }

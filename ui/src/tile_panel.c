@@ -149,10 +149,14 @@ void planner_tile_panel(planner *p, int width, int height)
     (void)width;
     (void)height;
     int wall = p->plan_o.selected_wall;
-    int shown_2d = p->layout.pane_2d.w > 0;
-    int elevation = shown_2d && p->view_2d == UI_VIEW_ELEVATION;
+    /* The 2D pane shows the active view when it is the plan or the elevation, else the last
+     * of them (window_panes.c); the active view always shows. */
+    int active_2d = p->view == UI_VIEW_PLAN || p->view == UI_VIEW_ELEVATION;
+    int view_2d = active_2d ? p->view : p->view_2d;
+    int shown_2d = active_2d || p->layout.pane_2d.w > 0;
+    int elevation = shown_2d && view_2d == UI_VIEW_ELEVATION;
     int plan_wall =
-        shown_2d && p->view_2d == UI_VIEW_PLAN && wall >= 0 && wall < p->project.plan.corner_count;
+        shown_2d && view_2d == UI_VIEW_PLAN && wall >= 0 && wall < p->project.plan.corner_count;
     if (!elevation && !plan_wall && (!p->tiles || !p->tiles->in_3d))
         return;
     ui_tiles *t = planner_tiles(p);
