@@ -2,6 +2,7 @@
 #include "gui.h"
 
 #include <GLFW/glfw3.h>
+#include <cmath>
 #include <cstdarg>
 #include <cstdint>
 #include <cstdio>
@@ -328,4 +329,13 @@ extern "C" int ui_gui_image_row(const char *id, const char *text, int selected, 
     d->AddText(ImVec2(start.x + size + 8.0f, start.y + (size - th) * 0.5f),
                ImGui::GetColorU32(ImGuiCol_Text), text);
     return clicked;
+}
+
+extern "C" void ui_gui_progress_bar(float fraction, const char *text)
+{
+    if (!g_ready)
+        return;
+    /* Unknown progress: a bar that sweeps with the clock, so the panel shows the job is alive. */
+    float f = fraction >= 0 ? fraction : 0.5f + 0.5f * sinf((float)ImGui::GetTime() * 3.0f);
+    ImGui::ProgressBar(f, ImVec2(-1.0f, 0.0f), text);
 }

@@ -118,6 +118,9 @@ typedef struct planner {
 
     /* A placed fixture dragged in the 3D view (fixture_drag.c). */
     ui_fixture_drag fixture_drag;
+
+    /* File dialogs, recent files and long jobs (planner_actions.c), made on first use. */
+    struct planner_files *files;
 } planner;
 
 enum { UI_FILE_NONE = 0, UI_FILE_NEW, UI_FILE_OPEN };
@@ -143,8 +146,6 @@ void planner_draw_presentation(planner *p, int width, int height);
  * TIFF); the window's own quality is kept. */
 int planner_print_shot(planner *p, const char *path);
 void planner_toggle_fullscreen(planner *p);
-/* The share export of the document as it is now into dir (tessera share). */
-int planner_share(planner *p, const char *dir);
 
 /* planner_doc.c */
 int planner_doc_open(planner *p);

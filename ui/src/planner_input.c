@@ -1,10 +1,12 @@
 /* Mouse and keyboard to navigation: left drag orbits (or looks around when walking), the wheel
  * zooms, W A S D walk at 1.2 m/s (shift: 2.5 m/s), Tab switches orbit and walk, 1-4 pick the
  * quality, F1-F9 fly to stored viewpoints, V switches the 3D and the plan view, Ctrl+Z undo,
- * Ctrl+Y (or Ctrl+Shift+Z) redo, Ctrl+S save, Delete removes the selected fixture. Presentation: P
+ * Ctrl+Y (or Ctrl+Shift+Z) redo, Ctrl+O, Ctrl+S, Ctrl+Shift+S, Ctrl+P, Ctrl+E and Esc
+ * as planner_actions.h says, Delete removes the selected fixture. Presentation: P
  * shows or hides the UI, T starts or stops the tour, R the turntable, F11 fullscreen, F12 a
  * print-quality screenshot. Widgets get the input first. */
 #include "planner.h"
+#include "planner_actions.h"
 
 #include "gui.h"
 
@@ -31,12 +33,12 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
     if (!p || action != GLFW_PRESS || ui_gui_wants_keyboard())
         return;
     int ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+    if (planner_action_key(p, key, mods)) /* files and jobs: Ctrl+O, Ctrl+S, Ctrl+P, ... */
+        return;
     if (ctrl && key == GLFW_KEY_Z)
         planner_undo(p, (mods & GLFW_MOD_SHIFT) != 0);
     else if (ctrl && key == GLFW_KEY_Y)
         planner_undo(p, 1);
-    else if (ctrl && key == GLFW_KEY_S)
-        planner_save(p, NULL);
     else if (key == GLFW_KEY_V)
         p->view = p->view == UI_VIEW_3D ? UI_VIEW_PLAN : UI_VIEW_3D;
     else if (key == GLFW_KEY_DELETE && p->plan_o.selected_object >= 0 &&
@@ -67,7 +69,7 @@ static void on_key(GLFWwindow *w, int key, int scancode, int action, int mods)
         struct tm tm;
         localtime_r(&t, &tm);
         strftime(name, sizeof name, "tessera-%Y%m%d-%H%M%S.png", &tm);
-        planner_print_shot(p, name);
+        planner_action_job_to(p, PLANNER_JOB_RENDER_IMAGE, name); /* off the frame loop */
     }
 }
 
