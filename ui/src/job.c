@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -114,6 +115,31 @@ static void open_result(const char *path)
         waitpid(pid, NULL, 0);
 }
 
+/* Starts program with argv, its standard output and error into out_fd; the child's pid, or -1.
+ * fork rather than posix_spawn for what the child must set up itself: a process group of its
+ * own (cancel stops the command and anything it started), a niceness below the window's
+ * (where cores are few the frames come first; the render threads inherit it), and death with
+ * the thread that started it (a window killed outright leaves no render running). Between fork
+ * and exec only async-signal-safe calls (POSIX.1-2017, "fork"). */
+static pid_t spawn_command(const char *program, char *const argv[], int out_fd)
+{
+    pid_t parent = getpid();
+    pid_t pid = fork();
+    if (pid != 0)
+        return pid;
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) /* the window went before prctl took effect */
+        _exit(127);
+    (void)setpriority(PRIO_PROCESS, 0, JOB_NICENESS);
+    dup2(out_fd, 1);
+    dup2(out_fd, 2);
+    execve(program, argv, environ);
+    static const char msg[] = "the command cannot be run\n";
+    (void)!write(2, msg, sizeof msg - 1);
+    _exit(127);
+}
+
 static void *work(void *arg)
 {
     ui_job *j = arg;
@@ -130,31 +156,17 @@ static void *work(void *arg)
     argv[n] = NULL;
 
     int fds[2] = {-1, -1};
-    posix_spawn_file_actions_t fa;
-    posix_spawnattr_t attr;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawnattr_init(&attr);
-    /* A process group of its own: cancel stops the command and anything it started. */
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
-    posix_spawnattr_setpgroup(&attr, 0);
     int started = 0;
     if (pipe2(fds, O_CLOEXEC) == 0) {
-        posix_spawn_file_actions_adddup2(&fa, fds[1], 1);
-        posix_spawn_file_actions_adddup2(&fa, fds[1], 2);
-        pid_t pid;
         pthread_mutex_lock(&j->lock);
-        if (!j->cancel && posix_spawn(&pid, j->program, &fa, &attr, argv, environ) == 0) {
+        pid_t pid = j->cancel ? -1 : spawn_command(j->program, argv, fds[1]);
+        if (pid > 0) {
             j->pid = pid;
             started = 1;
-            /* Below the window's priority: where cores are few, the frames come first and the
-             * job takes what is left (its render threads inherit the niceness). */
-            (void)setpriority(PRIO_PROCESS, (id_t)pid, JOB_NICENESS);
         }
         pthread_mutex_unlock(&j->lock);
         close(fds[1]);
     }
-    posix_spawn_file_actions_destroy(&fa);
-    posix_spawnattr_destroy(&attr);
 
     int status = 1;
     if (started) {
