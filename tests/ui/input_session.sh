@@ -61,10 +61,10 @@ locate fixture bath
 wait-file $out/clicked
 wait 3
 screenshot $out/clicked.png
-locate widget Share folder
+locate widget Share folder...
 wait-file $out/scrolled
 wait 3
-locate widget Share folder
+locate widget Share folder...
 screenshot $out/scrolled.png
 quit
 SCRIPT
@@ -139,9 +139,9 @@ test "$selected" -eq 20 ||
 grep '^tessera: selected' "$log" | awk 'NR > 1 && $0 == prev { bad = 1 } { prev = $0 }
     END { exit bad }' || { echo "FAIL: a click did not change the selection"; exit 1; }
 # The wheel scrolled the View panel: its Share folder button was below the fold, now it shows.
-grep -q 'locate widget "Share folder" at .* hidden' "$log" ||
+grep -q 'locate widget "Share folder..." at .* hidden' "$log" ||
     { echo "FAIL: Share folder was not below the fold to begin with"; exit 1; }
-grep 'locate widget "Share folder"' "$log" | tail -n 1 | grep -q visible ||
+grep 'locate widget "Share folder..."' "$log" | tail -n 1 | grep -q visible ||
     { echo "FAIL: the wheel did not scroll the View panel"; exit 1; }
 # Each step changed the picture (the typed search, the selection, the scroll and zoom).
 "$check" "$out/typed.png" "$out/clicked.png" "$out/scrolled.png"

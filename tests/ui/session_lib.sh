@@ -1,12 +1,14 @@
 # Sourced by the Xvfb session scripts, which take TESSERA OUTDIR SCREENSHOT_CHECK and one more
 # argument of their own.
 
-# session_start TESSERA OUTDIR SCREENSHOT_CHECK ...: sets $tessera, $out and $check, and gives
-# the session an empty $out.
+# session_start TESSERA OUTDIR SCREENSHOT_CHECK ...: sets $tessera, $out and $check, gives
+# the session an empty $out, and $out/state as its XDG_STATE_HOME.
 session_start() {
     tessera=$1 out=$2 check=$3
     rm -rf "$out"
     mkdir -p "$out"
+    # The window's autosaves and recent files stay in the session's folder, not the user's.
+    export XDG_STATE_HOME="$out/state"
 }
 
 # session_window PROJECT SIZE SCRIPT LOG [MORE OPTIONS]: the planner window on PROJECT (empty:

@@ -84,6 +84,17 @@ int main(void)
     CHECK(s.count == 3 && !strcmp(s.actions[0].text, "wall-hung  basin 600") &&
           s.actions[1].kind == UI_ACT_SELECT && s.actions[1].a == 2);
     ui_script_free(&s);
+    /* The file and job verbs (planner_actions.h): the verb travels with its word. */
+    expect_error("print-pdf\n", "print-pdf needs a word");
+    expect_error("recover maybe\n", "recover is yes or no");
+    expect_error("job-wait now\n", "unexpected \"now\" after job-wait");
+    rc = read_text("print-pdf out.pdf\njob-wait\nexpect-recovery no\n", &s, err, sizeof err);
+    CHECK_MSG(rc == 0, "%s", err);
+    CHECK(s.count == 3 && s.actions[0].kind == UI_ACT_FILES &&
+          !strcmp(s.actions[0].text, "print-pdf out.pdf") &&
+          !strcmp(s.actions[1].text, "job-wait") &&
+          !strcmp(s.actions[2].text, "expect-recovery no"));
+    ui_script_free(&s);
     CHECK(ui_script_read("/nonexistent/script.txt", &s, err, sizeof err) == 1 &&
           strstr(err, "/nonexistent/script.txt: cannot open"));
     remove("ui_script_test.txt");

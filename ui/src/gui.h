@@ -98,6 +98,8 @@ void ui_gui_draw_ghost(float x, float y, unsigned texture, float image_size, con
 /* A selectable row (id "##...") of the image's height: the image (texture 0: an empty frame),
  * then text; returns 1 when clicked. */
 int ui_gui_image_row(const char *id, const char *text, int selected, unsigned texture, float size);
+/* A progress bar the panel's width; fraction < 0 shows an indeterminate bar with the text. */
+void ui_gui_progress_bar(float fraction, const char *text);
 
 /* The window's frame (menu_bar.c, toolbar.c, status_bar.c, window_panes.c). */
 /* The main menu bar at the window's top; ui_gui_end_menu_bar only when begin returned 1. */

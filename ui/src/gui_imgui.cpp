@@ -5,6 +5,7 @@
 
 #include <GLFW/glfw3.h>
 #include <cfloat>
+#include <cmath>
 #include <cstdarg>
 #include <cstdint>
 #include <cstdio>
@@ -760,4 +761,13 @@ extern "C" void ui_gui_clip_pop(void)
 {
     if (g_ready)
         background()->PopClipRect();
+}
+
+extern "C" void ui_gui_progress_bar(float fraction, const char *text)
+{
+    if (!g_ready)
+        return;
+    /* Unknown progress: a bar that sweeps with the clock, so the panel shows the job is alive. */
+    float f = fraction >= 0 ? fraction : 0.5f + 0.5f * sinf((float)ImGui::GetTime() * 3.0f);
+    ImGui::ProgressBar(f, ImVec2(-1.0f, 0.0f), text);
 }

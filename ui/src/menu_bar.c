@@ -2,6 +2,7 @@
  * the window (planner_input.c) is also an entry here that shows its key, so nothing hides
  * behind a key; Help lists them all (docs/ui.md has the same table). */
 #include "planner.h"
+#include "planner_actions.h"
 
 #include "app/project/commands.h"
 #include "gui.h"
@@ -41,22 +42,40 @@ static int selected_wall(const planner *p)
     return w >= 0 && w < p->project.plan.corner_count ? w : -1;
 }
 
+static void recent_menu(planner *p)
+{
+    const ui_recent *recent = planner_recent_files(p);
+    if (!ui_gui_begin_menu("Open recent", recent && recent->count > 0))
+        return;
+    for (int i = 0; recent && i < recent->count; i++) {
+        char label[1100];
+        snprintf(label, sizeof label, "%d %s##recent-menu%d", i + 1, recent->paths[i], i);
+        if (ui_gui_menu_item(label, NULL, -1, 1))
+            planner_action_open_recent(p, i + 1);
+    }
+    ui_gui_end_menu();
+}
+
 static void file_menu(planner *p)
 {
     if (!ui_gui_begin_menu("File", 1))
         return;
     if (ui_gui_menu_item("New", NULL, -1, 1))
         planner_file_request(p, UI_FILE_NEW);
-    /* Open and save as take the path typed in the Project panel. */
-    if (ui_gui_menu_item("Open the Project panel's file", NULL, -1, p->file_path[0] != 0))
-        planner_file_request(p, UI_FILE_OPEN);
-    if (ui_gui_menu_item("Save", "Ctrl+S", -1, 1))
-        planner_save(p, NULL);
-    if (ui_gui_menu_item("Save as the Project panel's file", NULL, -1, p->file_path[0] != 0))
-        planner_save(p, p->file_path);
+    if (ui_gui_menu_item("Open...", planner_action_shortcut("open"), -1, 1))
+        planner_action_open_dialog(p);
+    recent_menu(p);
+    if (ui_gui_menu_item("Save", planner_action_shortcut("save"), -1, 1))
+        planner_action_save(p);
+    if (ui_gui_menu_item("Save as...", planner_action_shortcut("save-as"), -1, 1))
+        planner_action_save_as(p);
     ui_gui_separator();
-    if (ui_gui_menu_item("Share folder", NULL, -1, 1))
-        planner_share_beside(p);
+    if (ui_gui_menu_item("Print to PDF...", planner_action_shortcut("print-pdf"), -1, 1))
+        planner_action_print_pdf(p);
+    if (ui_gui_menu_item("Export GLB...", planner_action_shortcut("export-glb"), -1, 1))
+        planner_action_export_glb(p);
+    if (ui_gui_menu_item("Share folder...", NULL, -1, 1))
+        planner_action_share(p);
     if (ui_gui_menu_item("Print-quality screenshot", "F12", -1, 1))
         planner_print_shot_now(p);
     ui_gui_separator();
@@ -189,8 +208,16 @@ static void render_menu(planner *p)
     ui_gui_separator();
     if (ui_gui_menu_item("Print-quality screenshot", "F12", -1, 1))
         planner_print_shot_now(p);
-    if (ui_gui_menu_item("Share folder (renders, panorama, plan)", NULL, -1, 1))
-        planner_share_beside(p);
+    if (ui_gui_menu_item("Render image at print quality...", NULL, -1, 1))
+        planner_action_render_image(p);
+    if (ui_gui_menu_item("Panorama...", NULL, -1, 1))
+        planner_action_panorama(p);
+    if (ui_gui_menu_item("Video of the viewpoints...", NULL, -1, 1))
+        planner_action_video(p);
+    if (ui_gui_menu_item("Share folder (renders, panorama, plan)...", NULL, -1, 1))
+        planner_action_share(p);
+    if (planner_job_running(p) && ui_gui_menu_item("Cancel the running job", "Esc", -1, 1))
+        planner_action_cancel_job(p);
     ui_gui_end_menu();
 }
 

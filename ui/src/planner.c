@@ -1,6 +1,7 @@
 /* The planner window: GLFW makes the window and its OpenGL context, the renderer adopts that
  * context, Dear ImGui draws the panels on top of the 3D view. */
 #include "planner.h"
+#include "planner_actions.h"
 
 #include "app/project/commands.h"
 #include "app/scene/scene_bake.h"
@@ -190,6 +191,7 @@ static int frame(planner *p)
         planner_draw_panels(p, fw, fh);
         planner_status_bar(p, now);
     }
+    planner_files_frame(p, fw, fh, dt); /* dialogs and the job panel, presenting or not */
     planner_autosave_tick(p, now);
     ui_gui_render();
     if (p->script.count && planner_script_step(p))
@@ -201,8 +203,11 @@ static int frame(planner *p)
     p->render_ms[i] = render_ms;
     if (p->frame_log && p->frame_count > 0)
         fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d\n", p->frame_count,
-                ui_quality_names[p->quality], p->dragging ? "drag" : "idle", dt * 1e3, render_ms,
-                p->render_scale, rw, rh);
+                ui_quality_names[p->quality],
+                p->dragging              ? "drag"
+                : planner_job_running(p) ? "job"
+                                         : "idle",
+                dt * 1e3, render_ms, p->render_scale, rw, rh);
     p->frame_count++;
     adapt_scale(p, render_ms);
     return 0;
@@ -293,6 +298,7 @@ int ui_run(const ui_options *o)
     if (!rc)
         rc = p.exit_code;
 done:
+    planner_files_free(&p);
     planner_doc_close(&p);
     planner_tiles_free(&p);
     ui_catalog_browser_close(&p.browser);

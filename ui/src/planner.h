@@ -131,6 +131,9 @@ typedef struct planner {
 
     /* A placed fixture dragged in the 3D view (fixture_drag.c). */
     ui_fixture_drag fixture_drag;
+
+    /* File dialogs, recent files and long jobs (planner_actions.c), made on first use. */
+    struct planner_files *files;
 } planner;
 
 enum { UI_FILE_NONE = 0, UI_FILE_NEW, UI_FILE_OPEN };
@@ -151,8 +154,6 @@ void planner_draw_panels(planner *p, int width, int height);
 /* New (UI_FILE_NEW) or open the Project panel's path (UI_FILE_OPEN), asking first when there
  * are unsaved changes. */
 void planner_file_request(planner *p, int what);
-/* Starts the share export into "PROJECT-share" beside the project's file. */
-void planner_share_beside(planner *p);
 /* window_panes.c: the frame's rectangles from the window's size, the active pane from the
  * pointer, the splitter; logs the pane rectangles to stderr whenever they change. */
 void planner_layout_frame(planner *p, int width, int height);
@@ -191,8 +192,6 @@ void planner_draw_presentation(planner *p, int width, int height);
  * TIFF); the window's own quality is kept. */
 int planner_print_shot(planner *p, const char *path);
 void planner_toggle_fullscreen(planner *p);
-/* The share export of the document as it is now into dir (tessera share). */
-int planner_share(planner *p, const char *dir);
 
 /* planner_doc.c */
 int planner_doc_open(planner *p);

@@ -1,9 +1,15 @@
 /* The planner's document: every change goes through app's commands as an edit line (the same
  * lines `tessera edit` replays, docs/editing.md), so each is one undo step; after a change the
  * fixtures, the placement findings and the 3D scene are brought up to date. Saving is app's
- * atomic write; autosave writes PATH.autosave every AUTOSAVE_S seconds while there are unsaved
- * changes, and opening a project whose autosave is newer offers to recover it. */
+ * atomic write. Nothing is left beside the user's file: autosave writes into the user's state
+ * folder (user_state.h) every AUTOSAVE_S seconds while there are unsaved changes, opening a
+ * project whose autosave is newer offers to recover it, and the version a save replaces (app's
+ * PATH.bak) is moved there too. */
+#define _GNU_SOURCE /* realpath */
+
 #include "planner.h"
+#include "planner_actions.h"
+#include "user_state.h"
 
 #include "app/project/commands.h"
 
@@ -96,6 +102,10 @@ int planner_doc_open(planner *p)
     }
     refresh_findings(p);
     p->quantities.stale = 1;
+    /* A project the user opened (not the shipped demo) is a recent file. */
+    if (p->project.path[0] && strncmp(p->project.path, TESSERA_SOURCE_DIR "/assets/",
+                                      strlen(TESSERA_SOURCE_DIR "/assets/")))
+        planner_recent_note(p, p->project.path);
     return 0;
 }
 
@@ -149,9 +159,22 @@ int planner_undo(planner *p, int redo)
     return 0;
 }
 
-static void autosave_path(const planner *p, char *out, size_t size)
+/* The autosave's file in the state folder; 0 ok, else why in out. */
+static int autosave_path(const planner *p, char *out, size_t size)
 {
-    snprintf(out, size, "%s.autosave", p->project.path);
+    return ui_project_state_file("autosave", p->project.path, out, size);
+}
+
+/* app's save keeps the replaced file as PATH.bak; the user's folder gets nothing but the file,
+ * so the backup goes to the state folder (dropped where a rename cannot reach it). */
+static void move_backup(const char *path)
+{
+    char bak[1100], kept[1100];
+    snprintf(bak, sizeof bak, "%s.bak", path);
+    if (access(bak, F_OK) != 0)
+        return;
+    if (ui_project_state_file("previous", path, kept, sizeof kept) || rename(bak, kept) != 0)
+        unlink(bak);
 }
 
 int planner_save(planner *p, const char *path)
@@ -162,6 +185,9 @@ int planner_save(planner *p, const char *path)
         planner_status(p, "save: the project has no file yet (save as)");
         return 1;
     }
+    char old_autosave[1100]; /* saved as another file: the old name's autosave goes too */
+    if (autosave_path(p, old_autosave, sizeof old_autosave))
+        old_autosave[0] = 0;
     if (app_project_write(target, &p->project, err, sizeof err) != APP_OK) {
         planner_status(p, "%s", err);
         return 1;
@@ -171,39 +197,54 @@ int planner_save(planner *p, const char *path)
         if (target != p->file_path) /* the file panel shows where the document now lives */
             snprintf(p->file_path, sizeof p->file_path, "%s", target);
     }
-    char a[sizeof p->project.path + 16];
-    autosave_path(p, a, sizeof a);
-    unlink(a); /* the saved file is newer than any autosave */
+    move_backup(p->project.path);
+    char a[1100];
+    if (autosave_path(p, a, sizeof a) == 0)
+        unlink(a); /* the saved file is newer than any autosave */
+    if (old_autosave[0])
+        unlink(old_autosave);
+    planner_recent_note(p, p->project.path);
     p->dirty = 0;
-    planner_status(p, "saved %s", target);
+    planner_status(p, "saved %s", p->project.path);
     return 0;
 }
 
 void planner_autosave_tick(planner *p, double now)
 {
-    if (!p->dirty || !p->project.path[0] || now - p->last_autosave < AUTOSAVE_S)
+    if (!p->dirty || now - p->last_autosave < AUTOSAVE_S)
         return;
     p->last_autosave = now;
-    char a[sizeof p->project.path + 16], err[1024];
-    autosave_path(p, a, sizeof a);
-    /* The document's own path stays the project file: the autosave is a copy beside it. */
-    if (app_project_write(a, &p->project, err, sizeof err) != APP_OK)
+    char a[1100], err[1024];
+    if (autosave_path(p, a, sizeof a)) {
+        planner_status(p, "autosave failed: %s", a);
+        return;
+    }
+    /* The document's own path stays the project file: the autosave is a copy. */
+    if (app_project_write(a, &p->project, err, sizeof err) != APP_OK) {
         planner_status(p, "autosave failed: %s", err);
+        return;
+    }
+    char bak[1110];
+    snprintf(bak, sizeof bak, "%s.bak", a);
+    unlink(bak); /* the previous autosave is of no use */
+    fprintf(stderr, "tessera: autosaved to %s\n", a);
 }
 
 int planner_recovery_available(const planner *p)
 {
-    char a[sizeof p->project.path + 16];
-    autosave_path(p, a, sizeof a);
+    char a[1100];
     struct stat sa, sp;
-    return p->project.path[0] && stat(a, &sa) == 0 && stat(p->project.path, &sp) == 0 &&
-           sa.st_mtime >= sp.st_mtime;
+    return p->project.path[0] && autosave_path(p, a, sizeof a) == 0 && stat(a, &sa) == 0 &&
+           stat(p->project.path, &sp) == 0 && sa.st_mtime >= sp.st_mtime;
 }
 
 int planner_recover(planner *p, int accept)
 {
-    char a[sizeof p->project.path + 16], err[1024];
-    autosave_path(p, a, sizeof a);
+    char a[1100], err[1024];
+    if (autosave_path(p, a, sizeof a)) {
+        planner_status(p, "recover: %s", a);
+        return 1;
+    }
     if (!accept) {
         unlink(a);
         planner_status(p, "autosave discarded");
@@ -268,7 +309,10 @@ int planner_file_open(planner *p, const char *path)
     }
     adopt(p, &next);
     snprintf(p->file_path, sizeof p->file_path, "%s", path);
-    planner_status(p, "opened %s", path);
+    planner_recent_note(p, path);
+    p->recovery_offered = planner_recovery_available(p);
+    planner_status(p, "opened %s%s", path,
+                   p->recovery_offered ? " (it has newer autosaved changes)" : "");
     return 0;
 }
 

@@ -2,13 +2,15 @@
  * zooms (the plan and the elevation too, about the pointer and the centre), W A S D walk at 1.2 m/s
  * (shift: 2.5 m/s), Tab switches orbit and walk, 1-4 pick the quality, F1-F9 fly to stored
  * viewpoints, V switches the 3D and the plan view, Ctrl+Z undo, Ctrl+Y (or Ctrl+Shift+Z) redo,
- * Ctrl+S save, Delete removes the selected fixture. Presentation: P shows or hides the UI, T starts
+ * Ctrl+O, Ctrl+S, Ctrl+Shift+S,
+ * Ctrl+P, Ctrl+E and Esc as planner_actions.h says, Delete removes the selected fixture. Presentation: P shows or hides the UI, T starts
  * or stops the tour, R the turntable, F11 fullscreen, F12 a print-quality screenshot. The events
  * come from the frame's share of the input queue (gui.h, input_queue.h): Dear ImGui sees every one
  * of them; the planner acts only on those the widgets do not want (a key while no text field has
  * the keyboard, the wheel and the buttons while the pointer is over no panel).
  */
 #include "planner.h"
+#include "planner_actions.h"
 
 #include "gui.h"
 #include "input_queue.h"
@@ -41,12 +43,12 @@ static void on_scroll(planner *p, double dy)
 static void on_key(planner *p, int key, int mods)
 {
     int ctrl = (mods & GLFW_MOD_CONTROL) != 0;
+    if (planner_action_key(p, key, mods)) /* files and jobs: Ctrl+O, Ctrl+S, Ctrl+P, ... */
+        return;
     if (ctrl && key == GLFW_KEY_Z)
         planner_undo(p, (mods & GLFW_MOD_SHIFT) != 0);
     else if (ctrl && key == GLFW_KEY_Y)
         planner_undo(p, 1);
-    else if (ctrl && key == GLFW_KEY_S)
-        planner_save(p, NULL);
     else if (ctrl)
         return; /* Ctrl+A, Ctrl+C, ... are the widgets' */
     else if (key == GLFW_KEY_V)
@@ -79,7 +81,7 @@ static void on_key(planner *p, int key, int mods)
         struct tm tm;
         localtime_r(&t, &tm);
         strftime(name, sizeof name, "tessera-%Y%m%d-%H%M%S.png", &tm);
-        planner_print_shot(p, name);
+        planner_action_job_to(p, PLANNER_JOB_RENDER_IMAGE, name); /* off the frame loop */
     }
 }
 

@@ -2,6 +2,7 @@
  * project summary and the selection's properties, docked in the window's columns beside the
  * views (panel_layout.h); each panel is a collapsible section of its column. */
 #include "planner.h"
+#include "planner_actions.h"
 
 #include "app/project/commands.h"
 #include "gui.h"
@@ -48,26 +49,21 @@ static void view_panel(planner *p)
         ui_gui_same_line();
         if (ui_gui_button(p->turntable ? "Stop turning" : "Turn (R)"))
             p->turntable = !p->turntable;
-        if (ui_gui_button("Share folder"))
-            planner_share_beside(p);
+        if (ui_gui_button("Share folder..."))
+            planner_action_share(p);
+        ui_gui_same_line();
+        if (ui_gui_button("Panorama..."))
+            planner_action_panorama(p);
+        ui_gui_same_line();
+        if (ui_gui_button("Video..."))
+            planner_action_video(p);
     }
     ui_gui_end();
 }
 
-/* The share export into "PROJECT-share" beside the project's file (the View panel, the File
- * and Render menus). */
-void planner_share_beside(planner *p)
-{
-    char dir[1100];
-    snprintf(dir, sizeof dir, "%s-share", p->project.path[0] ? p->project.path : "tessera");
-    char *dot = strrchr(dir, '.');
-    if (dot && !strcmp(dot, ".json-share"))
-        memmove(dot, "-share", 7);
-    planner_share(p, dir);
-}
-
-/* The project and its file: new, open, save, save as. Open and save as take
- * the path typed into the field; new and open ask first when there are unsaved changes. */
+/* The project and its file: new, open, save, save as, recent files, print, render, export.
+ * Open, save as and the jobs ask for the file in the native dialog (planner_actions.h); new and
+ * open ask first when there are unsaved changes. */
 void planner_file_request(planner *p, int what)
 {
     if (p->dirty) {
@@ -93,15 +89,33 @@ static void project_panel(planner *p)
         if (ui_gui_button("New"))
             planner_file_request(p, UI_FILE_NEW);
         ui_gui_same_line();
-        if (ui_gui_button("Open"))
-            planner_file_request(p, UI_FILE_OPEN);
+        if (ui_gui_button("Open..."))
+            planner_action_open_dialog(p);
         ui_gui_same_line();
         if (ui_gui_button("Save"))
-            planner_save(p, NULL);
+            planner_action_save(p);
         ui_gui_same_line();
-        if (ui_gui_button("Save as"))
-            planner_save(p, p->file_path);
-        ui_gui_input_text("file", p->file_path, sizeof p->file_path);
+        if (ui_gui_button("Save as..."))
+            planner_action_save_as(p);
+        if (ui_gui_button("Print PDF..."))
+            planner_action_print_pdf(p);
+        ui_gui_same_line();
+        if (ui_gui_button("Render image..."))
+            planner_action_render_image(p);
+        ui_gui_same_line();
+        if (ui_gui_button("Export GLB..."))
+            planner_action_export_glb(p);
+        const ui_recent *recent = planner_recent_files(p);
+        for (int i = 0; recent && i < recent->count && i < 5; i++) {
+            const char *base = strrchr(recent->paths[i], '/');
+            char label[300];
+            snprintf(label, sizeof label, "%d %.200s##recent%d", i + 1,
+                     base ? base + 1 : recent->paths[i], i);
+            if (ui_gui_selectable(label, 0)) {
+                planner_action_open_recent(p, i);
+                break; /* the list was reordered */
+            }
+        }
         if (!strncmp(p->status, "cannot open", 11) || !strncmp(p->status, "open:", 5) ||
             !strncmp(p->status, "save", 4) || strstr(p->status, ": cannot "))
             ui_gui_text_wrapped(p->status);
@@ -339,7 +353,7 @@ static void prompts(planner *p, int width, int height)
 {
     float x = (float)width / 2 - 170.0f, y = (float)height / 2 - 60.0f;
     if (p->recovery_offered) {
-        if (ui_gui_begin("Recover?", x, y, 340.0f, 100.0f)) {
+        if (ui_gui_begin("Recover?", x - 60.0f, y, 460.0f, 100.0f)) {
             ui_gui_text("Unsaved changes of this project were autosaved.");
             if (ui_gui_button("Recover them")) {
                 planner_recover(p, 1);

@@ -1,6 +1,7 @@
 /* Running a UI script (ui/src/script.h) one frame at a time, as input a user would give, and
  * the window screenshots it asks for. */
 #include "planner.h"
+#include "planner_actions.h"
 #include "probe_props.h"
 
 #include "render/image_io.h"
@@ -211,7 +212,8 @@ static int apply(planner *p, const ui_action *a)
     case UI_ACT_TILE_SELECTED:
         return planner_tile_selected(p, a->text) ? fail(a, p->status) : 0;
     case UI_ACT_SHARE:
-        return planner_share(p, a->text) ? fail(a, p->status) : 0;
+    case UI_ACT_FILES:
+        return planner_files_script(p, a); /* 2: a job or a dialog is still under way */
     case UI_ACT_DRAG_SELECTED:
     case UI_ACT_DROP_SELECTED: {
         int view = strcmp(a->text, "plan") ? UI_VIEW_3D : UI_VIEW_PLAN;
@@ -295,10 +297,13 @@ int planner_script_step(planner *p)
     p->dragging = 0;
     /* wait N spreads nothing over N frames; every other action takes at least one. */
     int frames = a->kind == UI_ACT_WAIT ? (int)a->a : a->frames;
-    if (frames > 0 && apply(p, a)) {
+    int r = frames > 0 ? apply(p, a) : 0;
+    if (r == 1) {
         p->exit_code = 1;
         return 1;
     }
+    if (r == 2) /* the action goes on next frame (a job or a dialog under way) */
+        return 0;
     if (++p->action_frame >= frames) {
         p->action++;
         p->action_frame = 0;

@@ -1,8 +1,6 @@
 /* Presentation mode for a customer at the showroom table: the UI hidden but
  * for a caption, smooth flights between stored viewpoints, an automatic tour, a turntable, and
  * one key for a print-quality screenshot. */
-#define _POSIX_C_SOURCE 200809L /* mkdtemp */
-
 #include "planner.h"
 
 #include "app/design/quantities.h"
@@ -13,11 +11,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-extern char **environ;
 
 #define TOUR_HOLD_S 4.0   /* seconds at each viewpoint */
 #define TOUR_FLIGHT_S 2.5 /* seconds between two */
@@ -182,38 +175,4 @@ void planner_toggle_fullscreen(planner *p)
     glfwGetWindowPos(p->window, &p->windowed_pos[0], &p->windowed_pos[1]);
     glfwGetWindowSize(p->window, &p->windowed_pos[2], &p->windowed_pos[3]);
     glfwSetWindowMonitor(p->window, m, 0, 0, mode->width, mode->height, mode->refreshRate);
-}
-
-int planner_share(planner *p, const char *dir)
-{
-    /* The share export works from a file: the document as it is now, in a temporary folder,
-     * composed by `tessera share` (app/src/cli/cli_share.c) in a process of its own: it makes
-     * OpenGL contexts of its own, which must not touch the window's. The window waits for it
-     * (a script's next action needs the folder). */
-    char folder[] = "/tmp/tessera-share-XXXXXX", tmp[64], bak[72], err[1024];
-    if (!mkdtemp(folder)) {
-        planner_status(p, "share: cannot make a temporary folder");
-        return 1;
-    }
-    snprintf(tmp, sizeof tmp, "%s/project.json", folder);
-    snprintf(bak, sizeof bak, "%s.bak", tmp);
-    if (app_project_write(tmp, &p->project, err, sizeof err) != APP_OK) {
-        planner_status(p, "share: %s", err);
-        rmdir(folder);
-        return 1;
-    }
-    char *argv[] = {"tessera", "share", tmp, "-o", (char *)dir, NULL};
-    pid_t pid;
-    int status = 1;
-    if (posix_spawn(&pid, "/proc/self/exe", NULL, NULL, argv, environ) == 0)
-        waitpid(pid, &status, 0);
-    unlink(tmp);
-    unlink(bak);
-    rmdir(folder);
-    int rc = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-    if (rc)
-        planner_status(p, "share: the export failed (see the terminal)");
-    else
-        planner_status(p, "shared: %s/index.html", dir);
-    return rc;
 }

@@ -13,7 +13,8 @@ static const struct {
     const char *word;
     ui_action_kind kind;
     int numbers; /* how many numbers follow */
-    int text;    /* 1: one word of text follows; 2: the rest of the line */
+    int text;    /* 1: one word of text follows; 2: the rest of the line; 3: the verb and one
+                    word (UI_ACT_FILES); 4: the verb alone (UI_ACT_FILES) */
 } verbs[] = {
     {"wait", UI_ACT_WAIT, 1, 0},
     {"orbit", UI_ACT_ORBIT, 2, 0},
@@ -68,6 +69,19 @@ static const struct {
     {"expect-search", UI_ACT_EXPECT_SEARCH, 0, 2},
     {"panes", UI_ACT_PANES, 0, 1},
     {"split", UI_ACT_SPLIT, 1, 0},
+    {"print-pdf", UI_ACT_FILES, 0, 3},
+    {"render-image", UI_ACT_FILES, 0, 3},
+    {"export-glb", UI_ACT_FILES, 0, 3},
+    {"panorama", UI_ACT_FILES, 0, 3},
+    {"video", UI_ACT_FILES, 0, 3},
+    {"job-wait", UI_ACT_FILES, 0, 4},
+    {"job-cancel", UI_ACT_FILES, 0, 4},
+    {"autosave-now", UI_ACT_FILES, 0, 4},
+    {"expect-recovery", UI_ACT_FILES, 0, 3},
+    {"recover", UI_ACT_FILES, 0, 3},
+    {"expect-recent", UI_ACT_FILES, 0, 3},
+    {"open-recent", UI_ACT_FILES, 0, 3},
+    {"dialog", UI_ACT_FILES, 0, 3},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 
@@ -115,7 +129,19 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
         return a->kind < UI_ACT_ELEVATION_WALL || a->kind > UI_ACT_EXPECT_TILES ||
                ui_tile_action_check(a->kind, a->text, why, why_size);
     }
-    if (verbs[v].text) {
+    if (verbs[v].text >= 3) { /* the verb goes with its word: planner_actions.c reads both */
+        char *t = verbs[v].text == 3 ? strtok_r(NULL, " \t\r\n", &save) : NULL;
+        if (verbs[v].text == 3 && (!t || strlen(t) + strlen(verb) + 2 > sizeof a->text)) {
+            snprintf(why, why_size, "%s needs a word (a file name, yes or no, ...)", verb);
+            return 0;
+        }
+        snprintf(a->text, sizeof a->text, "%s%s%s", verb, t ? " " : "", t ? t : "");
+        if ((!strcmp(verb, "expect-recovery") || !strcmp(verb, "recover")) && strcmp(t, "yes") &&
+            strcmp(t, "no")) {
+            snprintf(why, why_size, "%s is yes or no, not \"%s\"", verb, t);
+            return 0;
+        }
+    } else if (verbs[v].text) {
         char *t = strtok_r(NULL, " \t\r\n", &save);
         if (!t || strlen(t) >= sizeof a->text) {
             snprintf(why, why_size, "%s needs a %s", verb,

@@ -30,7 +30,8 @@
  *   save FILE              save as FILE (atomic); "save -" saves to the project's own file
  *   expect-objects N       fail unless the project has exactly N objects
  *   expect-added N         fail unless N objects were added since the window opened
- *   share DIR              the share export of the document as it is now
+ *   share DIR              the share export of the document as it is now, as a job (below);
+ *                          the script waits for it, the window keeps drawing
  *   drop-selected plan|3d SX SY  drag the browser's selected product to window pixel SX SY
  *                          of the plan or the 3D view and let go (with `frames N` the ghost
  *                          travels there first); placed and snapped as place-selected
@@ -66,6 +67,20 @@
  *   expect-search TEXT...  fail unless the catalog browser's search field holds exactly TEXT
  *   panes both|one         plan and 3D side by side, or the active view alone (View menu)
  *   split SX               drag the splitter between the panes to window x SX
+ *   print-pdf FILE.pdf     start a job (planner_actions.h) and go on at once: the print set
+ *   render-image FILE      the window's view at print quality, twice the window's size
+ *   export-glb FILE.glb    the project as GLB
+ *   panorama FILE.jpg      a 360-degree panorama from the window's view
+ *   video FILE.mp4         the video of the viewpoints
+ *   job-wait               wait for the running job; fail unless it succeeded
+ *   job-cancel             cancel the running job, wait for it to stop; fail unless cancelled
+ *   autosave-now           autosave now (the window does every 30 s while there are changes)
+ *   expect-recovery yes|no fail unless the recovery offer is (not) showing
+ *   recover yes|no         answer the recovery offer
+ *   expect-recent FILE     fail unless FILE is the newest of the recent files
+ *   open-recent N          open the N-th recent file (from 1)
+ *   dialog open|save-as|print-pdf|export-glb  the native file dialog; the script waits until
+ *                          it is answered (a person, or xdotool in a test), then acts on it
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -127,6 +142,7 @@ typedef enum ui_action_kind {
     UI_ACT_EXPECT_SEARCH,
     UI_ACT_PANES, /* the window's layout (panel_layout.h) */
     UI_ACT_SPLIT,
+    UI_ACT_FILES, /* planner_actions.h: text is "VERB ARGUMENT" */
     UI_ACT_QUIT
 } ui_action_kind;
 

@@ -2,6 +2,7 @@
  * naming it and its key. The icons are line drawings in a unit square (y down), drawn by Dear
  * ImGui, so they follow the style's text colour and need no image files. */
 #include "planner.h"
+#include "planner_actions.h"
 
 #include "gui.h"
 
@@ -81,14 +82,10 @@ void planner_toolbar(planner *p)
     if (ui_gui_begin_bar("##toolbar", r->x, r->y, r->w, r->h, 4.0f)) {
         if (tool("##new", page, 7, 0, "New project (the empty room)"))
             planner_file_request(p, UI_FILE_NEW);
-        if (tool("##open", folder, 6, 0, "Open the file named in the Project panel")) {
-            if (p->file_path[0])
-                planner_file_request(p, UI_FILE_OPEN);
-            else
-                planner_status(p, "open: type the file's path in the Project panel first");
-        }
+        if (tool("##open", folder, 6, 0, "Open a project (Ctrl+O)"))
+            planner_action_open_dialog(p);
         if (tool("##save", disk, 8, 0, "Save (Ctrl+S)"))
-            planner_save(p, NULL);
+            planner_action_save(p);
         gap();
         if (tool("##undo", undo_arrow, 5, 0, "Undo (Ctrl+Z)"))
             planner_undo(p, 0);
