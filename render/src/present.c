@@ -28,6 +28,33 @@ rd_result rd_present(rd_context *ctx, int window_width, int window_height)
                                                : rd_fail(RD_ERR_GL, "rd_present: blit failed");
 }
 
+rd_result rd_present_rgba8(rd_context *ctx, int width, int height, const uint8_t *rgba,
+                           int window_width, int window_height)
+{
+    if (!ctx || ctx->backend != RD_BACKEND_ADOPT)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_present_rgba8: no adopted window");
+    if (width <= 0 || height <= 0 || !rgba)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_present_rgba8: image size %dx%d", width,
+                       height);
+    rd_result r = rd_target_ensure(&ctx->composed, width, height, GL_RGBA8, false);
+    if (r != RD_OK)
+        return r;
+    /* Uploaded top row first, so the texture stands on its head; the blit turns it back. */
+    glBindTexture(GL_TEXTURE_2D, ctx->composed.color);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, ctx->composed.fbo);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, width, height, 0, window_height, window_width, 0, GL_COLOR_BUFFER_BIT,
+                      GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, window_width, window_height);
+    return rd_gl_drain_errors() == GL_NO_ERROR
+               ? RD_OK
+               : rd_fail(RD_ERR_GL, "rd_present_rgba8: upload or blit failed");
+}
+
 rd_result rd_read_window_rgba8(rd_context *ctx, int width, int height, uint8_t *out,
                                size_t out_size)
 {
