@@ -120,9 +120,6 @@ void planner_handle_input(planner *p, double dt)
         r += speed * dt;
     if (glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS)
         r -= speed * dt;
-    if (f != 0 || r != 0) {
-        app_point2 box[4];
-        app_room_plan fallback;
-        ui_walk_move(&p->walk, planner_plan(p, box, &fallback), f, r);
-    }
+    if (f != 0 || r != 0)
+        planner_walk_move(p, f, r);
 }
