@@ -5,6 +5,7 @@
 #include <stddef.h>
 
 #define DEG (3.14159265358979323846 / 180.0)
+#define UI_ORBIT_MIN_ARM_MM 100.0
 
 static double clampd(double v, double lo, double hi)
 {
@@ -326,6 +327,11 @@ void ui_orbit_eye_inside(const ui_orbit *o, const app_room_plan *plan, double ey
             }
             for (int k = 0; k < 3; k++)
                 eye[k] = target[k] + dir[k] * lo;
+            /* The target at the margin with the arm pointing out: the eye stays, and the point
+             * looked at moves ahead along the same view so the two never meet. */
+            if (lo < UI_ORBIT_MIN_ARM_MM)
+                for (int k = 0; k < 3; k++)
+                    target[k] = eye[k] - dir[k] * UI_ORBIT_MIN_ARM_MM;
             return;
         }
         free_t = t;

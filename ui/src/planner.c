@@ -163,14 +163,17 @@ static int frame(planner *p)
     int i = (int)(p->frame_count % UI_FRAME_HISTORY);
     p->frame_ms[i] = (float)(dt * 1e3);
     p->render_ms[i] = render_ms;
-    if (p->frame_log && p->frame_count > 0)
-        fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d,%s,%.3f\n", p->frame_count,
-                ui_quality_names[p->quality], p->dragging ? "drag" : "idle", dt * 1e3, render_ms,
-                p->render_scale, rw, rh,
+    if (p->frame_log && p->frame_count > 0) {
+        double eye[3], target[3];
+        planner_view_points(p, eye, target);
+        fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d,%s,%.3f,%.0f,%.0f,%.0f\n",
+                p->frame_count, ui_quality_names[p->quality], p->dragging ? "drag" : "idle",
+                dt * 1e3, render_ms, p->render_scale, rw, rh,
                 !p->live.still                  ? "moving"
                 : ui_live_done(&p->live.ladder) ? "still"
                                                 : "refining",
-                p->live.still ? ui_live_progress(&p->live.ladder) : 0.0f);
+                p->live.still ? ui_live_progress(&p->live.ladder) : 0.0f, eye[0], eye[1], eye[2]);
+    }
     p->frame_count++;
     return 0;
 }
@@ -196,7 +199,7 @@ int ui_run(const ui_options *o)
             return 1;
         }
         fprintf(p.frame_log, "frame,quality,state,frame_ms,render_ms,render_scale,width,height,"
-                             "live,progress\n");
+                             "live,progress,eye_x,eye_y,eye_z\n");
     }
     glfwSetErrorCallback(glfw_error);
     if (!glfwInit()) {

@@ -78,7 +78,8 @@ int ui_room_clamp_point(const app_room_plan *plan, double p[3], double margin);
 /* The orbit's eye kept inside the room: the target clamped in, then the eye on its ray from
  * the target no farther than the first wall, floor or ceiling (less the margin). The orbit's
  * own distance is what the user asked for; it comes back when the view turns away from the
- * wall. target gets the (clamped) point looked at. */
+ * wall. target gets the (clamped) point looked at, moved ahead along the view when the wall
+ * leaves the arm shorter than 100 mm (eye and target never meet). */
 void ui_orbit_eye_inside(const ui_orbit *o, const app_room_plan *plan, double eye[3],
                          double target[3]);
 
