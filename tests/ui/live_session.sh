@@ -40,9 +40,11 @@ session_window "$out/demo.json" 960x540 "$out/live.txt" "$out/stderr.txt" \
 "$check" "$out/floor.png" "$out/wall.png" "$out/walk.png"
 "$check" "$out/still.png"
 for shot in floor wall still walk walked; do
-    avg=$(oiiotool "$out/$shot.png" --printstats | sed -n 's/.*Stats Avg: \([0-9.]*\) \([0-9.]*\) \([0-9.]*\).*/\1 \2 \3/p')
+    # The mean colour, 0..1 (the channel selection converts to float).
+    avg=$(oiiotool "$out/$shot.png" --ch R,G,B --printstats | sed -n 's/.*Stats Avg: \([0-9.]*\) \([0-9.]*\) \([0-9.]*\).*/\1 \2 \3/p')
     echo "$shot: mean $avg"
-    echo "$avg" | awk -v s="$shot" '{ if ($1 + $2 + $3 < 0.3) { print "FAIL: " s ".png is dark"; exit 1 } }'
+    echo "$avg" | awk -v s="$shot" '{ if (NF != 3 || $1 > 1 || $1 + $2 + $3 < 0.3) {
+        print "FAIL: " s ".png is dark (or its mean unread)"; exit 1 } }'
 done
 python3 - "$out/frames.csv" "$out/demo.json" <<'PY'
 import csv, json, sys
