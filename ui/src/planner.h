@@ -59,12 +59,14 @@ typedef struct planner {
     /* The live 3D view (planner_live.c): moving frames at a reduced scale, then the still view
      * refined in strips (live_view.h) into the accumulated full-resolution image. */
     struct {
-        int still;          /* 1: the view has stood still since the ladder began */
-        int applied;        /* the preset whose settings the scene holds, -1 = none */
-        int serial;         /* bumped when the scene or the quality changes */
-        double key[12];     /* what the last frame showed: eye, target, size, ... */
-        int last_w, last_h; /* the last moving render's size */
-        float last_ms;      /* and its cost */
+        int still;           /* 1: the view has stood still since the ladder began */
+        int applied;         /* the preset whose settings the scene holds, -1 = none */
+        int serial;          /* bumped when the scene or the quality changes */
+        double key[12];      /* what the last frame showed: eye, target, size, ... */
+        int last_w, last_h;  /* the last moving render's size */
+        unsigned char *last; /* and its pixels (RGBA8, last_w x last_h) */
+        size_t last_size;
+        float last_ms; /* and its cost */
         ui_live ladder;
         ui_accum accum;
         unsigned char *strip; /* the strip read back */

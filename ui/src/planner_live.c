@@ -93,7 +93,16 @@ static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, i
     double t0 = glfwGetTime();
     if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK || rd_present(p->ctx, fw, fh) != RD_OK)
         return render_failed();
-    rd_finish(p->ctx);
+    /* Kept for the still view's first picture: by the time the view stops, the context's
+     * last render may be a catalog thumbnail. */
+    size_t size = (size_t)*rw * (size_t)*rh * 4;
+    if (size > p->live.last_size) {
+        free(p->live.last);
+        p->live.last = malloc(size);
+        p->live.last_size = p->live.last ? size : 0;
+    }
+    if (p->live.last && rd_read_rgba8(p->ctx, p->live.last, size) != RD_OK)
+        return render_failed();
     *render_ms = (float)((glfwGetTime() - t0) * 1e3);
     p->live.last_w = *rw;
     p->live.last_h = *rh;
@@ -113,13 +122,10 @@ static int begin_still(planner *p, int fw, int fh)
         fprintf(stderr, "tessera: out of memory for the still view\n");
         return 1;
     }
-    size_t size = (size_t)p->live.last_w * (size_t)p->live.last_h * 4;
-    unsigned char *last = size ? malloc(size) : NULL;
-    if (last && rd_read_rgba8(p->ctx, last, size) == RD_OK)
-        ui_accum_start_from(&p->live.accum, last, p->live.last_w, p->live.last_h);
+    if (p->live.last)
+        ui_accum_start_from(&p->live.accum, p->live.last, p->live.last_w, p->live.last_h);
     else
         ui_accum_restart(&p->live.accum);
-    free(last);
     apply_preset(p, p->live.ladder.steps[0].preset);
     return 0;
 }
@@ -207,6 +213,7 @@ void planner_live_free(planner *p)
 {
     ui_accum_free(&p->live.accum);
     free(p->live.strip);
-    p->live.strip = NULL;
-    p->live.strip_size = 0;
+    free(p->live.last);
+    p->live.strip = p->live.last = NULL;
+    p->live.strip_size = p->live.last_size = 0;
 }

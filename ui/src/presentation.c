@@ -141,7 +141,6 @@ int planner_print_shot(planner *p, const char *path)
     w *= 2;
     h *= 2;
     const app_quality *print = app_quality_find("print");
-    const app_quality *now = app_quality_find(ui_quality_names[p->quality]);
     if (print)
         app_quality_apply(print, p->scene.scene);
     int saved = p->quality;
@@ -165,8 +164,9 @@ int planner_print_shot(planner *p, const char *path)
         rc = 0;
     }
     free(px);
-    if (now)
-        app_quality_apply(now, p->scene.scene);
+    /* The live view puts its own settings back (planner_live.c). */
+    p->live.applied = -1;
+    p->live.serial++;
     return rc;
 }
 
