@@ -67,6 +67,7 @@ typedef struct planner {
         unsigned char *last; /* and its pixels (RGBA8, last_w x last_h) */
         size_t last_size;
         float last_ms; /* and its cost */
+        float rest_ms; /* the frame without its 3D view, smoothed (the strips' budget) */
         ui_live ladder;
         ui_accum accum;
         unsigned char *strip; /* the strip read back */

@@ -14,9 +14,12 @@
 #include <string.h>
 
 /* What a still frame's strip may cost (render and read back): the frame's 100 ms ceiling less
- * the panels, the present and the swap (about 5-10 ms), less room for the estimate to be off
- * by a third under a shared machine's load. */
+ * the rest of the frame (the panels, the present, the swap: about 5-10 ms alone, several times
+ * that on a loaded machine, so it is measured), less room for the strip's estimate to be off
+ * by a third; at most STRIP_BUDGET_MS, at least STRIP_MIN_MS. */
+#define FRAME_CEILING_MS 100.0f
 #define STRIP_BUDGET_MS 55.0f
+#define STRIP_MIN_MS 10.0f
 /* Probe faces a still frame may capture: a probe's six faces at 256 texels cost about a
  * strip's budget on llvmpipe (docs/benchmarks.md, "Reflection probes"). */
 #define STILL_FACES_PER_FRAME 6
@@ -130,6 +133,22 @@ static int begin_still(planner *p, int fw, int fh)
     return 0;
 }
 
+/* The strip budget from the rest of the last measured frame: frame_ms[n - 1] holds the length
+ * of frame n - 2 (the time between its start and the next), render_ms[n - 2] its 3D view. */
+static float strip_budget(planner *p)
+{
+    long n = p->frame_count;
+    if (n >= 2) {
+        float rest =
+            p->frame_ms[(n - 1) % UI_FRAME_HISTORY] - p->render_ms[(n - 2) % UI_FRAME_HISTORY];
+        if (rest > 0 && rest < 1000)
+            p->live.rest_ms =
+                p->live.rest_ms > 0 ? p->live.rest_ms + 0.2f * (rest - p->live.rest_ms) : rest;
+    }
+    float b = (FRAME_CEILING_MS - p->live.rest_ms) * 0.75f;
+    return b > STRIP_BUDGET_MS ? STRIP_BUDGET_MS : b < STRIP_MIN_MS ? STRIP_MIN_MS : b;
+}
+
 static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
 {
     ui_live *l = &p->live.ladder;
@@ -137,7 +156,7 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
     *rh = fh;
     p->render_scale = 1.0f;
     if (!ui_live_done(l)) {
-        int rows = ui_live_strip_rows(l, STRIP_BUDGET_MS, fh);
+        int rows = ui_live_strip_rows(l, strip_budget(p), fh);
         size_t size = (size_t)fw * (size_t)rows * 4;
         if (size > p->live.strip_size) {
             free(p->live.strip);
