@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Summarises planner frame logs (tessera open --frame-log): for each CSV, the median frame
 and render scale over the frames logged as dragging (after the first 40 frames), the longest
-frame, and the seconds from the view's stop to the still view at its preset (the first frame
-logged "still" after the last moving one). Prints a Markdown table. Usage:
+frame, and from the view's stop to the still view at its preset (the first frame logged
+"still" after the last moving one) the seconds and the refining frames' lengths. Prints a Markdown table. Usage:
     live_summary.py LOG.csv..."""
 import csv
 import statistics
@@ -25,8 +25,11 @@ def summary(path):
         start = moving[-1] + 1
         done = next((i for i in range(start, len(rows)) if rows[i]["live"] == "still"), None)
         if done is not None:
-            out["to_still_s"] = sum(float(rows[i]["frame_ms"]) for i in range(start + 1, done + 1)) / 1e3
-            out["still_longest_ms"] = max(float(rows[i]["frame_ms"]) for i in range(start + 1, done + 1))
+            refining = [float(rows[i]["frame_ms"]) for i in range(start + 1, done + 1)]
+            out["to_still_s"] = sum(refining) / 1e3
+            out["still_median_ms"] = statistics.median(refining)
+            out["still_longest_ms"] = max(refining)
+            out["still_over_100"] = f"{sum(1 for f in refining if f > 100)} of {len(refining)}"
     return out
 
 
@@ -34,11 +37,12 @@ def cell(d, key, fmt):
     return fmt.format(d[key]) if key in d else "-"
 
 
-print("| log | frames | median frame while dragging | render scale | longest frame | stop to still at preset | longest refining frame |")
+print("| log | frames | median frame while dragging | render scale | longest frame | stop to still at preset | refining frames: median / longest / over 100 ms |")
 print("|---|---|---|---|---|---|---|")
 for path in sys.argv[1:]:
     d = summary(path)
     print(f"| {path} | {d['frames']} | {cell(d, 'drag_median_ms', '{:.1f} ms')} "
           f"({cell(d, 'drag_fps', '{:.1f} fps')}) | {cell(d, 'drag_scale', '{:.2f}')} | "
           f"{d['longest_ms']:.0f} ms | {cell(d, 'to_still_s', '{:.2f} s')} | "
-          f"{cell(d, 'still_longest_ms', '{:.0f} ms')} |")
+          f"{cell(d, 'still_median_ms', '{:.1f}')} / {cell(d, 'still_longest_ms', '{:.0f} ms')} / "
+          f"{cell(d, 'still_over_100', '{}')} |")
