@@ -83,6 +83,14 @@ rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_s
     } else {
         glm_perspective(glm_rad(fov), (float)v->width / (float)v->height, near_m, far_m, proj);
     }
+    if (v->jitter[0] != 0.0f || v->jitter[1] != 0.0f) {
+        /* Shift the image by a fraction of a pixel: an NDC translation after the projection,
+         * 2 / size NDC units per pixel (y flipped: rows run down, NDC up). */
+        mat4 shift = GLM_MAT4_IDENTITY_INIT;
+        shift[3][0] = 2.0f * v->jitter[0] / (float)v->width;
+        shift[3][1] = -2.0f * v->jitter[1] / (float)v->height;
+        glm_mat4_mul(shift, proj, proj);
+    }
     glm_mat4_mul(proj, view, vp);
     if (view_rot) {
         mat3 rot;

@@ -143,6 +143,7 @@ void rd_context_destroy(rd_context *ctx)
             if (ctx->isotropic_sampler)
                 glDeleteSamplers(1, &ctx->isotropic_sampler);
             rd_target_destroy(&ctx->display);
+            rd_target_destroy(&ctx->composed);
             rd_target_destroy(&ctx->linear);
             rd_target_destroy(&ctx->meter);
             if (ctx->empty_vao)

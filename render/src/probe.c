@@ -666,7 +666,8 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     glm_frustum_planes(vp, planes);
     /* The frame budget for refreshing probes:
      * at most max_faces_per_frame faces re-captured a frame, the probes taking turns from a
-     * start that moves every frame. A probe's first, complete capture is never held back. */
+     * start that moves every frame. A probe's first, complete capture is held back only when
+     * the caller asked to split them (split_captures). */
     int budget = s->reflection.max_faces_per_frame, spent = 0, depth_fresh = 0;
     int start = (int)(s->frame % s->probe_count);
     for (int k = 0; k < s->probe_count; k++) {
@@ -749,10 +750,12 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         int faces = faces_to_capture(s, p, u, every);
         if (!faces)
             continue;
-        if (faces != 0x3f && budget > 0) {
+        if (budget > 0 && (faces != 0x3f || s->reflection.split_captures)) {
             int n = __builtin_popcount((unsigned)faces);
-            if (spent + n > budget)
+            if (spent + n > budget && (faces != 0x3f || spent > 0)) {
+                stats->probes_held++;
                 continue; /* its turn comes in a later frame */
+            }
             spent += n;
         }
         float far_m = capture_far(p->centre, bmin, bmax);

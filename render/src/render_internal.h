@@ -142,9 +142,10 @@ struct rd_context {
     } adaptive;
     unsigned empty_vao;
 
-    rd_target hdr;     /* scene radiance at supersampled size */
-    rd_target display; /* RGBA8 tone-mapped output */
-    rd_target linear;  /* RGBA32F exposed radiance at output size (for EXR) */
+    rd_target hdr;      /* scene radiance at supersampled size */
+    rd_target display;  /* RGBA8 tone-mapped output */
+    rd_target composed; /* RGBA8 image from the caller (rd_present_rgba8) */
+    rd_target linear;   /* RGBA32F exposed radiance at output size (for EXR) */
     int out_width, out_height, has_frame;
     rd_view frame_view;      /* the last rendered view, for rd_read_linear */
     float frame_exposure_ev; /* the EV it was resolved with (rd_exposure_resolve) */

@@ -51,6 +51,9 @@ static rd_result validate_view(const rd_context *ctx, const rd_view *v, int *sam
         return rd_fail(RD_ERR_INVALID_ARGUMENT,
                        "adaptive supersampling threshold %g is outside [0, 1]",
                        (double)v->adaptive_threshold);
+    if (!(fabsf(v->jitter[0]) < 1.0f && fabsf(v->jitter[1]) < 1.0f))
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "jitter (%g, %g) is not under a pixel",
+                       (double)v->jitter[0], (double)v->jitter[1]);
     *samples = s;
     return RD_OK;
 }

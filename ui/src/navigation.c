@@ -2,8 +2,10 @@
 #include "ui/navigation.h"
 
 #include <math.h>
+#include <stddef.h>
 
 #define DEG (3.14159265358979323846 / 180.0)
+#define UI_ORBIT_MIN_ARM_MM 100.0
 
 static double clampd(double v, double lo, double hi)
 {
@@ -155,6 +157,30 @@ void ui_walk_look(ui_walk *w, double dx_px, double dy_px)
 
 int ui_walk_move(ui_walk *w, const app_room_plan *plan, double forward_mm, double right_mm)
 {
+    return ui_walk_move_among(w, plan, NULL, 0, forward_mm, right_mm);
+}
+
+int ui_walk_point_free(const app_room_plan *plan, const ui_obstacle *obstacles, int count, double x,
+                       double y, double radius)
+{
+    if (!ui_plan_point_free(plan, x, y, radius))
+        return 0;
+    for (int i = 0; i < count; i++) {
+        const ui_obstacle *o = &obstacles[i];
+        /* The point in the rectangle's frame; its distance to the rectangle is the length of
+         * the part of |local| beyond the half sides (0 inside). */
+        double c = cos(o->angle_deg * DEG), s = sin(o->angle_deg * DEG);
+        double dx = x - o->centre[0], dy = y - o->centre[1];
+        double lx = fabs(c * dx + s * dy) - o->half[0], ly = fabs(-s * dx + c * dy) - o->half[1];
+        if ((lx <= 0 && ly <= 0) || hypot(fmax(lx, 0), fmax(ly, 0)) < radius)
+            return 0;
+    }
+    return 1;
+}
+
+int ui_walk_move_among(ui_walk *w, const app_room_plan *plan, const ui_obstacle *obstacles,
+                       int count, double forward_mm, double right_mm)
+{
     double sy = sin(w->yaw_deg * DEG), cy = cos(w->yaw_deg * DEG);
     double dx = forward_mm * sy + right_mm * cy, dy = forward_mm * cy - right_mm * sy;
     double len = hypot(dx, dy);
@@ -167,16 +193,174 @@ int ui_walk_move(ui_walk *w, const app_room_plan *plan, double forward_mm, doubl
     int full = 1;
     for (int i = 0; i < steps; i++) {
         double x = w->eye[0], y = w->eye[1];
-        if (ui_plan_point_free(plan, x + sx, y + syy, UI_WALK_RADIUS_MM)) {
+        if (ui_walk_point_free(plan, obstacles, count, x + sx, y + syy, UI_WALK_RADIUS_MM)) {
             w->eye[0] = x + sx;
             w->eye[1] = y + syy;
             continue;
         }
         full = 0;
-        if (ui_plan_point_free(plan, x + sx, y, UI_WALK_RADIUS_MM))
+        if (ui_walk_point_free(plan, obstacles, count, x + sx, y, UI_WALK_RADIUS_MM))
             w->eye[0] = x + sx;
-        else if (ui_plan_point_free(plan, x, y + syy, UI_WALK_RADIUS_MM))
+        else if (ui_walk_point_free(plan, obstacles, count, x, y + syy, UI_WALK_RADIUS_MM))
             w->eye[1] = y + syy;
     }
     return full;
+}
+
+static double room_height(const app_room_plan *plan)
+{
+    return plan->height_mm > 0 ? plan->height_mm : 2500;
+}
+
+int ui_room_point_free(const app_room_plan *plan, const double p[3], double margin)
+{
+    return isfinite(p[2]) && p[2] >= margin && p[2] <= room_height(plan) - margin &&
+           ui_plan_point_free(plan, p[0], p[1], margin);
+}
+
+/* The nearest point of segment ab to (x, y) moved inward by margin along the wall's inner
+ * normal (the plan runs counter-clockwise, so the interior is on the left of a -> b). */
+static void inset_nearest(const app_point2 *a, const app_point2 *b, double x, double y,
+                          double margin, double out[2])
+{
+    double ex = b->x - a->x, ey = b->y - a->y, len = hypot(ex, ey);
+    double t = len > 0 ? clampd(((x - a->x) * ex + (y - a->y) * ey) / (len * len), 0, 1) : 0;
+    double nx = len > 0 ? -ey / len : 0, ny = len > 0 ? ex / len : 0;
+    out[0] = a->x + t * ex + nx * margin;
+    out[1] = a->y + t * ey + ny * margin;
+}
+
+int ui_room_clamp_point(const app_room_plan *plan, double p[3], double margin)
+{
+    if (ui_room_point_free(plan, p, margin) || plan->corner_count < 3)
+        return 0;
+    double h = room_height(plan), q[3] = {p[0], p[1], clampd(p[2], margin, h - margin)};
+    if (h < 2 * margin || !isfinite(q[2]))
+        q[2] = h / 2;
+    if (!ui_plan_point_free(plan, q[0], q[1], margin)) {
+        /* Candidates: each wall's nearest point pushed in by the margin (a little more, so
+         * the next wall's margin at a corner is met too); the nearest free one wins. */
+        double best = INFINITY, bx = q[0], by = q[1];
+        int n = plan->corner_count;
+        for (int i = 0; i < n; i++) {
+            for (double k = 1.001; k < 4; k *= 1.5) {
+                double c[2];
+                inset_nearest(&plan->corners[i], &plan->corners[(i + 1) % n], p[0], p[1],
+                              margin * k, c);
+                double d = hypot(c[0] - p[0], c[1] - p[1]);
+                if (d < best && ui_plan_point_free(plan, c[0], c[1], margin)) {
+                    best = d;
+                    bx = c[0];
+                    by = c[1];
+                    break;
+                }
+            }
+        }
+        /* And each corner of the inset polygon: past a convex corner the nearest free point
+         * is there, where both walls' margins meet (offset by the normals' sum over
+         * 1 + n1.n2, the miter). */
+        for (int i = 0; i < n; i++) {
+            const app_point2 *a = &plan->corners[(i + n - 1) % n], *c = &plan->corners[i],
+                             *b = &plan->corners[(i + 1) % n];
+            double l1 = hypot(c->x - a->x, c->y - a->y), l2 = hypot(b->x - c->x, b->y - c->y);
+            if (!(l1 > 0 && l2 > 0))
+                continue;
+            double n1[2] = {-(c->y - a->y) / l1, (c->x - a->x) / l1};
+            double n2[2] = {-(b->y - c->y) / l2, (b->x - c->x) / l2};
+            double k = 1 + n1[0] * n2[0] + n1[1] * n2[1];
+            if (k < 1e-6)
+                continue;
+            double m = margin * 1.001 / k;
+            double v[2] = {c->x + (n1[0] + n2[0]) * m, c->y + (n1[1] + n2[1]) * m};
+            double d = hypot(v[0] - p[0], v[1] - p[1]);
+            if (d < best && ui_plan_point_free(plan, v[0], v[1], margin)) {
+                best = d;
+                bx = v[0];
+                by = v[1];
+            }
+        }
+        if (!isfinite(best))
+            return 0; /* no interior that wide */
+        q[0] = bx;
+        q[1] = by;
+    }
+    int moved = q[0] != p[0] || q[1] != p[1] || q[2] != p[2];
+    p[0] = q[0];
+    p[1] = q[1];
+    p[2] = q[2];
+    return moved;
+}
+
+void ui_orbit_eye_inside(const ui_orbit *o, const app_room_plan *plan, double eye[3],
+                         double target[3])
+{
+    for (int k = 0; k < 3; k++)
+        target[k] = o->target[k];
+    ui_room_clamp_point(plan, target, UI_CAMERA_MARGIN_MM);
+    ui_orbit shifted = *o;
+    for (int k = 0; k < 3; k++)
+        shifted.target[k] = target[k];
+    ui_orbit_eye(&shifted, eye);
+    if (!ui_room_point_free(plan, target, UI_CAMERA_MARGIN_MM))
+        return; /* a room too small for the margin: nothing to keep inside */
+    /* The arm from the target to the eye, cut at its first point outside: steps of at most 20
+     * mm find the wall, then bisection places the eye within a millimetre of it. A wall thinner
+     * than a step cannot be skipped, as the room is one polygon. */
+    double d = o->distance_mm, dir[3];
+    for (int k = 0; k < 3; k++)
+        dir[k] = (eye[k] - target[k]) / d;
+    int steps = (int)ceil(d / 20.0);
+    double free_t = 0;
+    for (int i = 1; i <= steps; i++) {
+        double t = d * i / steps,
+               q[3] = {target[0] + dir[0] * t, target[1] + dir[1] * t, target[2] + dir[2] * t};
+        if (!ui_room_point_free(plan, q, UI_CAMERA_MARGIN_MM)) {
+            double lo = free_t, hi = t;
+            while (hi - lo > 1) {
+                double mid = (lo + hi) / 2,
+                       m[3] = {target[0] + dir[0] * mid, target[1] + dir[1] * mid,
+                               target[2] + dir[2] * mid};
+                if (ui_room_point_free(plan, m, UI_CAMERA_MARGIN_MM))
+                    lo = mid;
+                else
+                    hi = mid;
+            }
+            for (int k = 0; k < 3; k++)
+                eye[k] = target[k] + dir[k] * lo;
+            /* The target at the margin with the arm pointing out: the eye stays, and the point
+             * looked at moves ahead along the same view so the two never meet. */
+            if (lo < UI_ORBIT_MIN_ARM_MM)
+                for (int k = 0; k < 3; k++)
+                    target[k] = eye[k] - dir[k] * UI_ORBIT_MIN_ARM_MM;
+            return;
+        }
+        free_t = t;
+    }
+}
+
+ui_walk ui_walk_from_view(const app_room_plan *plan, const ui_obstacle *obstacles, int count,
+                          const double eye[3], const double target[3])
+{
+    ui_walk w = ui_walk_start(plan);
+    double dx = target[0] - eye[0], dy = target[1] - eye[1];
+    if (hypot(dx, dy) > 0)
+        w.yaw_deg = atan2(dx, dy) / DEG;
+    w.pitch_deg = 0;
+    w.eye[2] = fmin(UI_EYE_HEIGHT_MM, room_height(plan) - UI_CAMERA_MARGIN_MM);
+    /* Under the eye if free, else the nearest free point on rings around it. */
+    if (ui_walk_point_free(plan, obstacles, count, eye[0], eye[1], UI_WALK_RADIUS_MM)) {
+        w.eye[0] = eye[0];
+        w.eye[1] = eye[1];
+        return w;
+    }
+    for (double r = 50; r < 20000; r += 50)
+        for (int a = 0; a < 72; a++) {
+            double x = eye[0] + r * cos(a * 5 * DEG), y = eye[1] + r * sin(a * 5 * DEG);
+            if (ui_walk_point_free(plan, obstacles, count, x, y, UI_WALK_RADIUS_MM)) {
+                w.eye[0] = x;
+                w.eye[1] = y;
+                return w;
+            }
+        }
+    return w; /* nowhere free: the room's own start */
 }

@@ -40,15 +40,12 @@ void planner_set_quality(planner *p, int index)
     if (index < 0 || index > 3)
         return;
     p->quality = index;
-    const app_quality *q = app_quality_find(ui_quality_names[index]);
-    if (q && p->scene_ready)
-        app_quality_apply(q, p->scene.scene);
-    /* Draft and interactive keep the frame budget by rendering fewer pixels; final and print
-     * show every pixel and take the time they need. */
-    p->adaptive_scale = index <= 1;
+    /* The moving view renders at the live preset and fewer pixels to keep the frame budget;
+     * the chosen preset is what the still view is refined to (planner_live.c). */
     p->budget_ms = index == 0 ? 25.0f : 33.0f;
-    if (!p->adaptive_scale)
-        p->render_scale = 1.0f;
+    p->adaptive_scale = 1;
+    p->live.applied = -1; /* a rebuilt scene holds the renderer's defaults */
+    p->live.serial++;
 }
 
 void planner_jump_to_camera(planner *p, int index)
@@ -133,18 +130,6 @@ static int open_project(planner *p, const ui_options *o)
     return 0;
 }
 
-/* Moves the render scale towards the frame budget: the 3D view is the frame's cost, and its
- * cost is close to proportional to its pixels on llvmpipe. */
-static void adapt_scale(planner *p, float render_ms)
-{
-    if (!p->adaptive_scale || render_ms <= 0)
-        return;
-    float want = p->budget_ms * 0.8f; /* leave room for the panels and the swap */
-    float s = p->render_scale * sqrtf(want / render_ms);
-    s = p->render_scale + 0.3f * (s - p->render_scale); /* damped: no flicker */
-    p->render_scale = s < 0.35f ? 0.35f : s > 1.0f ? 1.0f : s;
-}
-
 static int frame(planner *p)
 {
     int fw, fh;
@@ -159,24 +144,17 @@ static int frame(planner *p)
     planner_layout_frame(p, fw, fh); /* window_panes.c: the panes for this size */
     planner_handle_input(p, dt);
     planner_animate(p, p->fixed_dt > 0 ? p->fixed_dt : dt);
+    planner_camera_sync(p);
 
-    /* The 3D view fills its pane (the whole window while presenting), nothing more. */
+    /* The 3D view fills its pane (the whole window while presenting): moving frames at a
+     * reduced scale, then the still view refined (planner_live.c). */
     ui_rect pane = planner_view_rect(p);
     int vw = (int)pane.w, vh = (int)pane.h;
-    int rw = (int)lroundf(vw * p->render_scale), rh = (int)lroundf(vh * p->render_scale);
+    int rw = 0, rh = 0;
     float render_ms = 0;
-    if (vw > 0 && vh > 0 && p->scene_ready) {
-        rd_view v;
-        planner_view(p, rw < 1 ? 1 : rw, rh < 1 ? 1 : rh, &v);
-        double t0 = glfwGetTime();
-        if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK ||
-            rd_present_rect(p->ctx, fw, fh, (int)pane.x, (int)pane.y, vw, vh) != RD_OK) {
-            fprintf(stderr, "tessera: rendering the 3D view failed: %s\n", rd_last_error());
-            return 1;
-        }
-        rd_finish(p->ctx);
-        render_ms = (float)((glfwGetTime() - t0) * 1e3);
-    }
+    if (vw > 0 && vh > 0 && p->scene_ready &&
+        planner_live_frame(p, fw, fh, pane, &render_ms, &rw, &rh))
+        return 1;
 
     ui_gui_new_frame();
     if (p->presenting) {
@@ -188,6 +166,8 @@ static int frame(planner *p)
             planner_plan_frame(p, fw, fh);
         if (vw > 0)
             planner_findings_3d(p, fw, fh);
+        if (vw > 0)
+            planner_live_overlay(p, pane);
         planner_draw_panels(p, fw, fh);
         planner_status_bar(p, now);
     }
@@ -201,15 +181,21 @@ static int frame(planner *p)
     int i = (int)(p->frame_count % UI_FRAME_HISTORY);
     p->frame_ms[i] = (float)(dt * 1e3);
     p->render_ms[i] = render_ms;
-    if (p->frame_log && p->frame_count > 0)
-        fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d\n", p->frame_count,
-                ui_quality_names[p->quality],
+    if (p->frame_log && p->frame_count > 0) {
+        double eye[3], target[3];
+        planner_view_points(p, eye, target);
+        fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d,%s,%.3f,%.0f,%.0f,%.0f\n",
+                p->frame_count, ui_quality_names[p->quality],
                 p->dragging              ? "drag"
                 : planner_job_running(p) ? "job"
                                          : "idle",
-                dt * 1e3, render_ms, p->render_scale, rw, rh);
+                dt * 1e3, render_ms, p->render_scale, rw, rh,
+                !p->live.still                  ? "moving"
+                : ui_live_done(&p->live.ladder) ? "still"
+                                                : "refining",
+                p->live.still ? ui_live_progress(&p->live.ladder) : 0.0f, eye[0], eye[1], eye[2]);
+    }
     p->frame_count++;
-    adapt_scale(p, render_ms);
     return 0;
 }
 
@@ -218,6 +204,7 @@ int ui_run(const ui_options *o)
     planner p;
     memset(&p, 0, sizeof p);
     p.render_scale = 1.0f;
+    p.live.applied = -1;
     p.exit_code = 0;
     char err[1024];
     p.fixed_dt = o->script ? 1.0 / 30.0 : 0.0;
@@ -232,7 +219,8 @@ int ui_run(const ui_options *o)
             ui_script_free(&p.script);
             return 1;
         }
-        fprintf(p.frame_log, "frame,quality,state,frame_ms,render_ms,render_scale,width,height\n");
+        fprintf(p.frame_log, "frame,quality,state,frame_ms,render_ms,render_scale,width,height,"
+                             "live,progress,eye_x,eye_y,eye_z\n");
     }
     glfwSetErrorCallback(glfw_error);
     if (!glfwInit()) {
@@ -287,7 +275,12 @@ int ui_run(const ui_options *o)
     p.last_time = glfwGetTime();
     rc = 0;
     while (!p.quit && !glfwWindowShouldClose(p.window)) {
-        glfwPollEvents();
+        /* A finished still view waits for input instead of drawing the same frame again (the
+         * machine is shared; a script keeps its own pace). */
+        if (planner_live_idle(&p) && !p.script.count)
+            glfwWaitEventsTimeout(0.1);
+        else
+            glfwPollEvents();
         if (frame(&p)) {
             rc = 1;
             break;
@@ -301,6 +294,7 @@ done:
     planner_files_free(&p);
     planner_doc_close(&p);
     planner_tiles_free(&p);
+    planner_live_free(&p);
     ui_catalog_browser_close(&p.browser);
     ui_gui_shutdown();
     if (p.scene_ready)

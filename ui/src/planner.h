@@ -11,6 +11,8 @@
 #include "catalog_browser.h"
 #include "drag_drop.h"
 #include "fixture_drag.h"
+#include "live_accum.h"
+#include "live_view.h"
 #include "plan_draw.h"
 #include "panel_layout.h"
 #include "quantities_panel.h"
@@ -42,6 +44,7 @@ typedef struct planner {
     ui_orbit orbit;
     ui_walk walk;
     int camera;         /* stored viewpoint last jumped to, -1 = none */
+    int camera_mode;    /* the mode the cameras were last set up for (planner_camera.c) */
     float render_scale; /* 3D view pixels per window pixel, adapted to the frame budget */
     int adaptive_scale; /* 1: render_scale follows the frame budget */
     float budget_ms;    /* the frame budget the adaptive scale aims for */
@@ -52,6 +55,26 @@ typedef struct planner {
     long frame_count;
     double last_time;
     FILE *frame_log;
+
+    /* The live 3D view (planner_live.c): moving frames at a reduced scale, then the still view
+     * refined in strips (live_view.h) into the accumulated full-resolution image. */
+    struct {
+        int still;           /* 1: the view has stood still since the ladder began */
+        int applied;         /* the preset whose settings the scene holds, -1 = none */
+        int serial;          /* bumped when the scene or the quality changes */
+        double key[12];      /* what the last frame showed: eye, target, size, ... */
+        int last_w, last_h;  /* the last moving render's size */
+        unsigned char *last; /* and its pixels (RGBA8, last_w x last_h) */
+        size_t last_size;
+        float last_ms; /* and its cost */
+        float rest_ms; /* the frame without its 3D view, smoothed (the strips' budget) */
+        ui_live ladder;
+        ui_accum accum;
+        unsigned char *strip; /* the strip read back */
+        size_t strip_size;
+        int window_w, window_h; /* where this frame presents: the window's size */
+        ui_rect pane;           /* and the 3D view's pane in it */
+    } live;
 
     ui_catalog_browser browser;
 
@@ -260,6 +283,22 @@ void planner_tile_panel(planner *p, int width, int height);
 void planner_elevation_frame(planner *p, int width, int height);
 int planner_tile_action(planner *p, const ui_action *a);
 void planner_tiles_free(planner *p);
+
+/* planner_live.c: draws this frame's 3D view (fw x fh window pixels); *render_ms gets its
+ * cost, *rw x *rh its render size. 0 ok, 1 the renderer failed (message printed). */
+int planner_live_frame(planner *p, int window_w, int window_h, ui_rect pane, float *render_ms,
+                       int *rw, int *rh);
+/* The refinement indicator over the 3D view while a still view is being refined. */
+void planner_live_overlay(planner *p, ui_rect pane);
+/* 1 when the still view is complete (the frame loop may wait for events). */
+int planner_live_idle(const planner *p);
+void planner_live_free(planner *p);
+/* planner_camera.c: switches orbit and walk; walking starts from the view on screen. */
+void planner_set_mode(planner *p, int mode);
+/* Catches a mode changed by assignment (a widget, a key) and sets its camera up. */
+void planner_camera_sync(planner *p);
+/* Walks (mm) among the walls and the fixtures; 1 when the whole move was made. */
+int planner_walk_move(planner *p, double forward_mm, double right_mm);
 
 /* planner.c */
 /* The renderer's view of what the window shows, at a size, with the quality's supersampling. */

@@ -3,11 +3,12 @@
  * (shift: 2.5 m/s), Tab switches orbit and walk, 1-4 pick the quality, F1-F9 fly to stored
  * viewpoints, V switches the 3D and the plan view, Ctrl+Z undo, Ctrl+Y (or Ctrl+Shift+Z) redo,
  * Ctrl+O, Ctrl+S, Ctrl+Shift+S,
- * Ctrl+P, Ctrl+E and Esc as planner_actions.h says, Delete removes the selected fixture. Presentation: P shows or hides the UI, T starts
- * or stops the tour, R the turntable, F11 fullscreen, F12 a print-quality screenshot. The events
- * come from the frame's share of the input queue (gui.h, input_queue.h): Dear ImGui sees every one
- * of them; the planner acts only on those the widgets do not want (a key while no text field has
- * the keyboard, the wheel and the buttons while the pointer is over no panel).
+ * Ctrl+P, Ctrl+E and Esc as planner_actions.h says, Delete removes the selected fixture.
+ * Presentation: P shows or hides the UI, T starts or stops the tour, R the turntable, F11
+ * fullscreen, F12 a print-quality screenshot. The events come from the frame's share of the input
+ * queue (gui.h, input_queue.h): Dear ImGui sees every one of them; the planner acts only on those
+ * the widgets do not want (a key while no text field has the keyboard, the wheel and the buttons
+ * while the pointer is over no panel).
  */
 #include "planner.h"
 #include "planner_actions.h"
@@ -173,11 +174,8 @@ static void walk_keys(planner *p, double dt)
         r += speed * dt;
     if (glfwGetKey(w, GLFW_KEY_A) == GLFW_PRESS)
         r -= speed * dt;
-    if (f != 0 || r != 0) {
-        app_point2 box[4];
-        app_room_plan fallback;
-        ui_walk_move(&p->walk, planner_plan(p, box, &fallback), f, r);
-    }
+    if (f != 0 || r != 0)
+        planner_walk_move(p, f, r);
 }
 
 int planner_input_live(const planner *p)

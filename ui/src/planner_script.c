@@ -100,13 +100,9 @@ static int apply(planner *p, const ui_action *a)
     case UI_ACT_MODE:
         p->mode = strcmp(a->text, "walk") ? UI_MODE_ORBIT : UI_MODE_WALK;
         return 0;
-    case UI_ACT_WALK: {
-        app_point2 box[4];
-        app_room_plan fallback;
-        p->mode = UI_MODE_WALK;
-        ui_walk_move(&p->walk, planner_plan(p, box, &fallback), a->a * share, a->b * share);
+    case UI_ACT_WALK:
+        planner_walk_move(p, a->a * share, a->b * share);
         return 0;
-    }
     case UI_ACT_CAMERA: {
         int i = find_camera(p, a->text);
         if (i < 0) {

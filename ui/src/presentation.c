@@ -18,15 +18,19 @@
 
 void planner_view_points(const planner *p, double eye[3], double target[3])
 {
+    app_point2 box[4];
+    app_room_plan fallback;
+    const app_room_plan *plan = planner_plan(p, box, &fallback);
     if (p->flight.active) {
         ui_view_blend(p->flight.from_eye, p->flight.from_target, p->flight.to_eye,
                       p->flight.to_target, p->flight.elapsed / p->flight.duration, eye, target);
+        /* A straight flight across an L-shaped room's inner corner would leave it. */
+        ui_room_clamp_point(plan, eye, UI_CAMERA_MARGIN_MM);
     } else if (p->mode == UI_MODE_WALK) {
         memcpy(eye, p->walk.eye, 3 * sizeof *eye);
         ui_walk_target(&p->walk, target);
     } else {
-        ui_orbit_eye(&p->orbit, eye);
-        memcpy(target, p->orbit.target, 3 * sizeof *target);
+        ui_orbit_eye_inside(&p->orbit, plan, eye, target);
     }
 }
 
@@ -130,7 +134,6 @@ int planner_print_shot(planner *p, const char *path)
     w *= 2;
     h *= 2;
     const app_quality *print = app_quality_find("print");
-    const app_quality *now = app_quality_find(ui_quality_names[p->quality]);
     if (print)
         app_quality_apply(print, p->scene.scene);
     int saved = p->quality;
@@ -154,8 +157,9 @@ int planner_print_shot(planner *p, const char *path)
         rc = 0;
     }
     free(px);
-    if (now)
-        app_quality_apply(now, p->scene.scene);
+    /* The live view puts its own settings back (planner_live.c). */
+    p->live.applied = -1;
+    p->live.serial++;
     return rc;
 }
 

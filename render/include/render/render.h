@@ -281,6 +281,10 @@ typedef struct rd_reflection_defaults {
     float proxy_min[3], proxy_max[3]; /* the box proxy (metres); all zero = the scene's bounds */
     int max_faces_per_frame; /* refreshes of probes already complete: at most this many faces
                                 a frame, probes taking turns; 0 = no limit */
+    int split_captures;      /* 1: first captures keep to max_faces_per_frame too (one probe a
+                                frame at least); probes held back are drawn unfinished and
+                                counted in rd_frame_stats.probes_held, so the caller can wait
+                                (the planner's still view). 0: a first capture is never held */
     /* Switches: RD_SWITCH_UNSET takes the renderer's default, named with each. */
     rd_switch planar_mirrors; /* ON: a flat mirror's probe is captured from the eye's mirror
                                  image, clipped at its plane, at the view's resolution (a planar
@@ -357,6 +361,7 @@ typedef struct rd_frame_stats {
     int self_traced_probes;   /* probes whose lookups trace their own parts (self_trace.c) */
     int self_triangles;       /* the triangles those traces hold */
     float exposure_ev;        /* the exposure the tone map used (auto_exposure: measured) */
+    int probes_held;          /* probes in view whose capture waits for a later frame's budget */
 } rd_frame_stats;
 rd_frame_stats rd_last_frame_stats(const rd_context *ctx);
 
@@ -428,6 +433,10 @@ typedef struct rd_view {
      * pixel s x s. */
     int adaptive;
     float adaptive_threshold;
+    /* Sub-pixel offset of the projection in output pixels (x right, y down), |jitter| < 1:
+     * successive renders at different offsets, averaged, supersample the view over time
+     * (temporal supersampling; the planner's still view). 0 = the pixel centres. */
+    float jitter[2];
 } rd_view;
 
 rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *view);
@@ -462,6 +471,11 @@ rd_result rd_present(rd_context *ctx, int window_width, int window_height);
  * top-left corner (a pane beside the caller's panels); the rest of the window is cleared. */
 rd_result rd_present_rect(rd_context *ctx, int window_width, int window_height, int x, int y,
                           int width, int height);
+/* RD_BACKEND_ADOPT: the same for an image the caller composed (width x height RGBA8, top row
+ * first; the planner's accumulated still view), unscaled at (x, y) of the window, in window
+ * pixels from its top-left corner. */
+rd_result rd_present_rgba8(rd_context *ctx, int width, int height, const uint8_t *rgba,
+                           int window_width, int window_height, int x, int y);
 rd_result rd_read_window_rgba8(rd_context *ctx, int width, int height, uint8_t *out,
                                size_t out_size);
 

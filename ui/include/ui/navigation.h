@@ -56,6 +56,45 @@ int ui_walk_move(ui_walk *w, const app_room_plan *plan, double forward_mm, doubl
 /* 1 when (x, y) is inside the plan polygon and at least radius from each wall. */
 int ui_plan_point_free(const app_room_plan *plan, double x, double y, double radius);
 
+/* ---- cameras that stay in the room ---- */
+
+/* How close the orbit's eye may come to a wall, the floor or the ceiling. */
+#define UI_CAMERA_MARGIN_MM 150.0
+/* The walker's eye height. */
+#define UI_EYE_HEIGHT_MM 1600.0
+
+/* A fixture's plan footprint: a rectangle of half sides half[] about centre, its local x axis
+ * at angle_deg (app_fixture's). The walker keeps its radius from it. */
+typedef struct ui_obstacle {
+    double centre[2], half[2], angle_deg;
+} ui_obstacle;
+
+/* 1 when point p lies inside the room with the margin: in the plan polygon at least margin
+ * from each wall, and between margin above the floor and margin under the ceiling. */
+int ui_room_point_free(const app_room_plan *plan, const double p[3], double margin);
+/* Moves p to the nearest point that is free with the margin (p unchanged when it is, or when
+ * the room has no such point); returns 1 when it moved. */
+int ui_room_clamp_point(const app_room_plan *plan, double p[3], double margin);
+/* The orbit's eye kept inside the room: the target clamped in, then the eye on its ray from
+ * the target no farther than the first wall, floor or ceiling (less the margin). The orbit's
+ * own distance is what the user asked for; it comes back when the view turns away from the
+ * wall. target gets the (clamped) point looked at, moved ahead along the view when the wall
+ * leaves the arm shorter than 100 mm (eye and target never meet). */
+void ui_orbit_eye_inside(const ui_orbit *o, const app_room_plan *plan, double eye[3],
+                         double target[3]);
+
+/* 1 when (x, y) is free for the walker: ui_plan_point_free and at least radius from every
+ * obstacle's rectangle. */
+int ui_walk_point_free(const app_room_plan *plan, const ui_obstacle *obstacles, int count, double x,
+                       double y, double radius);
+/* ui_walk_move that also keeps the walker radius away from the obstacles. */
+int ui_walk_move_among(ui_walk *w, const app_room_plan *plan, const ui_obstacle *obstacles,
+                       int count, double forward_mm, double right_mm);
+/* A walker that starts from a view: standing under its eye (or at the nearest free point) at
+ * UI_EYE_HEIGHT_MM, facing the view's heading, level. */
+ui_walk ui_walk_from_view(const app_room_plan *plan, const ui_obstacle *obstacles, int count,
+                          const double eye[3], const double target[3]);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,251 @@
+/* The live 3D view: while the view or a fixture moves, one render a frame at the scale that
+ * holds the frame budget; once it stands still, the ladder of live_view.h renders the full
+ * resolution a strip a frame at sub-pixel offsets, averaged by live_accum.h, switching the
+ * scene to dearer presets step by step. No frame renders more than a strip's budget, so
+ * final and print quality never freeze the window. */
+#include "planner.h"
+
+#include "gui.h"
+#include "render/ui_texture.h"
+
+#include <GLFW/glfw3.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* What a still frame's strip may cost (render and read back): the frame's 100 ms ceiling less
+ * the rest of the frame (the panels, the present, the swap: about 5-10 ms alone, several times
+ * that on a loaded machine, so it is measured), less room for the strip's estimate to be off
+ * by a third; at most STRIP_BUDGET_MS, at least STRIP_MIN_MS. */
+#define FRAME_CEILING_MS 100.0f
+#define STRIP_BUDGET_MS 55.0f
+#define STRIP_MIN_MS 10.0f
+/* Probe faces a still frame may capture: a probe's six faces at 256 texels cost about a
+ * strip's budget on llvmpipe (docs/benchmarks.md, "Reflection probes"). */
+#define STILL_FACES_PER_FRAME 6
+#define SCALE_FLOOR 0.35f
+
+/* The scene takes preset `index`'s settings. Probes are captured on change, never every
+ * frame (final and print's policy for single renders): a still view's eye does not move, and
+ * a moving view keeps its budget. Presets with no face budget get one, and first captures
+ * split too (one probe a frame): a change of preset makes every probe anew, which in one
+ * frame takes a second at final on llvmpipe. A moving view shows a probe still waiting for a
+ * frame or two; the still view waits for it (probes_held). */
+static void apply_preset(planner *p, int index)
+{
+    if (p->live.applied == index)
+        return;
+    const app_quality *q = app_quality_find(ui_quality_names[index]);
+    if (!q)
+        return;
+    app_quality_apply(q, p->scene.scene);
+    rd_reflection_defaults d = rd_scene_reflection_defaults(p->scene.scene);
+    if (d.update == RD_PROBE_EVERY_FRAME)
+        d.update = RD_PROBE_ON_CHANGE;
+    if (d.max_faces_per_frame == 0)
+        d.max_faces_per_frame = STILL_FACES_PER_FRAME;
+    d.split_captures = 1;
+    rd_scene_set_reflection_defaults(p->scene.scene, &d);
+    p->live.applied = index;
+}
+
+/* Everything that changes the picture: a difference from the last frame means moving. */
+static void view_key(const planner *p, int fw, int fh, double key[12])
+{
+    planner_view_points(p, key, key + 3);
+    key[6] = fw;
+    key[7] = fh;
+    key[8] = p->quality;
+    key[9] = p->live.serial;
+    key[10] = p->camera >= 0 ? p->project.cameras[p->camera].fov_deg : 60.0;
+    key[11] = p->project.render.exposure_ev;
+}
+
+/* Moves the render scale towards the frame budget: the 3D view is the frame's cost, and its
+ * cost is close to proportional to its pixels on llvmpipe. */
+static void adapt_scale(planner *p, float render_ms)
+{
+    if (render_ms <= 0)
+        return;
+    float want = p->budget_ms * 0.8f; /* leave room for the panels and the swap */
+    float s = p->render_scale * sqrtf(want / render_ms);
+    s = p->render_scale + 0.3f * (s - p->render_scale); /* damped: no flicker */
+    p->render_scale = s < SCALE_FLOOR ? SCALE_FLOOR : s > 1.0f ? 1.0f : s;
+}
+
+static int render_failed(void)
+{
+    fprintf(stderr, "tessera: rendering the 3D view failed: %s\n", rd_last_error());
+    return 1;
+}
+
+/* The last render into the 3D view's pane. */
+static rd_result present_view(planner *p)
+{
+    const ui_rect *r = &p->live.pane;
+    return rd_present_rect(p->ctx, p->live.window_w, p->live.window_h, (int)r->x, (int)r->y,
+                           (int)r->w, (int)r->h);
+}
+
+static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
+{
+    apply_preset(p, ui_live_moving_preset(p->quality));
+    /* Back from a still: start at the scale the last moving frames held. */
+    if (p->live.still && p->live.last_w > 0)
+        p->render_scale = (float)p->live.last_w / (float)fw;
+    p->live.still = 0;
+    *rw = (int)lroundf((float)fw * p->render_scale);
+    *rh = (int)lroundf((float)fh * p->render_scale);
+    *rw = *rw < 1 ? 1 : *rw;
+    *rh = *rh < 1 ? 1 : *rh;
+    rd_view v;
+    planner_view(p, *rw, *rh, &v);
+    v.supersample = 1;
+    double t0 = glfwGetTime();
+    if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK || present_view(p) != RD_OK)
+        return render_failed();
+    /* Kept for the still view's first picture: by the time the view stops, the context's
+     * last render may be a catalog thumbnail. */
+    size_t size = (size_t)*rw * (size_t)*rh * 4;
+    if (size > p->live.last_size) {
+        free(p->live.last);
+        p->live.last = malloc(size);
+        p->live.last_size = p->live.last ? size : 0;
+    }
+    if (p->live.last && rd_read_rgba8(p->ctx, p->live.last, size) != RD_OK)
+        return render_failed();
+    *render_ms = (float)((glfwGetTime() - t0) * 1e3);
+    p->live.last_w = *rw;
+    p->live.last_h = *rh;
+    p->live.last_ms = *render_ms;
+    adapt_scale(p, *render_ms);
+    return 0;
+}
+
+/* The view has just stopped: the still image starts as the last moving frame, scaled up. */
+static int begin_still(planner *p, int fw, int fh)
+{
+    p->live.still = 1;
+    float rows = p->live.last_h > 0 ? (float)p->live.last_h : (float)fh;
+    float px_scale = p->live.last_w > 0 ? (float)fw / (float)p->live.last_w : 1.0f;
+    ui_live_begin(&p->live.ladder, p->quality, p->live.last_ms / rows * px_scale);
+    if (ui_accum_resize(&p->live.accum, fw, fh)) {
+        fprintf(stderr, "tessera: out of memory for the still view\n");
+        return 1;
+    }
+    if (p->live.last)
+        ui_accum_start_from(&p->live.accum, p->live.last, p->live.last_w, p->live.last_h);
+    else
+        ui_accum_restart(&p->live.accum);
+    apply_preset(p, p->live.ladder.steps[0].preset);
+    return 0;
+}
+
+/* The strip budget from the rest of the last measured frame: frame_ms[n - 1] holds the length
+ * of frame n - 2 (the time between its start and the next), render_ms[n - 2] its 3D view. */
+static float strip_budget(planner *p)
+{
+    long n = p->frame_count;
+    if (n >= 2) {
+        float rest =
+            p->frame_ms[(n - 1) % UI_FRAME_HISTORY] - p->render_ms[(n - 2) % UI_FRAME_HISTORY];
+        if (rest > 0 && rest < 1000)
+            p->live.rest_ms =
+                p->live.rest_ms > 0 ? p->live.rest_ms + 0.2f * (rest - p->live.rest_ms) : rest;
+    }
+    float b = (FRAME_CEILING_MS - p->live.rest_ms) * 0.75f;
+    return b > STRIP_BUDGET_MS ? STRIP_BUDGET_MS : b < STRIP_MIN_MS ? STRIP_MIN_MS : b;
+}
+
+static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
+{
+    ui_live *l = &p->live.ladder;
+    *rw = fw;
+    *rh = fh;
+    p->render_scale = 1.0f;
+    if (!ui_live_done(l)) {
+        int rows = ui_live_strip_rows(l, strip_budget(p), fh);
+        size_t size = (size_t)fw * (size_t)rows * 4;
+        if (size > p->live.strip_size) {
+            free(p->live.strip);
+            p->live.strip = malloc(size);
+            p->live.strip_size = p->live.strip ? size : 0;
+            if (!p->live.strip) {
+                fprintf(stderr, "tessera: out of memory for the still view\n");
+                return 1;
+            }
+        }
+        rd_view v;
+        planner_view(p, fw, rows, &v);
+        v.supersample = 1;
+        v.adaptive = 0;
+        v.crop_x = 0;
+        v.crop_y = l->row;
+        v.full_width = fw;
+        v.full_height = fh;
+        ui_jitter(l->pass, v.jitter);
+        double t0 = glfwGetTime();
+        if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK ||
+            rd_read_rgba8(p->ctx, p->live.strip, size) != RD_OK)
+            return render_failed();
+        rd_frame_stats st = rd_last_frame_stats(p->ctx);
+        int busy = st.probes_held > 0;
+        if (!busy)
+            ui_accum_add(&p->live.accum, 0, l->row, fw, rows, p->live.strip);
+        *render_ms = (float)((glfwGetTime() - t0) * 1e3);
+        if (ui_live_strip_done(l, rows, *render_ms, fh, busy)) {
+            apply_preset(p, l->steps[l->step].preset);
+            ui_accum_restart(&p->live.accum);
+        }
+    }
+    if (rd_present_rgba8(p->ctx, fw, fh, p->live.accum.image, p->live.window_w, p->live.window_h,
+                         (int)p->live.pane.x, (int)p->live.pane.y) != RD_OK)
+        return render_failed();
+    return 0;
+}
+
+int planner_live_frame(planner *p, int window_w, int window_h, ui_rect pane, float *render_ms,
+                       int *rw, int *rh)
+{
+    *render_ms = 0;
+    p->live.window_w = window_w;
+    p->live.window_h = window_h;
+    p->live.pane = pane;
+    int fw = (int)pane.w, fh = (int)pane.h; /* the view's pixels */
+    double key[12];
+    view_key(p, fw, fh, key);
+    int moving = memcmp(key, p->live.key, sizeof key) != 0 || p->fixture_drag.active;
+    memcpy(p->live.key, key, sizeof key);
+    if (moving || p->live.last_w == 0)
+        return moving_frame(p, fw, fh, render_ms, rw, rh);
+    if (!p->live.still && begin_still(p, fw, fh))
+        return 1;
+    return still_frame(p, fw, fh, render_ms, rw, rh);
+}
+
+void planner_live_overlay(planner *p, ui_rect pane)
+{
+    if (!p->live.still || ui_live_done(&p->live.ladder))
+        return;
+    const ui_live *l = &p->live.ladder;
+    const char *preset = ui_quality_names[l->steps[l->step].preset];
+    if (ui_gui_begin_overlay("##refining", pane.x + 12.0f, pane.y + pane.h - 40.0f, 0.5f))
+        ui_gui_text("refining to %s: %.0f %% (%s pass %d of %d)%s", ui_quality_names[p->quality],
+                    100.0f * ui_live_progress(l), preset, l->pass + 1, l->steps[l->step].passes,
+                    l->settling ? ", probes" : "");
+    ui_gui_end();
+}
+
+int planner_live_idle(const planner *p)
+{
+    return p->layout.pane_3d.w > 0 && p->live.still && ui_live_done(&p->live.ladder);
+}
+
+void planner_live_free(planner *p)
+{
+    ui_accum_free(&p->live.accum);
+    free(p->live.strip);
+    free(p->live.last);
+    p->live.strip = p->live.last = NULL;
+    p->live.strip_size = p->live.last_size = 0;
+}
