@@ -7,7 +7,7 @@
 /* The options every command that renders through the GPU renderer takes. */
 #define RENDER_SETTINGS                                                                            \
     "quality adaptive planar-mirrors room-probe exact-lamps self-reflections probe-resolution "    \
-    "shadows probes blur ambient backend "
+    "shadows probes blur ambient backend sky time "
 
 static const cli_command catalog_commands[] = {
     {.name = "search",
@@ -110,7 +110,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "output camera size supersample faces tile quality adaptive planar-mirrors "
-                "shadows probes blur ambient backend",
+                "shadows probes blur ambient backend sky time",
      .summary = "a 360-degree equirectangular panorama (GPano XMP) from six cube faces",
      .help = "  --size is the panorama's, twice as wide as high (default: 4096x2048).\n"},
     {.name = "video",
@@ -119,7 +119,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "output seconds fps size supersample tile quality adaptive planar-mirrors "
-                "shadows probes blur ambient backend",
+                "shadows probes blur ambient backend sky time",
      .summary = "a smooth path through the stored cameras: PNG frames, MP4 with ffmpeg",
      .help = "  Default: 8 seconds at 25 frames a second.\n"},
     {.name = "share",
@@ -216,7 +216,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "output camera size supersample samples threads seed png mask quality shadows "
-                "ambient",
+                "ambient sky time",
      .summary = "the ground truth: a CPU ray tracer (Embree) with the same shading"},
     {.name = "compare",
      .run = cli_cmd_compare,

@@ -43,8 +43,9 @@ typedef struct cli_options {
     rd_backend backend;
     rd_probe_update probes; /* the scene's default update policy; 0 = the project's */
     rd_blur_method blur;
-    int ambient; /* 0 the project's, 1 constant, 2 sh9 */
-    int shadows; /* 0 the preset's (or off), else rd_shadow_mode + 1 */
+    int ambient;            /* 0 the project's, 1 constant, 2 sh9 */
+    int shadows;            /* 0 the preset's (or off), else rd_shadow_mode + 1 */
+    const char *sky, *time; /* --sky overcast|clear, --time HH:MM: the project's daylight */
     int dpi, tile;
 
     /* Timing, video, reference. */
