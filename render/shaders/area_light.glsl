@@ -6,37 +6,59 @@
 // directional light, its portal's (zero: none).
 uniform vec3 u_light_half_width[MAX_LIGHTS];
 uniform vec3 u_light_half_height[MAX_LIGHTS];
+uniform int u_rect_count;             // the rectangle lights among them
+uniform int u_rect_index[MAX_LIGHTS]; // their indices
+
+// One edge's term of Lambert's polygon formula, angle(a, b) n.unit(a x b), for unit a and b:
+// theta / sin(theta) / (2 pi) by the rational fit of Hill and Heitz 2016 ("Real-time area lighting: a
+// journey from research to production", SIGGRAPH course, the LTC code's IntegrateEdge), so no
+// acos or atan: those cost llvmpipe more than the rest of a rectangle light together.
+float rect_edge(vec3 a, vec3 b, vec3 n)
+{
+    float x = dot(a, b), y = abs(x);
+    float v = (0.8543985 + (0.4965155 + 0.0145206 * y) * y) / (3.4175940 + (4.1616724 + y) * y);
+    float theta_over_sin = x > 0.0 ? v : 0.5 * inversesqrt(max(1.0 - x * x, 1e-7)) - v;
+    return dot(n, cross(a, b)) * theta_over_sin;
+}
+
+// Edge a -> b of the polygon clipped to n.x >= 0 (Sutherland-Hodgman, one edge at a time):
+// its part above the horizon, and where it leaves (exit) or enters (entry) the upper side.
+// The clipped polygon's closing edge runs along the horizon from the exit to the entry.
+// Selects, not branches: llvmpipe would run every side of them.
+float rect_clipped_edge(vec3 a, vec3 b, vec3 n, inout vec3 exit_p, inout vec3 entry_p)
+{
+    float da = dot(n, a), db = dot(n, b);
+    float dd = da - db;
+    vec3 x = a + (da / (dd != 0.0 ? dd : 1.0)) * (b - a);
+    float xl = length(x);
+    x = xl > 1e-20 ? x / xl : a;
+    bool in_a = da >= 0.0, in_b = db >= 0.0;
+    exit_p = in_a && !in_b ? x : exit_p;
+    entry_p = !in_a && in_b ? x : entry_p;
+    float t = rect_edge(in_a ? a : x, in_b ? b : x, n);
+    return in_a || in_b ? t : 0.0;
+}
 
 // The form factor (cosine-weighted solid angle over pi) of the rectangle (centre c, half edges
 // u and v, lighting the side `dir` points to) seen from p with unit normal n, clipped to p's
 // horizon. Lambert's polygon formula (Baum, Rushmeier and Winget 1989, eq. 4; Heitz et al.
-// 2016, "Real-time polygonal-light shading with linearly transformed cosines", eq. 11), the
-// edge angle from atan2, accurate where acos is not.
+// 2016, "Real-time polygonal-light shading with linearly transformed cosines", eq. 11). No
+// arrays: llvmpipe spills dynamically indexed arrays to memory, which made this ten times
+// dearer.
 float rect_form_factor(vec3 p, vec3 n, vec3 c, vec3 dir, vec3 u, vec3 v)
 {
     if (!(dot(p - c, dir) > 0.0))
         return 0.0;
-    vec3 corner[4] = vec3[4](c - u - v - p, c + u - v - p, c + u + v - p, c - u + v - p);
-    vec3 poly[5];
-    int m = 0;
-    // Sutherland-Hodgman against n.x >= 0: a quad cut by a plane keeps at most five corners.
-    for (int i = 0; i < 4; i++) {
-        vec3 a = corner[i], b = corner[(i + 1) % 4];
-        float da = dot(n, a), db = dot(n, b);
-        if (da >= 0.0)
-            poly[m++] = a;
-        if ((da >= 0.0) != (db >= 0.0))
-            poly[m++] = a + (da / (da - db)) * (b - a);
-    }
-    float sum = 0.0;
-    for (int i = 0; i < m; i++) {
-        vec3 a = poly[i], b = poly[(i + 1) % m];
-        vec3 axb = cross(a, b);
-        float s = length(axb);
-        if (s > 1e-20)
-            sum += atan(s, dot(a, b)) * dot(n, axb) / s;
-    }
-    return min(abs(sum) / 6.28318530718, 1.0);
+    // Unit corners: the clipped points lie on the great circles between them (normalised).
+    vec3 c0 = normalize(c - u - v - p), c1 = normalize(c + u - v - p), c2 = normalize(c + u + v - p),
+         c3 = normalize(c - u + v - p);
+    vec3 exit_p = vec3(0.0), entry_p = vec3(0.0);
+    float sum = rect_clipped_edge(c0, c1, n, exit_p, entry_p) +
+                rect_clipped_edge(c1, c2, n, exit_p, entry_p) +
+                rect_clipped_edge(c2, c3, n, exit_p, entry_p) +
+                rect_clipped_edge(c3, c0, n, exit_p, entry_p);
+    sum += rect_edge(exit_p, entry_p, n); // zero when nothing was clipped (both at the origin)
+    return min(abs(sum), 1.0); // the fit carries the 1 / (2 pi)
 }
 
 // The light's solid angle from p: area x cosine / distance^2 at its centre, at most 2 pi.

@@ -420,19 +420,8 @@ void main()
     for (int i = 0; i < u_light_count; i++) {
         vec3 L;
 #ifdef AREA_LIGHTS
-        if (u_light_type[i] == 3) { // a rectangle light (area_light.glsl)
-            vec2 t = rect_light_terms(i, u_light_position[i], u_light_direction[i], v_world, N, V,
-                                      u_mat_shininess, L);
-#ifdef HAS_SHADOWS
-            if (t.x > 0.0)
-                t *= shadow_visibility(i, 3, u_light_position[i], v_world, N, L);
-#endif
-            lit += t.x * c_d * u_light_diffuse[i];
-#ifndef NO_SPECULAR
-            lit += u_specular_scale * t.y * u_mat_specular * u_light_specular[i];
-#endif
-            continue;
-        }
+        if (u_light_type[i] == 3)
+            continue; // rectangle lights: their own loop below
 #endif
         float k = light_towards(i, v_world, N, L);
         float n_dot_l = dot(N, L);
@@ -451,6 +440,24 @@ void main()
                blinn_phong_power(dot(N, H), u_mat_shininess); // eq. 3-5
 #endif
     }
+#ifdef AREA_LIGHTS
+    // Rectangle lights (area_light.glsl), by a list of their own: a loop bound every pixel
+    // shares, where a branch on the light's type would make llvmpipe run this for every light.
+    for (int r = 0; r < u_rect_count; r++) {
+        int i = u_rect_index[r];
+        vec3 L;
+        vec2 t = rect_light_terms(i, u_light_position[i], u_light_direction[i], v_world, N, V,
+                                  u_mat_shininess, L);
+#ifdef HAS_SHADOWS
+        if (t.x > 0.0)
+            t *= shadow_visibility(i, 3, u_light_position[i], v_world, N, L);
+#endif
+        lit += t.x * c_d * u_light_diffuse[i];
+#ifndef NO_SPECULAR
+        lit += u_specular_scale * t.y * u_mat_specular * u_light_specular[i];
+#endif
+    }
+#endif
 #ifdef HAS_REFLECTION
     // Sections 2-6: R = I - 2 (N.I) N with I = -V; the lookup starts at the capture centre.
     int room = 0; // 1: the lookup reads the room probe (pick_depth_hit)

@@ -19,52 +19,67 @@ static void cross3(const float a[3], const float b[3], float out[3])
     out[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+static void normalize3(float v[3])
+{
+    float l = sqrtf(dot3(v, v));
+    if (l > 1e-20f)
+        for (int k = 0; k < 3; k++)
+            v[k] /= l;
+}
+
+/* One edge's term of Lambert's polygon formula, angle(a, b) n.unit(a x b), for unit a and b:
+ * theta / sin(theta) / (2 pi) by the rational fit of Hill and Heitz 2016 ("Real-time area lighting:
+ * a journey from research to production", the LTC code's IntegrateEdge), as the shader does. */
+static float edge_term(const float a[3], const float b[3], const float n[3])
+{
+    float x = dot3(a, b), y = fabsf(x);
+    float v =
+        (0.8543985f + (0.4965155f + 0.0145206f * y) * y) / (3.4175940f + (4.1616724f + y) * y);
+    float theta_over_sin = x > 0.0f ? v : 0.5f / sqrtf(fmaxf(1.0f - x * x, 1e-7f)) - v;
+    float axb[3];
+    cross3(a, b, axb);
+    return dot3(n, axb) * theta_over_sin;
+}
+
 float rd_ref_rect_form_factor(const float p[3], const float n[3], const rd_light *l)
 {
     const float *c = l->position, *u = l->half_width, *v = l->half_height;
     float to_p[3] = {p[0] - c[0], p[1] - c[1], p[2] - c[2]};
     if (!(dot3(to_p, l->direction) > 0.0f))
         return 0.0f; /* behind the emitting side */
-    /* The corners relative to p, clipped to p's horizon (Sutherland-Hodgman against n.x >= 0):
-     * a quad cut by a plane keeps at most five corners. */
+    /* The unit directions to the corners, clipped to p's horizon (Sutherland-Hodgman against
+     * n.x >= 0, one edge at a time): a clipped point lies on the great circle between two
+     * corners. The clipped polygon's closing edge runs along the horizon from where it leaves
+     * the upper side to where it comes back. */
     const float su[4] = {-1, 1, 1, -1}, sv[4] = {-1, -1, 1, 1};
-    float corner[4][3], poly[5][3];
-    for (int i = 0; i < 4; i++)
+    float corner[4][3];
+    for (int i = 0; i < 4; i++) {
         for (int k = 0; k < 3; k++)
             corner[i][k] = c[k] + su[i] * u[k] + sv[i] * v[k] - p[k];
-    int m = 0;
-    for (int i = 0; i < 4; i++) {
-        const float *a = corner[i], *b = corner[(i + 1) % 4];
-        float da = dot3(n, a), db = dot3(n, b);
-        if (da >= 0.0f) {
-            for (int k = 0; k < 3; k++)
-                poly[m][k] = a[k];
-            m++;
-        }
-        if ((da >= 0.0f) != (db >= 0.0f)) {
-            float t = da / (da - db);
-            for (int k = 0; k < 3; k++)
-                poly[m][k] = a[k] + t * (b[k] - a[k]);
-            m++;
-        }
+        normalize3(corner[i]);
     }
     /* Lambert's polygon formula: the cosine-weighted solid angle over pi is
      * 1 / (2 pi) sum over edges of angle(a, b) * n . unit(a x b) (Baum, Rushmeier and Winget
      * 1989, "Improving radiosity solutions through the use of analytically determined
      * form-factors", eq. 4; the same edge integral as Heitz et al. 2016, "Real-time
-     * polygonal-light shading with linearly transformed cosines", eq. 11). The angle comes
-     * from atan2, which stays accurate for nearly parallel edges where acos does not. */
-    float sum = 0.0f;
-    for (int i = 0; i < m; i++) {
-        const float *a = poly[i], *b = poly[(i + 1) % m];
-        float axb[3];
-        cross3(a, b, axb);
-        float s = sqrtf(dot3(axb, axb));
-        if (!(s > 1e-20f))
-            continue;
-        sum += atan2f(s, dot3(a, b)) * dot3(n, axb) / s;
+     * polygonal-light shading with linearly transformed cosines", eq. 11). */
+    float sum = 0.0f, exit_p[3] = {0, 0, 0}, entry_p[3] = {0, 0, 0};
+    for (int i = 0; i < 4; i++) {
+        const float *a = corner[i], *b = corner[(i + 1) % 4];
+        float da = dot3(n, a), db = dot3(n, b), dd = da - db, x[3];
+        for (int k = 0; k < 3; k++)
+            x[k] = a[k] + da / (dd != 0.0f ? dd : 1.0f) * (b[k] - a[k]);
+        normalize3(x);
+        int in_a = da >= 0.0f, in_b = db >= 0.0f;
+        for (int k = 0; k < 3 && in_a && !in_b; k++)
+            exit_p[k] = x[k];
+        for (int k = 0; k < 3 && !in_a && in_b; k++)
+            entry_p[k] = x[k];
+        if (in_a || in_b)
+            sum += edge_term(in_a ? a : x, in_b ? b : x, n);
     }
-    float ff = fabsf(sum) / (2.0f * PI_F);
+    sum += edge_term(exit_p, entry_p, n); /* zero when nothing was clipped */
+    float ff = fabsf(sum);                /* the fit carries the 1 / (2 pi) */
     return fminf(ff, 1.0f);
 }
 

@@ -26,7 +26,7 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
     float pos[RD_MAX_LIGHTS][3], dir[RD_MAX_LIGHTS][3], dif[RD_MAX_LIGHTS][3],
         spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2],
         half_w[RD_MAX_LIGHTS][3], half_h[RD_MAX_LIGHTS][3];
-    int n = 0;
+    int n = 0, rects = 0, rect_index[RD_MAX_LIGHTS];
     for (int i = 0; i < s->light_count; i++) {
         if (!(mask & (1u << i)))
             continue;
@@ -41,9 +41,16 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
         spot[n][1] = l->spot_outer_cos;
         memcpy(half_w[n], l->half_width, sizeof half_w[n]);
         memcpy(half_h[n], l->half_height, sizeof half_h[n]);
+        if (l->type == RD_LIGHT_RECT)
+            rect_index[rects++] = n;
         n++;
     }
     glUniform1i(p->u_light_count, n);
+    if (p->u_rect_count >= 0) { /* the AREA_LIGHTS variant only */
+        glUniform1i(p->u_rect_count, rects);
+        if (rects > 0)
+            glUniform1iv(p->u_rect_index, rects, rect_index);
+    }
     if (n > 0) {
         glUniform1iv(p->u_light_type, n, type);
         glUniform3fv(p->u_light_position, n, &pos[0][0]);

@@ -184,8 +184,61 @@ static void test_settings(void)
     expect_error("{\"turbidity\": 20}", "$.daylight.turbidity");
 }
 
+static app_result parse_light(const char *light, app_project *p, char *err, size_t n)
+{
+    char text[2048];
+    snprintf(text, sizeof text,
+             "{\"version\": 1, \"room\": {\"width\": 3000, \"depth\": 2000, \"height\": "
+             "2500}, \"cameras\": [{\"position\": [1, 1, 1], \"target\": [0, 0, 0]}], "
+             "\"lights\": [%s]}",
+             light);
+    return app_project_parse(text, strlen(text), "case.json", p, err, n);
+}
+
+/* A rect light (a mirror strip): read with its default axis, written back, refused when
+ * broken. */
+static void test_rect_light_settings(void)
+{
+    app_project p;
+    char err[512] = "";
+    CHECK_MSG(parse_light("{\"type\": \"rect\", \"position\": [2900, 1000, 1900], "
+                          "\"direction\": [-1, 0, 0], \"width\": 600, \"height\": 40, "
+                          "\"intensity\": 60}",
+                          &p, err, sizeof err) == APP_OK,
+              "%s", err);
+    const app_light *l = &p.lights[0];
+    CHECK(l->type == APP_LIGHT_RECT && l->width_mm == 600 && l->height_mm == 40);
+    /* the default axis: horizontal, square to the direction; the height then vertical */
+    CHECK(fabs(fabs(l->axis[1]) - 1) < 1e-12 && fabs(l->axis[2]) < 1e-12);
+    CHECK(fabs(fabs(l->height_axis[2]) - 1) < 1e-12);
+    char path[] = "/tmp/tessera-rect-XXXXXX";
+    int fd = mkstemp(path);
+    CHECK(fd >= 0);
+    if (fd >= 0) {
+        close(fd);
+        app_project q;
+        CHECK(app_project_write(path, &p, err, sizeof err) == APP_OK);
+        CHECK_MSG(app_project_read(path, &q, err, sizeof err) == APP_OK, "%s", err);
+        CHECK(q.light_count == 1 && memcmp(&q.lights[0], l, sizeof *l) == 0);
+        app_project_free(&q);
+        unlink(path);
+    }
+    app_project_free(&p);
+    const char *missing =
+        "{\"type\": \"rect\", \"position\": [0, 0, 0], \"direction\": [0, 0, -1], "
+        "\"width\": 600}";
+    CHECK(parse_light(missing, &p, err, sizeof err) == APP_ERR_SCHEMA);
+    CHECK_MSG(strstr(err, "$.lights[0].height: missing (required)"), "%s", err);
+    const char *parallel =
+        "{\"type\": \"rect\", \"position\": [0, 0, 0], \"direction\": [0, 0, -1], "
+        "\"width\": 600, \"height\": 600, \"axis\": [0, 0, 2]}";
+    CHECK(parse_light(parallel, &p, err, sizeof err) == APP_ERR_SCHEMA);
+    CHECK_MSG(strstr(err, "$.lights[0].axis: must not be parallel to direction"), "%s", err);
+}
+
 int main(void)
 {
+    test_rect_light_settings();
     test_sun_meeus();
     test_sun_spa();
     test_sun_noaa();

@@ -79,7 +79,8 @@ int main(void)
     if (render(ctx, "1, 1, 1", "overcast", day) && render(ctx, "0, 0, 0", "overcast", closed) &&
         render(ctx, "1, 1, 1", "clear", sunny)) {
         /* the floor in front of the window (the bottom rows) and the side walls near it */
-        double floor_day = region(day, 40, 120, 100, 120), floor_closed = region(closed, 40, 120, 100, 120);
+        double floor_day = region(day, 40, 120, 100, 120),
+               floor_closed = region(closed, 40, 120, 100, 120);
         double side_day = region(day, 0, 20, 30, 90), side_closed = region(closed, 0, 20, 30, 90);
         printf("floor near the window: luma %.1f with daylight, %.1f without\n", floor_day,
                floor_closed);
@@ -106,8 +107,8 @@ int main(void)
             sky += px[2] >= px[0] && luma(px) > 150;
             grey += abs(px[0] - 64) < 6 && abs(px[1] - 64) < 6 && abs(px[2] - 64) < 6;
         }
-        printf("pane column: rows %d..%d, %d green (ground), %d sky, %d grey\n", top, bottom,
-               green, sky, grey);
+        printf("pane column: rows %d..%d, %d green (ground), %d sky, %d grey\n", top, bottom, green,
+               sky, grey);
         CHECK(green >= 3);
         CHECK(sky >= 3);
         CHECK(grey == 0);

@@ -197,6 +197,20 @@ static void test_gpu(rd_context *ctx, rd_mesh plane)
                   what);
         CHECK(lit > W * H / 10);
     }
+    /* Clipped to the horizon: an upright panel standing through the plane, facing the eye. */
+    {
+        rd_material m = {.ambient = {0.2f, 0.2f, 0.2f}, .diffuse = {0.6f, 0.6f, 0.6f}};
+        rd_light l = {.type = RD_LIGHT_RECT,
+                      .position = {0.0f, 0.6f, 0.2f},
+                      .direction = {0, -1, 0},
+                      .diffuse = {2, 2, 2},
+                      .specular = {2, 2, 2},
+                      .half_width = {0.5f, 0, 0},
+                      .half_height = {0, 0, 0.5f}};
+        int lit;
+        CHECK(render_and_compare(ctx, plane, &m, &l, "rect light through the plane", &lit) == 0);
+        CHECK(lit > 500);
+    }
     /* Energy: radiance 0.5 over the whole sky of a white plane gives 0.5 everywhere. */
     rd_material white = {.diffuse = {1, 1, 1}};
     rd_light sky = rect(0, 0, 1.0f, 1e4f, 1e4f);

@@ -7,7 +7,7 @@
 /* The options every command that renders through the GPU renderer takes. */
 #define RENDER_SETTINGS                                                                            \
     "quality adaptive planar-mirrors room-probe exact-lamps self-reflections probe-resolution "    \
-    "shadows probes blur ambient backend bake tone exposure white-balance "
+    "shadows probes blur ambient backend bake tone exposure white-balance sky time "
 
 static const cli_command catalog_commands[] = {
     {.name = "search",
@@ -119,7 +119,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "bake output camera size supersample faces tile quality adaptive planar-mirrors "
-                "shadows probes blur ambient backend tone exposure white-balance",
+                "shadows probes blur ambient backend tone exposure white-balance sky time",
      .summary = "a 360-degree equirectangular panorama (GPano XMP) from six cube faces",
      .help = "  --size is the panorama's, twice as wide as high (default: 4096x2048).\n"},
     {.name = "video",
@@ -128,7 +128,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "bake output seconds fps size supersample tile quality adaptive planar-mirrors "
-                "shadows probes blur ambient backend tone exposure white-balance",
+                "shadows probes blur ambient backend tone exposure white-balance sky time",
      .summary = "a smooth path through the stored cameras: PNG frames, MP4 with ffmpeg",
      .help = "  Default: 8 seconds at 25 frames a second.\n"},
     {.name = "share",
@@ -225,7 +225,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "output camera size supersample samples threads seed png mask quality shadows "
-                "ambient bounces tone exposure white-balance",
+                "ambient bounces tone exposure white-balance sky time",
      .summary = "the ground truth: a CPU ray tracer (Embree) with the same shading",
      .help = "  Defaults: --bounces 4 (a path tracer with indirect and area lights), 16 paths a\n"
              "  subsample; --bounces 0 is the direct-only tracer with 64 rays a glossy lookup.\n",

@@ -1,6 +1,7 @@
 /* Every option of every `tessera` command: its name, kind, range, field and help line. A
  * command lists the keys it takes in the command table (cli_command_table.c); the parser, the
  * errors and the usage lines all read this one table (docs/cli.md, "Adding an option"). */
+#include "app/daylight/daylight.h"
 #include "app/output/print.h"
 #include "app/scene/quality.h"
 #include "catalog/catalog.h"
@@ -62,6 +63,20 @@ static int parse_exposure(const char *v, cli_options *o)
     o->exposure = CLI_EXPOSURE_FIXED;
     o->exposure_ev = (float)ev;
     return 1;
+}
+
+static int parse_sky(const char *v, cli_options *o)
+{
+    o->sky = v;
+    return !strcmp(v, "overcast") || !strcmp(v, "clear");
+}
+
+static int parse_time(const char *v, cli_options *o)
+{
+    app_daylight d;
+    app_daylight_default(&d);
+    o->time = v;
+    return app_daylight_set_time(&d, v);
 }
 
 static int parse_paper(const char *v, cli_options *o)
@@ -205,6 +220,10 @@ static const cli_option_spec options[] = {
     ENUM("blur", blur, blur_names, "how probes are blurred for rough surfaces"),
     ENUM("ambient", ambient, ambient_names, "the ambient light's model"),
     ENUM("shadows", shadows, shadow_names, "shadows from every light"),
+    CUSTOM("sky", parse_sky, "overcast|clear", "overcast or clear",
+           "the sky through the windows (default: the project's daylight)"),
+    CUSTOM("time", parse_time, "HH:MM", "a local time HH:MM",
+           "the time of day of the daylight (default: the project's)"),
     CUSTOM("tone", parse_tone, "neutral|agx|reinhard|clamp", "neutral, agx, reinhard or clamp",
            "the tone curve (default: the project's, else neutral)"),
     CUSTOM("exposure", parse_exposure, "auto|EV", "auto or a number of EV in (-64, 64)",

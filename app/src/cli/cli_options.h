@@ -51,7 +51,8 @@ typedef struct cli_options {
     int tone;     /* 0 the project's, else rd_tonemap + 1 */
     int exposure; /* 0 the project's, CLI_EXPOSURE_AUTO or CLI_EXPOSURE_FIXED (exposure_ev) */
     float exposure_ev;
-    double white_balance; /* K; 0 the project's */
+    double white_balance;   /* K; 0 the project's */
+    const char *sky, *time; /* --sky overcast|clear, --time HH:MM: the project's daylight */
     int dpi, tile;
 
     /* Timing, video, reference. */

@@ -70,6 +70,7 @@ int cli_session_open(const cli_options *o, cli_session *s)
         fprintf(stderr, "tessera: %s\n", err);
         return r == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
     }
+    app_daylight_override(&s->project.daylight, o->sky, o->time); /* checked when parsed */
     if (rd_context_create(&(rd_context_desc){.backend = o->backend}, &s->ctx) != RD_OK) {
         fprintf(stderr, "tessera: cannot open an OpenGL context: %s\n", rd_last_error());
         app_project_free(&s->project);

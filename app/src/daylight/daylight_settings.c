@@ -1,6 +1,7 @@
 /* Daylight defaults and the named sites a project may give instead of numbers. */
 #include "app/daylight/daylight.h"
 
+#include <stdio.h>
 #include <string.h>
 
 void app_daylight_default(app_daylight *d)
@@ -38,4 +39,33 @@ const char *app_daylight_site_names(void)
 {
     return "amsterdam, athens, berlin, greenwich, kyiv, lisbon, london, madrid, new-york, oslo, "
            "paris, rome, stockholm, sydney, tokyo, vienna, warsaw";
+}
+
+int app_daylight_set_time(app_daylight *d, const char *hh_mm)
+{
+    int h, m, n = 0;
+    if (sscanf(hh_mm, "%2d:%2d%n", &h, &m, &n) != 2 || hh_mm[n] || h < 0 || h > 23 || m < 0 ||
+        m > 59)
+        return 0;
+    d->hour = h + m / 60.0;
+    return 1;
+}
+
+int app_daylight_override(app_daylight *d, const char *sky, const char *hh_mm)
+{
+    if (d->year == 0)
+        app_daylight_default(d); /* a project made in memory */
+    if (sky) {
+        if (!strcmp(sky, "overcast"))
+            d->model = APP_SKY_CIE_OVERCAST;
+        else if (!strcmp(sky, "clear"))
+            d->model = APP_SKY_PREETHAM;
+        else
+            return 0;
+    }
+    if (hh_mm && !app_daylight_set_time(d, hh_mm))
+        return 0;
+    if (sky || hh_mm)
+        d->present = 1;
+    return 1;
 }

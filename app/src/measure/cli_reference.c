@@ -99,7 +99,8 @@ int cli_cmd_reference(const cli_options *o)
         view.supersample = o->supersample;
     cli_apply_tone_options(o, &view);
     if (o->ambient)
-        p.render.ambient_model = o->ambient == 2; /* as `render --ambient` (cli_session.c) */
+        p.render.ambient_model = o->ambient == 2;        /* as `render --ambient` (cli_session.c) */
+    app_daylight_override(&p.daylight, o->sky, o->time); /* as `render --sky --time` */
     double t0 = cli_now_ms();
     ref_scene *scene = NULL;
     ar = app_ref_scene_build(&p, &scene, err, sizeof err);

@@ -74,15 +74,10 @@ static app_result read_date_time(pj_ctx *c, const cJSON *o, app_daylight *d)
         d->month = m;
         d->day = dd;
     }
-    if (time[0]) {
-        int h, mi, n = 0;
-        if (sscanf(time, "%2d:%2d%n", &h, &mi, &n) != 2 || time[n] || h < 0 || h > 23 || mi < 0 ||
-            mi > 59) {
-            pj_path_key(c, "time");
-            return pj_fail(c, APP_ERR_SCHEMA, "expected a local time \"HH:MM\" (24 h), got \"%s\"",
-                           time);
-        }
-        d->hour = h + mi / 60.0;
+    if (time[0] && !app_daylight_set_time(d, time)) {
+        pj_path_key(c, "time");
+        return pj_fail(c, APP_ERR_SCHEMA, "expected a local time \"HH:MM\" (24 h), got \"%s\"",
+                       time);
     }
     return APP_OK;
 }

@@ -31,6 +31,11 @@ typedef struct app_daylight {
 } app_daylight;
 
 void app_daylight_default(app_daylight *d);
+/* "HH:MM" (24 h) into d->hour; 0 when it is not such a time. */
+int app_daylight_set_time(app_daylight *d, const char *hh_mm);
+/* The command line's overrides (NULL = keep): sky "overcast" (CIE) or "clear" (Preetham), a
+ * local time "HH:MM". Marks d present. 0 when one is not valid. */
+int app_daylight_override(app_daylight *d, const char *sky, const char *hh_mm);
 
 /* A named site: its latitude, longitude and standard UTC offset. NULL when unknown. */
 typedef struct app_daylight_site {
