@@ -7,7 +7,7 @@
 #    log and expect-search); a V typed there is text, and after Enter V switches the view;
 # 2. 20 clicks of 30 ms, each shorter than a frame, alternately on two fixtures of the plan:
 #    every one selects its fixture;
-# 3. the wheel over the View panel scrolls it until its "Share folder" button, below the fold,
+# 3. the wheel over the left column scrolls it until the selection's "Rotate 90" button, below the fold,
 #    is shown whole; the wheel over the plan zooms the plan, not a panel.
 # The window tells where to click (locate) and waits for each step (wait-file).
 #   usage: input_session.sh TESSERA OUTDIR SCREENSHOT_CHECK PROJECT
@@ -61,10 +61,10 @@ locate fixture bath
 wait-file $out/clicked
 wait 3
 screenshot $out/clicked.png
-locate widget Share folder...
+locate widget Rotate 90
 wait-file $out/scrolled
 wait 3
-locate widget Share folder...
+locate widget Rotate 90
 screenshot $out/scrolled.png
 quit
 SCRIPT
@@ -138,11 +138,11 @@ test "$selected" -eq 20 ||
     { echo "FAIL: $selected of 20 clicks shorter than a frame selected a fixture"; exit 1; }
 grep '^tessera: selected' "$log" | awk 'NR > 1 && $0 == prev { bad = 1 } { prev = $0 }
     END { exit bad }' || { echo "FAIL: a click did not change the selection"; exit 1; }
-# The wheel scrolled the View panel: its Share folder button was below the fold, now it shows.
-grep -q 'locate widget "Share folder..." at .* hidden' "$log" ||
-    { echo "FAIL: Share folder was not below the fold to begin with"; exit 1; }
-grep 'locate widget "Share folder..."' "$log" | tail -n 1 | grep -q visible ||
-    { echo "FAIL: the wheel did not scroll the View panel"; exit 1; }
+# The wheel scrolled the left column: the selection's Rotate 90 button was below the fold, now it shows.
+grep -q 'locate widget "Rotate 90" at .* hidden' "$log" ||
+    { echo "FAIL: the selection's Rotate 90 was not below the fold to begin with"; exit 1; }
+grep 'locate widget "Rotate 90"' "$log" | tail -n 1 | grep -q visible ||
+    { echo "FAIL: the wheel did not scroll the left column"; exit 1; }
 # Each step changed the picture (the typed search, the selection, the scroll and zoom).
 "$check" "$out/typed.png" "$out/clicked.png" "$out/scrolled.png"
 echo "input_session: ok"

@@ -78,10 +78,10 @@ if [ "$1" = "--inside" ]; then
     xdotool mouseup 1
     wait_for " 2d 280,53,417,645 splitter 697,53,6,645 3d 703,53,247,645 " \
         "the splitter did not follow the drag"
-    # File > Quit (the last entry, below two separators).
+    # File > Quit (the last entry, below two separators: nine entries above it).
     click 25 9
     sleep 1
-    click 60 145
+    click 60 194
     i=0
     while kill -0 $pid 2>/dev/null && [ $i -lt 40 ]; do
         i=$((i + 1))
