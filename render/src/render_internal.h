@@ -52,7 +52,7 @@ typedef struct rd_program {
     int u_light_type, u_light_position, u_light_direction, u_light_diffuse, u_light_specular,
         u_light_attenuation, u_light_spot;
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
-    int u_diffuse_texture, u_uv_scale;
+    int u_diffuse_texture, u_uv_scale, u_joint_width, u_joint_color;
     int u_specular_scale;
     int u_sh, u_sphere_map, u_view_rot;
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
