@@ -147,8 +147,31 @@ static void test_near(rd_context *ctx, rd_mesh plane, rd_texture tex)
     rd_scene_destroy(s);
 }
 
+/* The CPU twin (grout_ref.c), which the reference tracer draws joints with. */
+static void test_twin(void)
+{
+    const float w[2] = {0.01f, 0.02f}, point[2] = {0, 0};
+    CHECK(rd_ref_joint_coverage((const float[2]){0.004f, 0.5f}, w, point) == 1.0f);
+    CHECK(rd_ref_joint_coverage((const float[2]){-0.004f, 0.5f}, w, point) == 1.0f);
+    CHECK(rd_ref_joint_coverage((const float[2]){0.006f, 0.5f}, w, point) == 0.0f);
+    CHECK(rd_ref_joint_coverage((const float[2]){0.5f, 2.995f}, w, point) == 1.0f);
+    /* A footprint of a whole cell or more: the band's share of it. */
+    float cov = rd_ref_joint_coverage((const float[2]){0.3f, 0.3f}, w, (const float[2]){1, 1});
+    CHECK_NEAR(cov, 0.01 + 0.02 - 0.01 * 0.02, 1e-6);
+    /* A footprint of 4 joints' width centred on the edge: a quarter of it (per axis). */
+    cov = rd_ref_joint_coverage((const float[2]){1.0f, 0.5f}, w, (const float[2]){0.04f, 0.0f});
+    CHECK_NEAR(cov, 0.25, 1e-5);
+    /* The texture is read clear of the band: never nearer the edge than half the joint plus
+     * four footprints. */
+    float st[2];
+    rd_ref_joint_texcoord((const float[2]){2.001f, -0.999f}, w, 256, 256, 1.0f, st);
+    CHECK(st[0] >= 2.0f + 0.005f + 4.0f / 256.0f - 1e-6f);
+    CHECK(st[1] >= -1.0f + 0.01f + 4.0f / 256.0f - 1e-6f);
+}
+
 int main(void)
 {
+    test_twin();
     rd_context *ctx = NULL;
     if (rd_context_create(NULL, &ctx) != RD_OK) {
         fprintf(stderr, "no context: %s\n", rd_last_error());
