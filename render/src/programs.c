@@ -203,11 +203,12 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
-        p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
-                     reflecting
-                         ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl grout.glsl lit.frag"
-                         : "shadow.glsl grout.glsl lit.frag",
-                     defines);
+        p->id =
+            link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
+                 reflecting
+                     ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl grout.glsl lit.frag"
+                     : "shadow.glsl grout.glsl lit.frag",
+                 defines);
     if (!p->id)
         return NULL;
     locate_lit(p);
