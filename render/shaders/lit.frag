@@ -400,11 +400,12 @@ void main()
         N = -N;
 
     vec3 albedo_scale = vec3(1.0);
+    float joint = 0.0; // tile joints (grout.glsl)
 #ifdef HAS_DIFFUSE_TEXTURE
-    albedo_scale = texture(u_diffuse_texture, v_uv * u_uv_scale).rgb;
+    albedo_scale = tile_texture(u_diffuse_texture, v_uv * u_uv_scale, joint);
 #endif
-    vec3 c_a = u_mat_ambient * albedo_scale;
-    vec3 c_d = u_mat_diffuse * albedo_scale;
+    vec3 c_a = mix(u_mat_ambient * albedo_scale, u_joint_color, joint);
+    vec3 c_d = mix(u_mat_diffuse * albedo_scale, u_joint_color, joint);
 
     // eq. 1; with SH9 the ambient intensity is the irradiance over pi (a Lambertian surface)
 #if defined(BAKED_LIGHT)

@@ -131,6 +131,11 @@ void rd_set_object_uniforms(const rd_program *p, const float model[16], const rd
     if (p->u_uv_scale >= 0)
         glUniform2f(p->u_uv_scale, m->uv_scale[0] > 0.0f ? m->uv_scale[0] : 1.0f,
                     m->uv_scale[1] > 0.0f ? m->uv_scale[1] : 1.0f);
+    if (p->u_joint_width >= 0) {
+        glUniform2f(p->u_joint_width, fmaxf(m->joint_width[0], 0.0f),
+                    fmaxf(m->joint_width[1], 0.0f));
+        glUniform3fv(p->u_joint_color, 1, m->joint_color);
+    }
 }
 
 static float determinant3(const float m[16])

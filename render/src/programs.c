@@ -114,6 +114,8 @@ static void locate_lit(rd_program *p)
     p->u_mat_shininess = glGetUniformLocation(id, "u_mat_shininess");
     p->u_diffuse_texture = glGetUniformLocation(id, "u_diffuse_texture");
     p->u_uv_scale = glGetUniformLocation(id, "u_uv_scale");
+    p->u_joint_width = glGetUniformLocation(id, "u_joint_width");
+    p->u_joint_color = glGetUniformLocation(id, "u_joint_color");
     p->u_specular_scale = glGetUniformLocation(id, "u_specular_scale");
     p->u_sphere_map = glGetUniformLocation(id, "u_sphere_map");
     p->u_view_rot = glGetUniformLocation(id, "u_view_rot");
@@ -209,12 +211,11 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
-        p->id = link(
-            reflecting ? "reflect.glsl lit.vert" : "lit.vert",
-            reflecting
-                ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl area_light.glsl lit.frag"
-                : "shadow.glsl area_light.glsl lit.frag",
-            defines);
+        p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
+                     reflecting ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl "
+                                  "grout.glsl area_light.glsl lit.frag"
+                                : "shadow.glsl grout.glsl area_light.glsl lit.frag",
+                     defines);
     if (!p->id)
         return NULL;
     locate_lit(p);

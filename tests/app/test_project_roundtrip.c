@@ -90,6 +90,9 @@ static void check_same(const app_project *a, const app_project *b)
     }
     SAME_N(a->render.ambient, b->render.ambient, 3);
     CHECK(a->render.exposure_ev == b->render.exposure_ev);
+    CHECK(a->render.exposure_auto == b->render.exposure_auto);
+    CHECK(a->render.tone == b->render.tone);
+    CHECK(a->render.white_balance_k == b->render.white_balance_k);
     CHECK(a->render.white == b->render.white);
     CHECK(a->render.width == b->render.width && a->render.height == b->render.height);
     CHECK(a->render.supersample == b->render.supersample);
@@ -169,11 +172,39 @@ static void test_numbers_exact(void)
     a.materials[0].emissive[2] = 3.4028234e38f;
     a.materials[0].shininess = 1.0f / 3.0f;
     a.lights[0].intensity = 16777217.0f;
+    a.render.exposure_auto = 0; /* a fixed exposure */
     a.render.exposure_ev = -0.7f;
     if (write_project(out, &a) && read_project(out, &b)) {
         check_same(&a, &b);
         CHECK(signbit(b.objects[0].rotation_deg[1]));
         app_project_free(&b);
+    }
+    app_project_free(&a);
+}
+
+/* The image settings: a fixed exposure, each tone curve and a white balance come back; auto
+ * exposure is written as "auto", the default curve as "neutral". */
+static void test_tone_settings(void)
+{
+    app_project a, b;
+    char out[4096];
+    tmp_path(out, sizeof out, "tone.json");
+    if (!read_project(DATA "/valid.json", &a))
+        return;
+    const app_tone tones[] = {APP_TONE_NEUTRAL, APP_TONE_AGX, APP_TONE_REINHARD, APP_TONE_CLAMP};
+    for (int i = 0; i < 4; i++) {
+        a.render.tone = tones[i];
+        a.render.exposure_auto = i % 2;
+        a.render.exposure_ev = i % 2 ? 0.0f : 1.25f;
+        a.render.white_balance_k = i == 2 ? 3200.0f : 0.0f;
+        if (write_project(out, &a) && read_project(out, &b)) {
+            check_same(&a, &b);
+            app_project_free(&b);
+        }
+        char *text = tu_read_file(out, NULL);
+        CHECK(text && tu_contains(text, app_tone_name(tones[i])));
+        CHECK(text && (i % 2 ? tu_contains(text, "\"auto\"") : !tu_contains(text, "\"auto\"")));
+        free(text);
     }
     app_project_free(&a);
 }
@@ -412,6 +443,7 @@ int main(void)
         return check_report("project_roundtrip");
     test_roundtrip();
     test_numbers_exact();
+    test_tone_settings();
     test_failed_write_keeps_old_file();
     test_overwrite_keeps_mode();
     test_unwritable_places();

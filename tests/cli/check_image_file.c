@@ -1,5 +1,5 @@
 /* check_image_file FILE REFERENCE WIDTHxHEIGHT [--max-diff N] [--mean-diff M] [--psnr DB]
- *                  [--white W]
+ *                  [--white W] [--tone neutral|agx|reinhard|clamp]
  *
  * Reads back an image `tessera render` wrote (render/image_io.h, the project's own reader) and
  * compares it with the same render written in another format: both must read, have the size
@@ -10,8 +10,9 @@
  *
  * 8-bit files (PNG, JPEG, TIFF) hold sRGB display values already (read back as whole steps). A
  * float file (EXR) holds the exposed linear radiance (rd_read_linear): it is tone mapped as the
- * renderer's resolve does (rd_ref_display_rgb8: the photographic operator with L_white = W, default
- * 4, the project default; the exposure is in the file) before it is compared. */
+ * renderer's resolve does (rd_ref_display_rgb8: the tone curve --tone, default neutral, the
+ * project default; L_white = W for reinhard, default 4; the exposure and white balance are in
+ * the file) before it is compared. */
 #include "render/image_io.h"
 #include "render/render.h"
 #include "render/shade_ref.h"
@@ -22,6 +23,8 @@
 #include <string.h>
 
 /* The image's RGB display values in 0..255, or NULL after naming what went wrong. */
+static rd_tonemap tone = RD_TONEMAP_NEUTRAL;
+
 static float *display_values(const char *path, int width, int height, float white)
 {
     rd_image img = {0};
@@ -56,7 +59,7 @@ static float *display_values(const char *path, int width, int height, float whit
                 out[i * 3 + c] = roundf(rgba[i * 4 + c] * 255.0f);
         } else {
             unsigned char rgb8[3];
-            rd_ref_display_rgb8(&rgba[i * 4], 0.0f, RD_TONEMAP_PHOTOGRAPHIC, white, rgb8);
+            rd_ref_display_rgb8(&rgba[i * 4], 0.0f, tone, white, rgb8);
             for (int c = 0; c < 3; c++)
                 out[i * 3 + c] = rgb8[c];
         }
@@ -86,11 +89,19 @@ int main(int argc, char **argv)
     int width = 0, height = 0;
     if (argc < 4 || sscanf(argv[3], "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0) {
         fprintf(stderr, "usage: check_image_file FILE REFERENCE WIDTHxHEIGHT [--max-diff N] "
-                        "[--mean-diff M] [--psnr DB] [--white W]\n");
+                        "[--mean-diff M] [--psnr DB] [--white W] [--tone T]\n");
         return 2;
     }
     double max_allowed = 0.0, mean_allowed = 0.0, psnr_min = 0.0, white = 4.0;
     for (int i = 4; i < argc; i++) {
+        if (!strcmp(argv[i], "--tone")) {
+            if (i + 1 >= argc || rd_tonemap_parse(argv[i + 1], &tone) != RD_OK) {
+                fprintf(stderr, "check_image_file: bad option \"%s\"\n", argv[i]);
+                return 2;
+            }
+            i++;
+            continue;
+        }
         double *target = !strcmp(argv[i], "--max-diff")    ? &max_allowed
                          : !strcmp(argv[i], "--mean-diff") ? &mean_allowed
                          : !strcmp(argv[i], "--psnr")      ? &psnr_min

@@ -4,7 +4,7 @@
 usage: stats_check.py FILE.json KEY=VALUE... -- COMMAND [ARGS...]
                       [--then FILE.json KEY=VALUE... -- COMMAND [ARGS...]]...
 KEY is a dotted path into the JSON object (settings.room_probe, frame.room_probe); VALUE is
-compared as text ("on", "0"), or ">0" for any positive number. Each command must exit 0 and
+compared as text ("on", "0"), or ">0" for any positive number, or "<X" for a number below X. Each command must exit 0 and
 write its file anew. With --then, several runs (a switch on, then off) are checked in turn, so
 one test can show that a stage ran in one render and not in the other."""
 import json
@@ -32,7 +32,14 @@ def check_run(args):
         for part in key.split("."):
             value = value.get(part) if isinstance(value, dict) else None
         text = str(int(value)) if isinstance(value, (int, float)) else str(value)
-        ok = (isinstance(value, (int, float)) and value > 0) if want == ">0" else text == want
+        number = isinstance(value, (int, float))
+        if want == ">0":
+            ok = number and value > 0
+        elif want.startswith("<"):
+            ok = number and value < float(want[1:])
+            text = str(value) if number else text
+        else:
+            ok = text == want
         print(f"{'ok' if ok else 'FAIL'}: {key} = {text} (want {want})")
         status |= not ok
     return status

@@ -27,6 +27,10 @@
 
 enum { W = 160, H = 90 };
 
+/* The exposure the truth was resolved with (auto exposure: measured by the tracer), used by
+ * every GPU render it is compared with, so the images differ only by the method. */
+static float truth_ev;
+
 /* The GPU's PSNR over the mask against the truth with every reflective material set to `c`. */
 static double gpu_psnr(rd_context *ctx, app_project *p, int c, const float *truth,
                        const float *mask)
@@ -43,6 +47,8 @@ static double gpu_psnr(rd_context *ctx, app_project *p, int c, const float *trut
     rd_view view;
     CHECK(app_view_from_camera(p, NULL, W, H, &view, err, sizeof err) == APP_OK);
     view.supersample = 1;
+    view.auto_exposure = 0;
+    view.exposure_ev = truth_ev;
     float *img = malloc((size_t)W * H * 4 * sizeof *img);
     double psnr = NAN;
     if (img && rd_render(ctx, s.scene, &view) == RD_OK &&
@@ -79,6 +85,7 @@ static void measure(rd_context *ctx, const char *project, double out[3])
         ref_render(rs, &(ref_render_desc){.view = view, .samples = 16}, &truth) == REF_OK) {
         for (int i = 0; i < W * H; i++)
             mask[i] = truth.mask[i] ? 1.0f : 0.0f;
+        truth_ev = truth.exposure_ev;
         const int modes[3] = {APP_CORRECTION_NONE, APP_CORRECTION_BOX, APP_CORRECTION_DEPTH};
         for (int k = 0; k < 3; k++)
             out[k] = gpu_psnr(ctx, &p, modes[k], truth.linear, mask);

@@ -209,7 +209,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "bake camera size frames warmup animate csv stats quality exact-lamps "
-                "self-reflections probe-resolution probes blur ambient backend",
+                "self-reflections probe-resolution probes blur ambient shadows backend",
      .summary = "milliseconds per frame (median and spread) against a full-screen floor",
      .help = "  --animate drags an object 10 mm a frame; the cpu row: CPU ms, all threads.\n",
      .defaults = cli_defaults_bench},

@@ -3,7 +3,11 @@
  * regions of room_surfaces.c) becomes meshes added to the room geometry, so the GPU scene and
  * the reference tracer draw the same tiles:
  *  - each tile piece a polygon 2.5 mm in front of its surface, its texture mapped once onto the
- *    whole uncut tile (a cut tile shows the part of the image it keeps);
+ *    whole uncut tile's nominal cell (a cut tile shows the part of the image it keeps). A
+ *    textured piece is grown by half a joint across its uncut edges, like the backing, and its
+ *    joints are drawn in the grout colour by the shader from the texture coordinates
+ *    (rd_material.joint_width, shaders/grout.glsl): antialiased at any distance, and the
+ *    image's own border texels are never shown;
  *  - behind the tiles, 1 mm in front of the surface, a backing in the grout colour: every piece
  *    grown by half a joint across its uncut edges (not across cuts), so the joints show
  *    grout and nothing spills past the region's edges or into openings.
@@ -104,6 +108,14 @@ static void tile_uv(const app_placed_tile *t, app_point2 q, double uv[2])
     uv[1] = vv > 0 ? -(px * vx + py * vy) / vv : 0;
 }
 
+/* The texture coordinate over the nominal cell (the tile grown by half the joint g on every
+ * side) from tile_uv's over the tile at work size ww x wh: the cell's edges are whole numbers. */
+static void cell_uv(const double uv[2], double ww, double wh, double g, double out[2])
+{
+    out[0] = (uv[0] * ww + 0.5 * g) / (ww + g);
+    out[1] = (uv[1] * wh - 0.5 * g) / (wh + g); /* v runs negative (tile_uv) */
+}
+
 static void add_layout(rm_build *b, const app_tiling *tiling, const app_tile_layout *l,
                        const app_surface_frame *f)
 {
@@ -127,8 +139,16 @@ static void add_layout(rm_build *b, const app_tiling *tiling, const app_tile_lay
         int textured =
             path[0] && access(path, R_OK) == 0 && strlen(path) < sizeof m->inline_material.texture;
         m->inline_material = plain_material(name, textured ? white : grey, 0.25f, 64);
-        if (textured)
+        if (textured) {
             memcpy(m->inline_material.texture, path, strlen(path) + 1); /* fits: checked above */
+            double g = l->grout_mm, ww = l->specs[k].work_w_mm, wh = l->specs[k].work_h_mm;
+            if (g > 0 && ww > 0 && wh > 0) {
+                m->inline_material.joint_width[0] = (float)(g / (ww + g));
+                m->inline_material.joint_width[1] = (float)(g / (wh + g));
+                memcpy(m->inline_material.joint_color, tiling->grout_color,
+                       sizeof m->inline_material.joint_color);
+            }
+        }
         spec_mesh[k] = (int)(m - b->g->meshes);
     }
     double half = 0.5 * l->grout_mm;
@@ -145,10 +165,18 @@ static void add_layout(rm_build *b, const app_tiling *tiling, const app_tile_lay
             double uv[64][2];
             grow_piece(pts, &l->edges[pc->first], pc->count, half, grown);
             emit_polygon(b, &b->g->meshes[grout_index], f, grown, pc->count, GROUT_OFFSET_MM, NULL);
-            for (int k = 0; k < pc->count; k++)
-                tile_uv(t, pts[k], uv[k]);
-            emit_polygon(b, &b->g->meshes[spec_mesh[t->product]], f, pts, pc->count, TILE_OFFSET_MM,
-                         (const double(*)[2])uv);
+            app_room_mesh *tm = &b->g->meshes[spec_mesh[t->product]];
+            /* Joints drawn by the shader: the piece covers its half of them. */
+            int joints = tm->inline_material.joint_width[0] > 0.0f;
+            const app_point2 *shape = joints ? grown : pts;
+            double ww = hypot(t->cell[1].x - t->cell[0].x, t->cell[1].y - t->cell[0].y);
+            double wh = hypot(t->cell[3].x - t->cell[0].x, t->cell[3].y - t->cell[0].y);
+            for (int k = 0; k < pc->count; k++) {
+                tile_uv(t, shape[k], uv[k]);
+                if (joints)
+                    cell_uv(uv[k], ww, wh, l->grout_mm, uv[k]);
+            }
+            emit_polygon(b, tm, f, shape, pc->count, TILE_OFFSET_MM, (const double(*)[2])uv);
         }
     }
 }

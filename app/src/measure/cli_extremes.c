@@ -206,6 +206,9 @@ int cli_cmd_extremes(const cli_options *args)
             v.supersample = 1;
             if (rd_render(ctx, scene.scene, &v) == RD_OK && rd_read_linear(ctx, gpu, n) == RD_OK)
                 gpu_bad = non_finite(gpu, n);
+            /* The renders compared take the first one's exposure (auto: as it measured it). */
+            v.exposure_ev = rd_last_frame_stats(ctx).exposure_ev;
+            v.auto_exposure = 0;
             rd_reflection_defaults d = rd_scene_reflection_defaults(scene.scene);
             d.self_reflections = APP_SELF_REFLECTION_RAYS;
             rd_scene_set_reflection_defaults(scene.scene, &d);

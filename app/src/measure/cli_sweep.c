@@ -276,6 +276,16 @@ int cli_cmd_sweep(const cli_options *args)
         return rc;
     rd_view view;
     rc = cli_session_view(&s, &o, o.camera, SWEEP_WIDTH, SWEEP_HEIGHT, &view);
+    /* One exposure for every setting and the truth, so that they differ only by the method:
+     * an auto exposure is resolved once, by the project's own render. */
+    if (rc == CLI_OK && view.auto_exposure) {
+        if (rd_render(s.ctx, s.scene.scene, &view) != RD_OK) {
+            fprintf(stderr, "tessera: %s: %s\n", s.project.path, rd_last_error());
+            rc = CLI_FAILED;
+        }
+        view.exposure_ev = rd_last_frame_stats(s.ctx).exposure_ev;
+        view.auto_exposure = 0;
+    }
     char err[2048];
     ref_scene *ref = NULL;
     if (rc == CLI_OK && app_ref_scene_build(&s.project, &ref, err, sizeof err) != APP_OK) {

@@ -55,6 +55,8 @@ app_result app_list_material(app_list_builder *b, const app_material *am, rd_mat
     memcpy(m.diffuse, am->diffuse, sizeof m.diffuse);
     memcpy(m.specular, am->specular, sizeof m.specular);
     memcpy(m.emissive, am->emissive, sizeof m.emissive);
+    memcpy(m.joint_width, am->joint_width, sizeof m.joint_width);
+    memcpy(m.joint_color, am->joint_color, sizeof m.joint_color);
     *texture = -1;
     if (am->texture[0]) {
         app_render_list *l = b->list;

@@ -133,6 +133,14 @@ typedef struct rd_material {
     float shininess;   /* n, 0 .. 1e6 */
     rd_texture diffuse_texture;
     float uv_scale[2]; /* texture repeats per unit of the mesh's UVs; 0 = 1 */
+    /* Tile joints drawn from the layout (shaders/grout.glsl; rd_ref_joint_*): with
+     * joint_width > 0, each unit cell of the scaled UVs is one tile's nominal cell, its
+     * texture the tile with half a joint on every side, and a band joint_width wide (UV units,
+     * per axis) around the cell's edges shows joint_color (ambient and diffuse) instead,
+     * antialiased by its coverage of the pixel. The texture is read only inside the band, so
+     * its edge texels never bleed into the tile. Needs diffuse_texture. */
+    float joint_width[2];
+    float joint_color[3];
 
     /* Reflections (RENDERING.md sections 3-6). reflectivity k_r = 0: no probe, no reflection
      * code in the object's program, output bit for bit that of section 1. */

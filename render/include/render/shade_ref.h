@@ -39,6 +39,19 @@ void rd_ref_shade(const rd_material *m, const float albedo_scale[3], const float
                   const float n[3], const float eye[3], const rd_light *lights, int light_count,
                   const float ambient_light[3], float out[3]);
 
+/* Tile joints (rd_material.joint_width; CPU twin of shaders/grout.glsl). The fraction of a
+ * pixel footprint of footprint[0] x footprint[1] UV units (the GPU's fwidth) centred at uv
+ * that falls in the joint band (a box filter per axis, combined as a union); footprint 0:
+ * a point sample, 0 or 1. */
+float rd_ref_joint_coverage(const float uv[2], const float joint_width[2],
+                            const float footprint[2]);
+/* The texture coordinate read for uv (isotropically, at the level log2(texels)): kept four mip
+ * texels (texels: the level-0 texels of a
+ * tex_w x tex_h image the footprint spans, GLSL's rho; 0 for a point sample) inside the joint
+ * band's inner edge, so bilinear and mip filtering never reach the image's grout border. */
+void rd_ref_joint_texcoord(const float uv[2], const float joint_width[2], int tex_w, int tex_h,
+                           float texels, float st[2]);
+
 /* The tone curves alone, on exposed linear RGB (>= 0), giving display-linear values in [0, 1];
  * NaN in, 0 out. The GPU twins are in shaders/tonemap.glsl. */
 void rd_ref_tone_curve(const float c[3], rd_tonemap mode, float white, float out[3]);

@@ -194,25 +194,41 @@ static void ambient_at(const ref_scene *s, const float n[3], float out[3])
 }
 
 /* The diffuse texture at the hit (albedo 1 without one): over the footprint the ray's
- * neighbours span (the GPU's derivatives), else level 0. */
+ * neighbours span (the GPU's derivatives), else level 0. On tiles with joints (grout.glsl) the
+ * texture is read clear of the joint band and *joint gets the band's share of the footprint. */
 static void texture_albedo(const ref_scene *s, const surface *sf, const float org[3],
-                           const float dir[3], const ray_fan *fan, float albedo[3])
+                           const float dir[3], const ray_fan *fan, float albedo[3], float *joint)
 {
     const ref_mesh *m = sf->mesh;
     albedo[0] = albedo[1] = albedo[2] = 1.0f;
+    *joint = 0.0f;
     if (!m->texture)
         return;
+    const float *jw = m->material.joint_width;
+    int joints = jw[0] > 0.0f || jw[1] > 0.0f;
     const ref_texture *t = &s->textures[m->texture - 1];
-    float uv[2] = {sf->uv[0] * m->uv_scale[0], sf->uv[1] * m->uv_scale[1]};
+    float uv[2] = {sf->uv[0] * m->uv_scale[0], sf->uv[1] * m->uv_scale[1]}, st[2];
     float base[2], ux[2], uy[2];
+    int tw = t->mips[0].width, th = t->mips[0].height;
     if (fan && fan->valid && uv_on_plane(m, sf->prim, org, dir, base) &&
         uv_on_plane(m, sf->prim, fan->org_x, fan->dir_x, ux) &&
         uv_on_plane(m, sf->prim, fan->org_y, fan->dir_y, uy)) {
         float dx[2] = {(ux[0] - base[0]) * m->uv_scale[0], (ux[1] - base[1]) * m->uv_scale[1]};
         float dy[2] = {(uy[0] - base[0]) * m->uv_scale[0], (uy[1] - base[1]) * m->uv_scale[1]};
-        ref_texture_sample_footprint(t, uv, dx, dy, REF_MAX_ANISO, albedo);
+        float rho = fmaxf(hypotf(dx[0] * (float)tw, dx[1] * (float)th),
+                          hypotf(dy[0] * (float)tw, dy[1] * (float)th));
+        rd_ref_joint_texcoord(uv, jw, tw, th, rho, st);
+        if (joints) /* grout.glsl: isotropic, at the footprint's larger axis */
+            ref_texture_sample(t, st[0], st[1], log2f(fmaxf(rho, 1e-6f)), albedo);
+        else
+            ref_texture_sample_footprint(t, uv, dx, dy, REF_MAX_ANISO, albedo);
+        float fw[2] = {fabsf(dx[0]) + fabsf(dy[0]), fabsf(dx[1]) + fabsf(dy[1])};
+        *joint = joints ? rd_ref_joint_coverage(uv, jw, fw) : 0.0f;
     } else {
-        ref_texture_sample(t, uv[0], uv[1], 0.0f, albedo);
+        rd_ref_joint_texcoord(uv, jw, tw, th, 0.0f, st);
+        const float *at = joints ? st : uv;
+        ref_texture_sample(t, at[0], at[1], 0.0f, albedo);
+        *joint = joints ? rd_ref_joint_coverage(uv, jw, (const float[2]){0.0f, 0.0f}) : 0.0f;
     }
 }
 
@@ -226,7 +242,15 @@ void ref_surface_albedo(const ref_scene *s, const ref_surface *sf, const float o
             fan.dir_x[k] = diff->dir_dx[k];
             fan.dir_y[k] = diff->dir_dy[k];
         }
-    texture_albedo(s, sf, org, dir, &fan, out);
+    float joint;
+    texture_albedo(s, sf, org, dir, &fan, out, &joint);
+    /* lit.frag's c_d = mix(C_d x texture, joint colour, joint), as a factor on C_d. */
+    const rd_material *mat = &sf->mesh->material;
+    if (joint > 0.0f)
+        for (int k = 0; k < 3; k++)
+            out[k] =
+                out[k] * (1.0f - joint) +
+                (mat->diffuse[k] > 0.0f ? mat->joint_color[k] / mat->diffuse[k] : 0.0f) * joint;
 }
 
 /* Section 1 at a hit of the ray (org, dir), seen from `eye`. With the ray's neighbours the
@@ -237,9 +261,18 @@ static void shade_direct(const ref_scene *s, const surface *sf, const float eye[
                          int shadowed, float shadow_turn, ref_trace_stats *stats, float out[3])
 {
     const ref_mesh *m = sf->mesh;
-    float albedo[3];
-    texture_albedo(s, sf, org, dir, fan, albedo);
+    float albedo[3], joint = 0.0f;
+    texture_albedo(s, sf, org, dir, fan, albedo, &joint);
     rd_material mat = m->material;
+    if (joint > 0.0f) { /* lit.frag: c_a, c_d = mix(C x texture, joint colour, joint) */
+        for (int k = 0; k < 3; k++) {
+            mat.ambient[k] =
+                mat.ambient[k] * albedo[k] * (1.0f - joint) + mat.joint_color[k] * joint;
+            mat.diffuse[k] =
+                mat.diffuse[k] * albedo[k] * (1.0f - joint) + mat.joint_color[k] * joint;
+            albedo[k] = 1.0f;
+        }
+    }
     if (raw_lit)
         for (int k = 0; k < 3; k++)
             mat.emissive[k] = -FLT_MAX; /* max(-FLT_MAX, lit) = lit */

@@ -65,6 +65,10 @@ typedef struct app_material {
     float transparency; /* 0 opaque .. 1 clear */
     float ior;          /* index of refraction, default 1.5 */
     float dispersion;   /* IOR spread between red and blue, 0 = none */
+    /* Tile joints drawn from the layout (rd_material.joint_width); set by the room's tile
+     * meshes (room_tiles.c), not read from files. */
+    float joint_width[2];
+    float joint_color[3];
 } app_material;
 
 enum { APP_BLEND_MIX = 0, APP_BLEND_ADD, APP_BLEND_FRESNEL };
