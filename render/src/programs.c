@@ -24,11 +24,16 @@ static const char *shader_text(const char *name)
 /* `names` lists the embedded files to join, separated by spaces ("reflect.glsl lit.frag"). */
 static GLuint compile(GLenum stage, const char *names, const char *defines)
 {
-    const char *parts[8] = {"#version 330 core\n", defines};
+    enum { MAX_PARTS = 16 };
+    const char *parts[MAX_PARTS] = {"#version 330 core\n", defines};
     int count = 2;
     char name[64];
-    for (const char *p = names; *p && count < 8;) {
+    for (const char *p = names; *p;) {
         size_t n = strcspn(p, " ");
+        if (count == MAX_PARTS) {
+            rd_set_error("shader list \"%s\" has more than %d files", names, MAX_PARTS - 2);
+            return 0;
+        }
         snprintf(name, sizeof name, "%.*s", (int)n, p);
         parts[count] = shader_text(name);
         if (!parts[count]) {

@@ -47,6 +47,8 @@ static float *trace(int paths, uint32_t seed, unsigned char **rgba8)
     if (app_view_from_camera(&p, NULL, SIDE, SIDE, &view, err, sizeof err) == APP_OK &&
         app_ref_scene_build(&p, &s, err, sizeof err) == APP_OK) {
         view.supersample = 1;
+        view.auto_exposure = 0; /* radiance as traced: the golden holds no exposure */
+        view.exposure_ev = 0.0f;
         ref_image img;
         ref_render_desc d = {.view = view, .samples = paths, .bounces = 4, .seed = seed};
         if (ref_render(s, &d, &img) == REF_OK) {
