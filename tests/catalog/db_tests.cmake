@@ -54,22 +54,3 @@ tessera_add_test(NAME catalog.db_cli_not_found
                  EXPECT_RC 1 2 EXPECT_STDERR "no product with article number or GTIN \"NO-SUCH-1\""
                  LABELS unit)
 
-# clang: the fuzz targets compile the catalog's sources themselves, so they need SQLite too
-# (fuzz_gltf above), and the CSV import gets a libFuzzer target of its own, run like
-#   build/tests/catalog/fuzz_db_csv -max_total_time=60 assets/catalog
-if(CMAKE_C_COMPILER_ID MATCHES "Clang" AND CMAKE_CXX_COMPILER_ID MATCHES "Clang")
-  pkg_check_modules(CAT_DB_SQLITE3 REQUIRED IMPORTED_TARGET sqlite3)
-  if(TARGET fuzz_gltf)
-    target_link_libraries(fuzz_gltf PRIVATE PkgConfig::CAT_DB_SQLITE3)
-  endif()
-  get_target_property(CAT_DB_FUZZ_SOURCES tessera_catalog SOURCES)
-  get_target_property(CAT_DB_FUZZ_DIR tessera_catalog SOURCE_DIR)
-  list(FILTER CAT_DB_FUZZ_SOURCES INCLUDE REGEX "(^|/)db_[a-z_]+\\.c$")
-  list(TRANSFORM CAT_DB_FUZZ_SOURCES PREPEND "${CAT_DB_FUZZ_DIR}/" REGEX "^[^/]")
-  add_executable(fuzz_db_csv ${CMAKE_CURRENT_LIST_DIR}/test_db_fuzz_csv.c ${CAT_DB_FUZZ_SOURCES})
-  target_include_directories(fuzz_db_csv PRIVATE ${CAT_DB_FUZZ_DIR}/include ${CAT_DB_FUZZ_DIR}/src)
-  target_link_libraries(fuzz_db_csv PRIVATE PkgConfig::CAT_DB_SQLITE3 m)
-  target_compile_options(fuzz_db_csv PRIVATE -fsanitize=fuzzer,address,undefined
-                                             -fno-omit-frame-pointer)
-  target_link_options(fuzz_db_csv PRIVATE -fsanitize=fuzzer,address,undefined)
-endif()

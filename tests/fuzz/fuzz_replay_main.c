@@ -1,18 +1,23 @@
-/* A main() for the libFuzzer targets (fuzz_gltf.c, test_db_fuzz_csv.c) in builds without
- * libFuzzer (GCC, the CI's compiler): replays a corpus, then deterministic mutations of it
+/* A main() for the fuzz targets in tests/fuzz in builds without libFuzzer (GCC, the CI's
+ * compiler): replays a corpus, then deterministic mutations of it
  * (bit flips, byte sweeps with interesting values, truncations, duplicated and dropped runs)
  * until a time budget is spent, so the targets run briefly in every CI build, under ASan and
  * UBSan in the sanitizer build.
- *   fuzz_gltf_replay [--seconds S] FILE_OR_FOLDER...
- * A crash, a sanitizer report or an abort() in the target fails the run. */
+ *   fuzz_gltf [--seconds S] FILE_OR_FOLDER...
+ * A crash, a sanitizer report or an abort() in the target fails the run, and the input that
+ * did it is saved as crash-replay-input in the current folder (sanitizer reports too when
+ * ASAN_OPTIONS / UBSAN_OPTIONS hold abort_on_error=1, as ctest sets them). */
 #define _XOPEN_SOURCE 700
 #include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <time.h>
+#include <unistd.h>
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -63,6 +68,63 @@ static unsigned char *read_all(const char *path, size_t *size)
     *size = buf ? fread(buf, 1, MAX_INPUT, f) : 0;
     fclose(f);
     return buf;
+}
+
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TESSERA_HAS_ASAN 1
+#endif
+#endif
+#ifndef TESSERA_HAS_ASAN
+#define TESSERA_HAS_ASAN 0
+#endif
+
+static double g_slow_seconds = 1.0;
+static const uint8_t *g_current;
+static size_t g_current_size;
+
+/* Async-signal-safe: open, write and close only. */
+static void save_current_input(int sig)
+{
+    static const char msg[] = "fuzz replay: the input that failed is in crash-replay-input\n";
+    int fd = open("crash-replay-input", O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) {
+        size_t done = 0;
+        while (done < g_current_size) {
+            ssize_t n = write(fd, g_current + done, g_current_size - done);
+            if (n <= 0)
+                break;
+            done += (size_t)n;
+        }
+        close(fd);
+        if (write(2, msg, sizeof msg - 1) < 0) {
+            /* nothing more to say */
+        }
+    }
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void run_one(const uint8_t *data, size_t size)
+{
+    g_current = data;
+    g_current_size = size;
+    LLVMFuzzerTestOneInput(data, size);
+}
+
+/* A slow input is kept as slow-replay-input-N in the current folder, not a failure: the time
+ * depends on the machine's load. */
+static void report_slow(const char *seed, const unsigned char *data, size_t size, double s)
+{
+    static int count;
+    char name[64];
+    snprintf(name, sizeof name, "slow-replay-input-%d", count++);
+    FILE *f = fopen(name, "wb");
+    if (f) {
+        fwrite(data, 1, size, f);
+        fclose(f);
+    }
+    fprintf(stderr, "fuzz replay: a mutation of %s took %.1f s (kept as %s)\n", seed, s, name);
 }
 
 static uint32_t g_rng = 0x9E3779B9u;
@@ -136,15 +198,23 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: %s [--seconds S] FILE_OR_FOLDER...\n", argv[0]);
         return 2;
     }
+#if defined(__SANITIZE_ADDRESS__) || TESSERA_HAS_ASAN
+    /* ASan reports a SIGSEGV itself (with the stack) and then aborts: keep its handler */
+    static const int fatal[] = {SIGABRT};
+#else
+    static const int fatal[] = {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL};
+#endif
+    for (size_t k = 0; k < sizeof fatal / sizeof fatal[0]; k++)
+        signal(fatal[k], save_current_input);
     qsort(g_files, (size_t)g_file_count, sizeof *g_files, by_name);
     double start = now_s();
     long runs = 0;
-    LLVMFuzzerTestOneInput((const uint8_t *)"", 0);
+    run_one((const uint8_t *)"", 0);
     for (int i = 0; i < g_file_count; i++) {
         size_t size = 0;
         unsigned char *data = read_all(g_files[i], &size);
         if (data)
-            LLVMFuzzerTestOneInput(data, size);
+            run_one(data, size);
         free(data);
         runs++;
     }
@@ -154,10 +224,13 @@ int main(int argc, char **argv)
         size_t size = 0;
         unsigned char *data = read_all(g_files[i], &size);
         dst = data ? malloc(2 * size + 16) : NULL;
-        for (int k = 0; dst && k < 16; k++) {
+        for (int k = 0; dst && k < 16 && now_s() - start < seconds; k++) {
             size_t n = mutate(data, size, dst);
-            LLVMFuzzerTestOneInput(dst, n);
+            double t0 = now_s();
+            run_one(dst, n);
             runs++;
+            if (now_s() - t0 > g_slow_seconds) /* worth a look: a denial of service? */
+                report_slow(g_files[i], dst, n, now_s() - t0);
         }
         free(dst);
         free(data);

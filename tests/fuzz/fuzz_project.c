@@ -1,4 +1,4 @@
-/* libFuzzer target for the project reader (built with clang only; see CMakeLists.txt).
+/* Fuzz target for the project reader (tests/fuzz/CMakeLists.txt, docs/fuzzing.md).
  * Random bytes go to app_project_parse; what parses is freed. The write of what parses is
  * covered by the replay test (test_project_fuzz_replay.c), which needs no libFuzzer. */
 #include "app/project/project.h"

@@ -1,5 +1,4 @@
-/* libFuzzer target for the glTF loader (built only with clang; see CMakeLists.txt):
- *   fuzz_gltf -max_total_time=60 CORPUS_DIR ../shared/gltf-samples
+/* Fuzz target for the glTF/GLB loader (tests/fuzz/CMakeLists.txt, docs/fuzzing.md).
  * Each input is written to a file in a private temporary folder and loaded from there, so
  * external buffer URIs resolve inside that folder. */
 #define _XOPEN_SOURCE 700 /* mkdtemp */

@@ -1,5 +1,4 @@
-/* libFuzzer target for the catalog's CSV import (clang only; built, not run by ctest):
- *   build/tests/catalog/fuzz_db_csv -max_total_time=60 assets/catalog
+/* Fuzz target for the catalog's CSV import (tests/fuzz/CMakeLists.txt, docs/fuzzing.md).
  * Every input is imported as a dry run into one catalog in a temporary folder, so the
  * whole import path runs (CSV reader, header, row checks, writes) and is rolled back. The
  * import must return a result and a message naming the input, whatever the bytes. */
