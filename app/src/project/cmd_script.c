@@ -695,9 +695,10 @@ static int do_tile(sctx *c)
             snprintf(n->name, sizeof n->name, "%s", surface);
             n->product = ref;
             n->pattern = APP_PATTERN_STRAIGHT;
-            /* The reader's defaults (project_defaults.c): the set-out solver, an edge joint of
-             * the joint width, a light grey cement grout. */
-            n->align = APP_ALIGN_AUTO;
+            /* Centred, as scripts have always started a tiling (saved files replay the same);
+             * the reader's defaults (project_defaults.c) for the rest: an edge joint of the joint
+             * width, a light grey cement grout. */
+            n->align = APP_ALIGN_CENTRED;
             n->edge_joint_mm = -1;
             n->grout_color[0] = n->grout_color[1] = 0.6f;
             n->grout_color[2] = 0.58f;
