@@ -2,6 +2,7 @@
  * project, then prints the placement findings (app/design/placement.h, docs/editing.md). Exit 0
  * when no finding is an error, 1 otherwise, 2 for bad usage or a project that cannot be read. */
 #include "cli_commands.h"
+#include "cli_check_tiles.h"
 #include "app/design/placement.h"
 #include "app/project/project.h"
 
@@ -53,12 +54,13 @@ int cli_cmd_check(const cli_options *o)
         fprintf(stderr, "tessera check: %s: %s\n", project, err);
         rc = CHECK_USAGE;
     } else {
-        int errors = print_findings(&p, &findings);
+        int errors = print_findings(&p, &findings), tile_findings = 0;
+        cli_check_tile_cuts(&p, &cat, &tile_findings);
         printf("%s: %d fixtures checked%s; %d findings, %d errors\n", project, n,
                opt.barrier_free == APP_BARRIER_FREE_WHEELCHAIR ? " (wheelchair, DIN 18040-2)"
                : opt.barrier_free == APP_BARRIER_FREE_ON       ? " (barrier-free, DIN 18040-2)"
                                                                : "",
-               findings.count, errors);
+               findings.count + tile_findings, errors);
         rc = errors ? CHECK_FINDINGS : CHECK_OK;
         fprintf(stderr, "tessera check: footprints %.1f ms (catalog lookups), checks %.1f ms\n",
                 t1 - t0, t2 - t1);

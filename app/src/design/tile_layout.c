@@ -276,8 +276,8 @@ static void lay_field(lay_ctx *c, const app_tile_spec *f, app_tile_pattern pat, 
 #undef TO_SURFACE
 }
 
-app_result app_tile_layout_compute(const app_tile_layout_desc *desc, app_tile_layout *out,
-                                   char *err, size_t err_size)
+app_result tl_layout_region(const app_tile_layout_desc *desc, app_tile_layout *out, char *err,
+                            size_t err_size)
 {
     if (out)
         memset(out, 0, sizeof *out);
@@ -461,6 +461,52 @@ app_result app_tile_layout_compute(const app_tile_layout_desc *desc, app_tile_la
     out->grout_area_mm2 = out->region_area_mm2 - out->tiled_area_mm2;
     out->unassigned_grout_mm2 = c.unassigned;
     return APP_OK;
+}
+
+double app_tile_edge_joint_mm(const app_tiling *tiling, double g)
+{
+    return tiling->edge_joint_mm < 0 ? g : tiling->edge_joint_mm;
+}
+
+app_result app_tile_layout_compute(const app_tile_layout_desc *desc, app_tile_layout *out,
+                                   char *err, size_t err_size)
+{
+    if (out)
+        memset(out, 0, sizeof *out);
+    if (!desc || !out || !desc->region || !desc->tiling || !desc->field) {
+        tl_set_err(err, err_size, "tile_layout", "missing region, tiling or field tile");
+        return APP_ERR_SCHEMA;
+    }
+    const app_tiling *ti = desc->tiling;
+    double g = ti->grout_mm > 0 ? ti->grout_mm : desc->field->grout_mm;
+    double e = app_tile_edge_joint_mm(ti, g);
+    if (!isfinite(e) || e > 100 || !isfinite(ti->min_cut_mm) || ti->min_cut_mm < 0) {
+        tl_set_err(err, err_size, "tile_layout",
+                   "%s: the edge joint must be 0..100 mm and the minimum cut >= 0", ti->name);
+        return APP_ERR_SCHEMA;
+    }
+    app_tile_layout_desc d = *desc;
+    app_surface_region shrunk;
+    memset(&shrunk, 0, sizeof shrunk);
+    app_result r = APP_OK;
+    if (e > 0 && desc->region->outer.count >= 3) {
+        if ((r = tl_region_shrink(desc->region, e, &shrunk, err, err_size)) != APP_OK)
+            return r;
+        d.region = &shrunk;
+    }
+    app_tiling fixed = *ti;
+    if (ti->align == APP_ALIGN_AUTO) {
+        app_point2 origin;
+        r = tl_setout_solve(&d, &origin, err, err_size);
+        fixed.align = APP_ALIGN_LINE;
+        fixed.origin_mm[0] = origin.x;
+        fixed.origin_mm[1] = origin.y;
+        d.tiling = &fixed;
+    }
+    if (r == APP_OK)
+        r = tl_layout_region(&d, out, err, err_size);
+    app_surface_region_free(&shrunk);
+    return r;
 }
 
 void app_tile_layout_free(app_tile_layout *l)

@@ -63,6 +63,20 @@ void tl_decomp_free(tl_decomp *d);
 void tl_decomp_query(const tl_decomp *d, double s0, double t0, double s1, double t1,
                      void (*fn)(void *user, const tl_trap *t), void *user);
 
+/* The region shrunk by the edge joint e > 0: the outline moved in, every hole grown
+ * (tile_edge_joint.c). *out is initialised here; free it with app_surface_region_free. */
+app_result tl_region_shrink(const app_surface_region *in, double e, app_surface_region *out,
+                            char *err, size_t err_size);
+
+/* The layout of desc on its region as given (no edge joint, align not AUTO): tile_layout.c. */
+app_result tl_layout_region(const app_tile_layout_desc *desc, app_tile_layout *out, char *err,
+                            size_t err_size);
+
+/* The set-out solver (tile_setout.c): the grid point for desc (its region already shrunk by
+ * the edge joint) that keeps the smallest cut largest, then lays the fewest tiles. */
+app_result tl_setout_solve(const app_tile_layout_desc *desc, app_point2 *origin, char *err,
+                           size_t err_size);
+
 void tl_set_err(char *err, size_t err_size, const char *prefix, const char *fmt, ...);
 
 #endif

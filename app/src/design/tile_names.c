@@ -6,7 +6,7 @@
 /* As the project file spells them (docs/project-format.md, project_read_tilings.c). */
 static const char *const pattern_names[] = {"straight",       "half-offset", "third-offset",
                                             "vertical-stack", "diagonal",    "herringbone"};
-static const char *const align_names[] = {"centred", "corner", "line"};
+static const char *const align_names[] = {"centred", "corner", "line", "auto"};
 
 /* "half_offset" for "half-offset": what a shell user may type. */
 static int same_but_underscore(const char *text, const char *name)
@@ -36,12 +36,12 @@ int app_tile_pattern_parse(const char *text, app_tile_pattern *out)
 
 const char *app_tile_align_name(app_tile_align a)
 {
-    return (int)a >= 0 && (int)a < 3 ? align_names[a] : "";
+    return (int)a >= 0 && (int)a < 4 ? align_names[a] : "";
 }
 
 int app_tile_align_parse(const char *text, app_tile_align *out)
 {
-    for (int i = 0; text && i < 3; i++)
+    for (int i = 0; text && i < 4; i++)
         if (!strcasecmp(text, align_names[i])) {
             *out = (app_tile_align)i;
             return 1;

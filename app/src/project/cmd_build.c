@@ -272,7 +272,7 @@ static app_result check_tiling(const app_project *p, const app_tiling *t, char *
             !finite_in(t->borders[k].bottom_mm, 0, MAX_COORD_MM))
             return fail(err, err_size, APP_ERR_SCHEMA,
                         "tiling \"%s\": border %d needs a product and a height >= 0", t->name, k);
-    if ((unsigned)t->pattern > APP_PATTERN_HERRINGBONE || (unsigned)t->align > APP_ALIGN_LINE)
+    if ((unsigned)t->pattern > APP_PATTERN_HERRINGBONE || (unsigned)t->align > APP_ALIGN_AUTO)
         return fail(err, err_size, APP_ERR_SCHEMA, "tiling \"%s\": unknown pattern or alignment",
                     t->name);
     if (!finite_in(t->grout_mm, 0, 100))

@@ -695,8 +695,11 @@ static int do_tile(sctx *c)
             snprintf(n->name, sizeof n->name, "%s", surface);
             n->product = ref;
             n->pattern = APP_PATTERN_STRAIGHT;
+            /* Centred, as scripts have always started a tiling (saved files replay the same);
+             * the reader's defaults (project_defaults.c) for the rest: an edge joint of the joint
+             * width, a light grey cement grout. */
             n->align = APP_ALIGN_CENTRED;
-            /* The reader's default: a light grey cement grout (project_defaults.c). */
+            n->edge_joint_mm = -1;
             n->grout_color[0] = n->grout_color[1] = 0.6f;
             n->grout_color[2] = 0.58f;
         }

@@ -90,6 +90,7 @@ void pj_default_tiling(app_tiling *t)
 {
     memset(t, 0, sizeof *t);
     t->pattern = APP_PATTERN_STRAIGHT;
-    t->align = APP_ALIGN_CENTRED;
+    t->align = APP_ALIGN_AUTO;                /* the set-out solver, until the user fixes a start */
+    t->edge_joint_mm = -1;                    /* the joint width */
     set3f(t->grout_color, 0.6f, 0.6f, 0.58f); /* a light grey cement grout */
 }

@@ -149,7 +149,7 @@ app_result pj_get_enum(pj_ctx *c, const cJSON *obj, const char *key, int require
 extern const char *const pj_opening_type_names[2];
 extern const char *const pj_swing_names[5];
 extern const char *const pj_pattern_names[6];
-extern const char *const pj_align_names[3];
+extern const char *const pj_align_names[4];
 
 /* A material reference (the member `key` of obj): a name, or an inline material object which
  * is added as `inline_name`. Absent: the material "default" (added if the file has none).

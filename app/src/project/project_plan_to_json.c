@@ -309,11 +309,15 @@ static void put_tiling(pb *b, cJSON *list, const app_tiling *t)
     name_of(b, e, "pattern", (int)t->pattern, pj_pattern_names, 6);
     num(b, e, "grout", t->grout_mm);
     vec(b, e, "grout_color", NULL, t->grout_color, 3);
-    name_of(b, e, "align", (int)t->align, pj_align_names, 3);
+    name_of(b, e, "align", (int)t->align, pj_align_names, 4);
     vec(b, e, "origin", t->origin_mm, NULL, 2);
     num(b, e, "rotation", t->rotation_deg);
     num(b, e, "from", t->from_mm);
     num(b, e, "to", t->to_mm);
+    if (t->edge_joint_mm >= 0)
+        num(b, e, "edge_joint", t->edge_joint_mm);
+    if (t->min_cut_mm > 0)
+        num(b, e, "min_cut", t->min_cut_mm);
     if (b->r != APP_OK || t->border_count == 0)
         return;
     if (t->border_count < 0 || t->border_count > APP_TILING_MAX_BORDERS) {

@@ -9,7 +9,7 @@
 
 const char *const pj_pattern_names[6] = {"straight",       "half-offset", "third-offset",
                                          "vertical-stack", "diagonal",    "herringbone"};
-const char *const pj_align_names[3] = {"centred", "corner", "line"};
+const char *const pj_align_names[4] = {"centred", "corner", "line", "auto"};
 
 static const pj_range HEIGHT = {0.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0};
 static const pj_range GROUT = {0.0, 100.0, 0, 0, 1};
@@ -120,11 +120,13 @@ static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, void *out
         (r = pj_get_enum(c, item, "pattern", 0, pj_pattern_names, 6, &pattern)) != APP_OK ||
         (r = pj_get_number(c, item, "grout", 0, GROUT, &t->grout_mm)) != APP_OK ||
         (r = pj_get_color(c, item, "grout_color", 0, t->grout_color)) != APP_OK ||
-        (r = pj_get_enum(c, item, "align", 0, pj_align_names, 3, &align)) != APP_OK ||
+        (r = pj_get_enum(c, item, "align", 0, pj_align_names, 4, &align)) != APP_OK ||
         (r = pj_get_vec(c, item, "origin", 0, 2, PJ_ANY, t->origin_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "rotation", 0, PJ_ANY, &t->rotation_deg)) != APP_OK ||
         (r = pj_get_number(c, item, "from", 0, HEIGHT, &t->from_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "to", 0, HEIGHT, &t->to_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "edge_joint", 0, GROUT, &t->edge_joint_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "min_cut", 0, HEIGHT, &t->min_cut_mm)) != APP_OK ||
         (r = read_borders(c, item, t)) != APP_OK)
         return r;
     t->pattern = (app_tile_pattern)pattern;

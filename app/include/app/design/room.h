@@ -118,7 +118,8 @@ typedef enum app_tile_align {
     APP_ALIGN_CENTRED = 0, /* a grout cross (or a tile centre, see align_tile_centre) at the
                               centre of the surface region */
     APP_ALIGN_CORNER,      /* a whole tile at the region's start corner (bottom-left) */
-    APP_ALIGN_LINE         /* the grid passes through origin_mm (surface coordinates) */
+    APP_ALIGN_LINE,        /* the grid passes through origin_mm (surface coordinates) */
+    APP_ALIGN_AUTO         /* the set-out solver chooses the grid point (tile_setout.c) */
 } app_tile_align;
 
 /* A row of border (BOR) or decor (DEK) tiles across a wall at a height. */
@@ -145,6 +146,10 @@ typedef struct app_tiling {
                               means up to the ceiling. Floors and ceilings: ignored. */
     app_tile_border borders[APP_TILING_MAX_BORDERS];
     int border_count;
+    double edge_joint_mm; /* the elastic joint left open along the region's boundary: < 0 = the
+                             joint width (a project file's default), 0 = none */
+    double min_cut_mm;    /* the smallest cut piece allowed: 0 = a third of the tile's short
+                             side, never under 50 mm (docs/tiling.md "Set-out") */
 } app_tiling;
 
 #ifdef __cplusplus

@@ -200,11 +200,28 @@ typedef struct app_tile_layout {
 app_result app_tile_layout_compute(const app_tile_layout_desc *desc, app_tile_layout *out,
                                    char *err, size_t err_size);
 
+/* The minimum-cut rule (docs/tiling.md "Set-out"): a piece cut across a tile side of length
+ * side must be at least app_tile_min_cut_mm wide: tiling->min_cut_mm when set, else a third of
+ * the side and never under 50 mm (nor over the side itself). */
+double app_tile_min_cut_mm(const app_tiling *tiling, double side_mm);
+
+/* The worst cut piece of a layout against the rule: the smallest ratio of a cut piece's width to
+ * the rule for the side it was cut across (>= 1: every cut keeps the rule; a large number when
+ * nothing is cut across a side). *tile gets its index (-1 when none), *width_mm its width and
+ * *rule_mm the rule (either may be NULL). Notched pieces whose extent is the whole tile count as
+ * uncut. */
+double app_tile_layout_worst_cut(const app_tile_layout *l, const app_tiling *tiling, int *tile,
+                                 double *width_mm, double *rule_mm);
+
+/* The edge joint a tiling leaves at its region's boundary: tiling->edge_joint_mm, or the joint
+ * width g when it is negative. */
+double app_tile_edge_joint_mm(const app_tiling *tiling, double g);
+
 /* Frees the arrays and zeroes *l; safe on a zeroed layout and on NULL. */
 void app_tile_layout_free(app_tile_layout *l);
 
 /* "straight", "half-offset", "third-offset", "vertical-stack", "diagonal", "herringbone";
- * "centred", "corner", "line" (as the project file spells them). Never NULL ("" when out of
+ * "centred", "corner", "line", "auto" (as the project file spells them). Never NULL ("" when out of
  * range). Parsers return 1 and set *out when known (any case; "_" for "-" too), else 0. */
 const char *app_tile_pattern_name(app_tile_pattern p);
 int app_tile_pattern_parse(const char *text, app_tile_pattern *out);
