@@ -1,32 +1,18 @@
-/* View and projection matrices for an rd_view, with near/far fitted to the scene so that
- * scenes from 1 mm to 10 km keep usable depth precision (RENDERING.md section 11). */
+/* View and projection matrices for an rd_view, with near/far fitted to the room seen from the
+ * eye (depth_range.h) so that scenes from 1 mm to 10 km keep usable depth precision
+ * (RENDERING.md section 11). */
 #include "camera.h"
+#include "depth_range.h"
 #include "probe.h"
 #include "render_internal.h"
 
 #include <cglm/cglm.h>
 #include <math.h>
 
-static void world_bounds(const rd_context *ctx, const rd_scene_view_input *in, float lo[3],
-                         float hi[3])
-{
-    for (int k = 0; k < 3; k++) {
-        lo[k] = INFINITY;
-        hi[k] = -INFINITY;
-    }
-    for (int i = 0; i < in->object_count; i++) {
-        float a[3], b[3];
-        rd_object_world_bounds((rd_context *)ctx, &in->objects[i], a, b);
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fminf(lo[k], a[k]);
-            hi[k] = fmaxf(hi[k], b[k]);
-        }
-    }
-}
-
 rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_scene_view_input *in,
                              float view_proj[16], float inverse_view_proj[16], float view_rot[9])
 {
+    (void)ctx;
     vec3 eye = {v->eye[0], v->eye[1], v->eye[2]};
     vec3 target = {v->target[0], v->target[1], v->target[2]};
     vec3 up = {v->up[0], v->up[1], v->up[2]};
@@ -53,20 +39,30 @@ rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_s
     float near_m = v->near_m, far_m = v->far_m;
     if (!(near_m > 0.0f) || !(far_m > near_m)) {
         float lo[3], hi[3];
-        world_bounds(ctx, in, lo, hi);
+        rd_scene_depth_bounds(in->scene, lo, hi);
         float reach = 0.0f;
-        if (lo[0] <= hi[0])
-            for (int c = 0; c < 8; c++) {
-                vec3 corner = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]};
-                reach = fmaxf(reach, glm_vec3_distance(eye, corner));
-            }
+        for (int c = 0; c < 8; c++) {
+            vec3 corner = {c & 1 ? hi[0] : lo[0], c & 2 ? hi[1] : lo[1], c & 4 ? hi[2] : lo[2]};
+            reach = fmaxf(reach, glm_vec3_distance(eye, corner));
+        }
         if (!(reach > 0.0f) || !isfinite(reach))
             reach = 100.0f;
         /* near = far / 1000 keeps 24-bit depth steps under 0.2 mm at 3 m in a 4 m room, so a
          * tile band 4 mm proud of its wall does not fight it; nothing in a planner's view sits
-         * closer to the eye than a thousandth of the scene. */
+         * closer to the eye than a thousandth of the scene (rd_depth_near caps it for tall
+         * narrow rooms). */
         far_m = reach * 1.05f;
-        near_m = far_m * 1e-3f;
+        near_m = rd_depth_near(far_m, lo, hi);
+        /* An eye a few centimetres from a wall looks along it: the near plane must stay in
+         * front of that wall in every pixel (a plane at distance d is nowhere nearer than
+         * d cos(half diagonal) in view depth, and half the field's diagonal stays under 60
+         * degrees), or the room opens onto the clear colour there. */
+        float room_lo[3], room_hi[3], wall = INFINITY;
+        rd_effective_proxy(in->scene, room_lo, room_hi);
+        for (int k = 0; k < 3; k++)
+            wall = fminf(wall, fminf(eye[k] - room_lo[k], room_hi[k] - eye[k]));
+        if (wall > 0.0f && isfinite(wall))
+            near_m = fmaxf(fminf(near_m, 0.5f * wall), far_m * 1e-6f);
     }
     mat4 view, proj, vp;
     glm_lookat(eye, target, up, view);

@@ -4,8 +4,7 @@
 #include "render/render.h"
 
 typedef struct rd_scene_view_input {
-    const rd_object_desc *objects;
-    int object_count;
+    const rd_scene *scene; /* its depth bounds (depth_range.h) fit near and far */
 } rd_scene_view_input;
 
 rd_result rd_camera_matrices(const rd_context *ctx, const rd_view *v, const rd_scene_view_input *in,

@@ -1,6 +1,7 @@
 /* Per-object reflection probes (RENDERING.md sections 3, 5, 8): which objects get one, when
  * each is captured, at what resolution, and which texture the main pass samples. */
 #include "probe.h"
+#include "depth_range.h"
 #include "probe_planar.h"
 #include "draw.h"
 #include "emitters.h"
@@ -394,8 +395,12 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
     mat4 view, proj, vp;
     glm_lookat(p->centre, target, up, view);
     /* A probe often sits millimetres in front of a wall (a mirror's centre is on its
-     * surface): the near plane must not cut that wall away. */
-    glm_perspective(glm_rad(90.0f), 1.0f, fmaxf(far_m * 1e-4f, 1e-5f), far_m, proj);
+     * surface): the near plane must not cut that wall away, nor, in a tall narrow room, the
+     * walls beside it (rd_depth_near's cap by the room's smallest side). */
+    float room_lo[3], room_hi[3];
+    rd_effective_proxy(s, room_lo, room_hi);
+    float near_m = 0.1f * rd_depth_near(far_m, room_lo, room_hi);
+    glm_perspective(glm_rad(90.0f), 1.0f, fmaxf(near_m, 1e-5f), far_m, proj);
     glm_mat4_mul(proj, view, vp);
     if (p->surface) {
         /* No surface (the clear) has no highlight: shininess -1. */

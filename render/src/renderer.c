@@ -110,7 +110,7 @@ static rd_result prepare(rd_context *ctx, rd_scene *scene, const rd_view *v, int
     rd_result r = validate_view(ctx, v, samples);
     if (r != RD_OK)
         return r;
-    rd_scene_view_input in = {scene->objects, scene->object_count};
+    rd_scene_view_input in = {scene};
     r = rd_camera_matrices(ctx, v, &in, vp, inv_vp, view_rot);
     if (r != RD_OK)
         return r;

@@ -6,6 +6,7 @@
  * work (early depth test: llvmpipe's fastest pass); shadow.glsl turns a point's view depth
  * into the same measure. */
 #include "shadow.h"
+#include "depth_range.h"
 
 #include "gl_funcs.h"
 #include "phase_timer.h"
@@ -129,27 +130,6 @@ void rd_shadow_maps_destroy(rd_scene *scene)
     scene->shadow_maps = NULL;
 }
 
-static void scene_bounds(rd_context *ctx, const rd_scene *s, float lo[3], float hi[3])
-{
-    for (int k = 0; k < 3; k++) {
-        lo[k] = INFINITY;
-        hi[k] = -INFINITY;
-    }
-    for (int i = 0; i < s->object_count; i++) {
-        float a[3], b[3];
-        rd_object_world_bounds(ctx, &s->objects[i], a, b);
-        for (int k = 0; k < 3; k++) {
-            lo[k] = fminf(lo[k], a[k]);
-            hi[k] = fmaxf(hi[k], b[k]);
-        }
-    }
-    if (!(lo[0] <= hi[0]))
-        for (int k = 0; k < 3; k++) {
-            lo[k] = -1.0f;
-            hi[k] = 1.0f;
-        }
-}
-
 static rd_result ensure_gl(rd_shadow_maps *m, int w, int h)
 {
     if (!m->program) {
@@ -233,10 +213,11 @@ static float reach_from(const float p[3], const float lo[3], const float hi[3])
 }
 
 /* A perspective map's near plane: 1/1000 of its reach keeps the 32-bit float window depth
- * finer than 0.1 mm at 2 m in a 5 m room (dz = z^2 / near x 2^-24). */
-static float near_of(float far_m)
+ * finer than 0.1 mm at 2 m in a 5 m room (dz = z^2 / near x 2^-24); rd_depth_near caps it by
+ * the room's smallest side for tall narrow rooms. */
+static float near_of(float far_m, const float lo[3], const float hi[3])
 {
-    return fmaxf(far_m * 1e-3f, 1e-4f);
+    return fmaxf(rd_depth_near(far_m, lo, hi), 1e-4f);
 }
 
 /* GL's window depth of view depth z for glm_perspective(near, far): A - B / z. */
@@ -254,7 +235,7 @@ static void render_light(rd_context *ctx, const rd_scene *s, rd_shadow_maps *m, 
     const rd_light *l = &s->lights[i];
     float face = (float)m->face;
     if (m->cube[i]) {
-        float far_m = reach_from(l->position, lo, hi), near_m = near_of(far_m);
+        float far_m = reach_from(l->position, lo, hi), near_m = near_of(far_m, lo, hi);
         set_perspective_depth(m, i, near_m, far_m);
         m->texel[i][0] = 0.0f;
         m->texel[i][1] = 2.0f / face; /* tan 45 = 1: a face spans 2 d over `face` texels */
@@ -276,7 +257,7 @@ static void render_light(rd_context *ctx, const rd_scene *s, rd_shadow_maps *m, 
         glm_vec3_copy((vec3){0, 1, 0}, up);
     mat4 view, proj, vp;
     if (l->type == RD_LIGHT_SPOT) {
-        float far_m = reach_from(l->position, lo, hi), near_m = near_of(far_m);
+        float far_m = reach_from(l->position, lo, hi), near_m = near_of(far_m, lo, hi);
         float half = acosf(fminf(fmaxf(l->spot_outer_cos, CUBE_SPOT_COS), 1.0f)) + glm_rad(2.0f);
         vec3 target;
         glm_vec3_add((float *)l->position, dir, target);
@@ -346,7 +327,7 @@ static rd_result shadow_maps_update(rd_context *ctx, rd_scene *s)
     if (r != RD_OK)
         return r;
     float lo[3], hi[3];
-    scene_bounds(ctx, s, lo, hi);
+    rd_scene_depth_bounds(s, lo, hi);
     glBindFramebuffer(GL_FRAMEBUFFER, m->fbo);
     glUseProgram(m->program);
     glEnable(GL_DEPTH_TEST);

@@ -1,5 +1,5 @@
 /* check_image_file FILE REFERENCE WIDTHxHEIGHT [--max-diff N] [--mean-diff M] [--psnr DB]
- *                  [--white W] [--tone neutral|agx|reinhard|clamp]
+ *                  [--white W] [--tone neutral|agx|reinhard|clamp] [--black-excess F]
  *
  * Reads back an image `tessera render` wrote (render/image_io.h, the project's own reader) and
  * compares it with the same render written in another format: both must read, have the size
@@ -12,7 +12,12 @@
  * float file (EXR) holds the exposed linear radiance (rd_read_linear): it is tone mapped as the
  * renderer's resolve does (rd_ref_display_rgb8: the tone curve --tone, default neutral, the
  * project default; L_white = W for reinhard, default 4; the exposure and white balance are in
- * the file) before it is compared. */
+ * the file) before it is compared.
+ *
+ * --black-excess F: at most the fraction F of the pixels may be black in FILE (every display
+ * value at most 1 of 255: the clear colour, where no surface was drawn) where REFERENCE is
+ * not; for a render against the tracer's view of the same camera (the tracer never leaves a
+ * pixel undefined). */
 #include "render/image_io.h"
 #include "render/render.h"
 #include "render/shade_ref.h"
@@ -89,10 +94,11 @@ int main(int argc, char **argv)
     int width = 0, height = 0;
     if (argc < 4 || sscanf(argv[3], "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0) {
         fprintf(stderr, "usage: check_image_file FILE REFERENCE WIDTHxHEIGHT [--max-diff N] "
-                        "[--mean-diff M] [--psnr DB] [--white W] [--tone T]\n");
+                        "[--mean-diff M] [--psnr DB] [--white W] [--tone T] "
+                        "[--black-excess F]\n");
         return 2;
     }
-    double max_allowed = 0.0, mean_allowed = 0.0, psnr_min = 0.0, white = 4.0;
+    double max_allowed = 0.0, mean_allowed = 0.0, psnr_min = 0.0, white = 4.0, black_excess = -1.0;
     for (int i = 4; i < argc; i++) {
         if (!strcmp(argv[i], "--tone")) {
             if (i + 1 >= argc || rd_tonemap_parse(argv[i + 1], &tone) != RD_OK) {
@@ -102,11 +108,12 @@ int main(int argc, char **argv)
             i++;
             continue;
         }
-        double *target = !strcmp(argv[i], "--max-diff")    ? &max_allowed
-                         : !strcmp(argv[i], "--mean-diff") ? &mean_allowed
-                         : !strcmp(argv[i], "--psnr")      ? &psnr_min
-                         : !strcmp(argv[i], "--white")     ? &white
-                                                           : NULL;
+        double *target = !strcmp(argv[i], "--max-diff")       ? &max_allowed
+                         : !strcmp(argv[i], "--mean-diff")    ? &mean_allowed
+                         : !strcmp(argv[i], "--psnr")         ? &psnr_min
+                         : !strcmp(argv[i], "--white")        ? &white
+                         : !strcmp(argv[i], "--black-excess") ? &black_excess
+                                                              : NULL;
         char *end = NULL;
         if (!target || i + 1 >= argc || (*target = strtod(argv[i + 1], &end), *end)) {
             fprintf(stderr, "check_image_file: bad option \"%s\"\n", argv[i]);
@@ -142,6 +149,22 @@ int main(int argc, char **argv)
         if (psnr < psnr_min) {
             fprintf(stderr, "FAIL: PSNR %.2f dB < %.2f dB\n", psnr, psnr_min);
             ok = 0;
+        }
+        if (black_excess >= 0.0) {
+            size_t pixels = count / 3, only_file = 0, in_ref = 0;
+            for (size_t i = 0; i < pixels; i++) {
+                int black_a = a[3 * i] <= 1.0f && a[3 * i + 1] <= 1.0f && a[3 * i + 2] <= 1.0f;
+                int black_b = b[3 * i] <= 1.0f && b[3 * i + 1] <= 1.0f && b[3 * i + 2] <= 1.0f;
+                only_file += black_a && !black_b;
+                in_ref += black_b;
+            }
+            double excess = (double)only_file / (double)pixels;
+            printf("black pixels: %.2f %% of %s where %s is not (%.2f %% black there)\n",
+                   100.0 * excess, file, ref, 100.0 * (double)in_ref / (double)pixels);
+            if (excess > black_excess) {
+                fprintf(stderr, "FAIL: black excess %.4f > %.4f\n", excess, black_excess);
+                ok = 0;
+            }
         }
     }
     free(a);

@@ -2,6 +2,7 @@
  * project, then prints the placement findings (app/design/placement.h, docs/editing.md). Exit 0
  * when no finding is an error, 1 otherwise, 2 for bad usage or a project that cannot be read. */
 #include "cli_commands.h"
+#include "app/design/far_objects.h"
 #include "cli_check_tiles.h"
 #include "app/design/placement.h"
 #include "app/project/project.h"
@@ -49,6 +50,8 @@ int cli_cmd_check(const cli_options *o)
     double t1 = cli_now_ms();
     if (r == APP_OK)
         r = app_placement_check(&p, fx, n, &opt, &findings, err, sizeof err);
+    if (r == APP_OK)
+        r = app_far_objects_check(&p, fx, n, &findings, err, sizeof err);
     double t2 = cli_now_ms();
     if (r != APP_OK) {
         fprintf(stderr, "tessera check: %s: %s\n", project, err);

@@ -105,6 +105,7 @@ typedef struct cli_session {
     app_project project;
     rd_context *ctx;
     app_scene scene;
+    double black_fraction; /* of the last cli_render_large image (cli_black_pixels.h) */
 } cli_session;
 
 int cli_session_open(const cli_options *o, cli_session *s);

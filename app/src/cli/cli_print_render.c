@@ -1,5 +1,6 @@
 /* Print-resolution renders: tiles (rd_render_tiled), DPI in the file, a progress bar. */
 #include "cli_print_render.h"
+#include "cli_black_pixels.h"
 
 #include "render/image_io.h"
 
@@ -75,6 +76,7 @@ int cli_render_large(cli_session *s, const rd_view *view, const char *path, int 
     cli_progress_init(&bar, "rendering");
     int rc = cli_render_pixels(s, view, tile_max, rgba, linear, &bar);
     if (rc == CLI_OK) {
+        s->black_fraction = cli_black_fraction(rgba, view->width, view->height);
         double write_start = cli_now_ms();
         char err[1024];
         rd_image_result ir = is_float ? rd_image_write_float(path, view->width, view->height, 4,

@@ -2,6 +2,7 @@
  * stored camera into DIR/NAME.png. Any size: beyond the GL limits the image is rendered in tiles
  * (rd_render_tiled). */
 #include "cli_commands.h"
+#include "cli_black_pixels.h"
 #include "cli_stats.h"
 #include "cli_print_render.h"
 
@@ -33,6 +34,8 @@ static int render_all_views(cli_session *s, const cli_options *o, rd_view *view)
             rc = cli_session_view(s, o, name[0] ? name : NULL, 0, 0, view);
         if (rc == CLI_OK)
             rc = cli_render_large(s, view, path, o->dpi, o->tile);
+        if (rc == CLI_OK)
+            rc = cli_check_room_visible(s, name, path);
         if (rc != CLI_OK)
             return rc;
     }
@@ -65,6 +68,10 @@ int cli_cmd_render(const cli_options *o)
         rd_frame_stats st = rd_last_frame_stats(s.ctx);
         rc = cli_write_stats(o->stats, &s, o, &view, &st, o->all_views ? NULL : o->output);
     }
+    /* After the statistics, which describe the frame whatever it shows. */
+    if (rc == CLI_OK && !o->all_views)
+        rc = cli_check_room_visible(&s, o->camera ? o->camera : s.project.cameras[0].name,
+                                    o->output);
     cli_session_close(&s);
     return rc;
 }

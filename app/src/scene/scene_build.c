@@ -293,8 +293,10 @@ app_result app_view_from_camera(const app_project *p, const char *camera, int wi
                  .tonemap = app_tone_to_rd(p->render.tone),
                  .white_balance_k = p->render.white_balance_k,
                  .white = p->render.white};
+    double eye_mm[3] = {c->position_mm[0], c->position_mm[1], c->position_mm[2]};
+    app_camera_keep_inside(p, eye_mm);
     for (int k = 0; k < 3; k++) {
-        v.eye[k] = (float)(c->position_mm[k] * 1e-3);
+        v.eye[k] = (float)(eye_mm[k] * 1e-3);
         v.target[k] = (float)(c->target_mm[k] * 1e-3);
         v.up[k] = (float)c->up[k];
     }

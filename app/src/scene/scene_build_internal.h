@@ -37,4 +37,12 @@ void app_room_add_tiles(const app_project *p, const app_fixture_box *covers, int
 /* M = T(position) * Rz * Ry * Rx * S(scale * size), column-major, metres. */
 void app_object_transform(const app_object *o, const double size_m[3], float out[16]);
 
+/* How far inside the room a camera on a wall, the floor or the flat ceiling is moved (mm):
+ * enough to keep the surfaces it stands on beyond the near plane of rooms up to about 3 m
+ * high (render/src/depth_range.h: near <= 1/250 of the room's smallest side). */
+#define APP_CAMERA_WALL_CLEARANCE_MM 25.0
+/* Moves eye_mm off a wall (within the clearance of a wall segment, on either side), the floor
+ * or the flat ceiling, to the clearance inside the room (camera_inside.c). */
+void app_camera_keep_inside(const app_project *p, double eye_mm[3]);
+
 #endif
