@@ -50,6 +50,13 @@ void rd_image_convert_channels_f32(const float *src, int src_ch, float *dst, int
  * IEND; 0 with a message in detail when the PNG is truncated or its chunk list is corrupt. */
 int rd_image_png_chunks_complete(FILE *f, long long file_size, char *detail, size_t detail_size);
 
+/* Copies the JPEG stream data[0..size) into *out (malloc'd) with an XMP APP1 segment holding
+ * the packet xmp inserted after the JFIF header (image_xmp.c). 1 on success, 0 with a message
+ * in detail when the packet is too large, data is no JPEG or memory runs out. */
+int rd_image_jpeg_insert_xmp(const unsigned char *data, size_t size, const char *xmp,
+                             unsigned char **out, size_t *out_size, char *detail,
+                             size_t detail_size);
+
 /* snprintf into err when err is usable; trailing whitespace and newlines are trimmed. */
 void rd_image_set_error(char *err, size_t err_size, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));

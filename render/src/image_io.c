@@ -4,23 +4,25 @@
 
 #include "image_internal.h"
 #include "image_io_oiio.h"
+#include "image_write_file.h"
 
 #include <errno.h>
-#include <fcntl.h>
-#include <stdatomic.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 static _Thread_local rd_image_fault fault_injected = RD_IMAGE_FAULT_NONE;
-static atomic_uint temp_counter;
 
 void rd_image_debug_set_fault(rd_image_fault fault)
 {
     fault_injected = fault;
+}
+
+rd_image_fault rd_image_fault_injected(void)
+{
+    return fault_injected;
 }
 
 void rd_image_free(rd_image *img)
@@ -140,65 +142,6 @@ rd_image_result rd_image_read(const char *path, rd_image *out, int *nonfinite_re
 
 /* ---- writing ---------------------------------------------------------------------------- */
 
-/* Creates PATH.tmp-<pid>-<n> exclusively and returns its name (malloc'd), or NULL with the
- * message set. Creating it here, not in the adapter, gives the errno of the real cause. */
-static char *create_temp_file(const char *path, rd_image_result *result, char *err, size_t err_size)
-{
-    size_t cap = strlen(path) + 64;
-    char *temp = malloc(cap);
-    if (temp == NULL) {
-        rd_image_set_error(err, err_size, "%s: cannot write: out of memory", path);
-        *result = RD_IMAGE_ERR_OUT_OF_MEMORY;
-        return NULL;
-    }
-    for (int attempt = 0; attempt < 16; attempt++) {
-        unsigned n = atomic_fetch_add(&temp_counter, 1u);
-        snprintf(temp, cap, "%s.tmp-%ld-%u", path, (long)getpid(), n);
-        int fd = open(temp, O_WRONLY | O_CREAT | O_EXCL, 0666);
-        if (fd >= 0) {
-            close(fd);
-            return temp;
-        }
-        if (errno != EEXIST) {
-            break;
-        }
-    }
-    rd_image_set_error(err, err_size, "%s: cannot write: %s", path, strerror(errno));
-    *result = RD_IMAGE_ERR_IO;
-    free(temp);
-    return NULL;
-}
-
-/* Writes through a temporary file and renames it over desc->path's target on success. */
-static rd_image_result write_atomically(const char *path, rd_oiio_write_desc desc,
-                                        const rd_image_format_info *fmt, char *err, size_t err_size)
-{
-    rd_image_result result = RD_IMAGE_OK;
-    char *temp = create_temp_file(path, &result, err, err_size);
-    if (temp == NULL) {
-        return result;
-    }
-    char detail[512] = "";
-    desc.path = temp;
-    rd_oiio_status st = rd_oiio_write(&desc, detail, sizeof detail);
-    if (st != RD_OIIO_OK) {
-        rd_image_set_error(err, err_size, "%s: cannot write %s: %s", path, fmt->name, detail);
-        result = st == RD_OIIO_ERR_NOMEM ? RD_IMAGE_ERR_OUT_OF_MEMORY : RD_IMAGE_ERR_IO;
-    } else if (fault_injected == RD_IMAGE_FAULT_AFTER_TEMP_WRITE) {
-        rd_image_set_error(err, err_size, "%s: cannot write: injected fault after writing %s", path,
-                           temp);
-        result = RD_IMAGE_ERR_IO;
-    } else if (rename(temp, path) != 0) {
-        rd_image_set_error(err, err_size, "%s: cannot replace: %s", path, strerror(errno));
-        result = RD_IMAGE_ERR_IO;
-    }
-    if (result != RD_IMAGE_OK) {
-        remove(temp);
-    }
-    free(temp);
-    return result;
-}
-
 /* The 8-bit writes' compression. Print-size PNGs (above 4 M pixels) take zlib level 1 instead
  * of libpng's default 6: a print's PNG is written in well under half the time for a file about
  * a third larger, a trade a print pays gladly (docs/benchmarks.md). */
@@ -279,9 +222,9 @@ rd_image_result rd_image_read_dpi(const char *path, float *dpi, char *err, size_
     return RD_IMAGE_OK;
 }
 
-rd_image_result rd_image_write_rgba8_dpi(const char *path, int width, int height,
-                                         const unsigned char *rgba, float dpi, char *err,
-                                         size_t err_size)
+static rd_image_result write_rgba8(const char *path, int width, int height,
+                                   const unsigned char *rgba, float dpi, const char *xmp, char *err,
+                                   size_t err_size)
 {
     rd_image_result result;
     const rd_image_format_info *fmt =
@@ -322,9 +265,23 @@ rd_image_result rd_image_write_rgba8_dpi(const char *path, int width, int height
         .unassociated_alpha = 1,
         .dpi = dpi > 0.0f && dpi < 1e6f ? dpi : 0.0f,
     };
-    result = write_atomically(path, desc, fmt, err, err_size);
+    result = rd_image_write_atomic(path, desc, fmt, xmp, err, err_size);
     free(converted);
     return result;
+}
+
+rd_image_result rd_image_write_rgba8_dpi(const char *path, int width, int height,
+                                         const unsigned char *rgba, float dpi, char *err,
+                                         size_t err_size)
+{
+    return write_rgba8(path, width, height, rgba, dpi, NULL, err, err_size);
+}
+
+rd_image_result rd_image_write_rgba8_xmp(const char *path, int width, int height,
+                                         const unsigned char *rgba, const char *xmp, char *err,
+                                         size_t err_size)
+{
+    return write_rgba8(path, width, height, rgba, 0.0f, xmp, err, err_size);
 }
 
 rd_image_result rd_image_write_float(const char *path, int width, int height, int channels,
@@ -368,7 +325,7 @@ rd_image_result rd_image_write_float(const char *path, int width, int height, in
         .colorspace = "Linear",
         .unassociated_alpha = 0,
     };
-    result = write_atomically(path, desc, fmt, err, err_size);
+    result = rd_image_write_atomic(path, desc, fmt, NULL, err, err_size);
     free(converted);
     return result;
 }

@@ -3,6 +3,7 @@
 // Decisions about formats, limits and conversions belong to image_io.c, not to this file.
 #include "image_io_oiio.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <memory>
 #include <new>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -121,13 +123,25 @@ extern "C" void rd_oiio_close(rd_oiio_input *in)
     }
 }
 
-extern "C" rd_oiio_status rd_oiio_write(const rd_oiio_write_desc *d, char *err, size_t err_size)
+// Writes through OIIO to d->path, or into *memory when memory is not NULL and the format's
+// writer takes an IOProxy. In memory no write can fail, so libjpeg's and libpng's own I/O error
+// handling (libjpeg's default error_exit ends the process) is never reached; the caller writes
+// the bytes and checks every result itself.
+static rd_oiio_status write_image(const rd_oiio_write_desc *d, rd_oiio_bytes *memory, char *err,
+                                  size_t err_size)
 {
     try {
         std::unique_ptr<OIIO::ImageOutput> out = OIIO::ImageOutput::create(d->format);
         if (!out) {
             set_message(err, err_size, OIIO::geterror());
             return RD_OIIO_ERR_OPEN;
+        }
+        if (memory != nullptr && !out->supports("ioproxy"))
+            return RD_OIIO_ERR_NO_PROXY;
+        OIIO::Filesystem::IOVecOutput vec;
+        if (memory != nullptr && !out->set_ioproxy(&vec)) {
+            (void)out->geterror();
+            return RD_OIIO_ERR_NO_PROXY;
         }
         OIIO::ImageSpec spec(d->width, d->height, d->channels, to_typedesc(d->file_type));
         if (d->compression != nullptr) {
@@ -158,6 +172,16 @@ extern "C" rd_oiio_status rd_oiio_write(const rd_oiio_write_desc *d, char *err, 
             set_message(err, err_size, out->geterror());
             return RD_OIIO_ERR_WRITE;
         }
+        if (memory != nullptr) {
+            const std::vector<unsigned char> &bytes = vec.buffer();
+            memory->data = static_cast<unsigned char *>(std::malloc(bytes.size() + 1));
+            if (memory->data == nullptr) {
+                set_message(err, err_size, "out of memory");
+                return RD_OIIO_ERR_NOMEM;
+            }
+            std::memcpy(memory->data, bytes.data(), bytes.size());
+            memory->size = bytes.size();
+        }
         return RD_OIIO_OK;
     } catch (const std::bad_alloc &) {
         set_message(err, err_size, "out of memory");
@@ -169,4 +193,17 @@ extern "C" rd_oiio_status rd_oiio_write(const rd_oiio_write_desc *d, char *err, 
         set_message(err, err_size, "unknown exception in OpenImageIO");
         return RD_OIIO_ERR_WRITE;
     }
+}
+
+extern "C" rd_oiio_status rd_oiio_write(const rd_oiio_write_desc *d, char *err, size_t err_size)
+{
+    return write_image(d, nullptr, err, err_size);
+}
+
+extern "C" rd_oiio_status rd_oiio_write_memory(const rd_oiio_write_desc *d, rd_oiio_bytes *out,
+                                               char *err, size_t err_size)
+{
+    out->data = nullptr;
+    out->size = 0;
+    return write_image(d, out, err, err_size);
 }

@@ -16,7 +16,8 @@ typedef enum rd_oiio_status {
     RD_OIIO_ERR_OPEN, /* no reader could open the file / no writer for the format */
     RD_OIIO_ERR_READ, /* the header was fine, the pixels were not */
     RD_OIIO_ERR_WRITE,
-    RD_OIIO_ERR_NOMEM
+    RD_OIIO_ERR_NOMEM,
+    RD_OIIO_ERR_NO_PROXY /* this format's writer cannot write to memory */
 } rd_oiio_status;
 
 typedef struct rd_oiio_input rd_oiio_input;
@@ -60,6 +61,17 @@ typedef struct rd_oiio_write_desc {
 } rd_oiio_write_desc;
 
 rd_oiio_status rd_oiio_write(const rd_oiio_write_desc *desc, char *err, size_t err_size);
+
+/* The encoded file's bytes (malloc'd; the caller frees data). */
+typedef struct rd_oiio_bytes {
+    unsigned char *data;
+    size_t size;
+} rd_oiio_bytes;
+
+/* Encodes the image into memory instead of desc->path (which only names it in messages).
+ * RD_OIIO_ERR_NO_PROXY: the format's writer cannot; write to a file with rd_oiio_write. */
+rd_oiio_status rd_oiio_write_memory(const rd_oiio_write_desc *desc, rd_oiio_bytes *out, char *err,
+                                    size_t err_size);
 
 #ifdef __cplusplus
 }

@@ -85,10 +85,13 @@ static int make_panorama(cli_session *s, const cli_options *o, int w, int h)
         app_pano_equirect((const uint8_t *const *)faces, side, (const float(*)[3])fwd,
                           (const float(*)[3])up, pano, w, h);
         char err[1024], xmp[4096];
-        if (rd_image_write_rgba8(o->output, w, h, pano, err, sizeof err) != RD_IMAGE_OK ||
-            (is_jpeg(o->output) &&
-             (app_pano_xmp(w, h, xmp, sizeof xmp) < 0 ||
-              rd_image_jpeg_add_xmp(o->output, xmp, err, sizeof err) != RD_IMAGE_OK))) {
+        /* The GPano packet goes into the encoded JPEG before the file gets its name: a
+         * panorama is never in place without its 360-degree metadata. */
+        if (app_pano_xmp(w, h, xmp, sizeof xmp) < 0) {
+            fprintf(stderr, "tessera: %s: panorama metadata does not fit\n", o->output);
+            rc = CLI_FAILED;
+        } else if (rd_image_write_rgba8_xmp(o->output, w, h, pano, is_jpeg(o->output) ? xmp : NULL,
+                                            err, sizeof err) != RD_IMAGE_OK) {
             fprintf(stderr, "tessera: %s\n", err);
             rc = CLI_FAILED;
         }

@@ -147,10 +147,22 @@ static app_result close_temp(FILE *f, const char *tmp, const char *dir, const ch
 {
     char final[4096];
     snprintf(final, sizeof final, "%s/%s", dir, name);
-    int bad = ferror(f) | (fclose(f) != 0);
-    if (failed || bad || rename(tmp, final) != 0) {
+    /* A stream's write error may show only at the flush, the fsync or the close; each keeps
+     * its errno ("No space left on device") for the message. */
+    errno = EIO;
+    int bad = ferror(f) || fflush(f) != 0 || fsync(fileno(f)) != 0;
+    int saved = errno;
+    if (fclose(f) != 0 && !bad) {
+        bad = 1;
+        saved = errno;
+    }
+    if (!failed && !bad && rename(tmp, final) != 0) {
+        bad = 1;
+        saved = errno;
+    }
+    if (failed || bad) {
         if (!failed)
-            snprintf(err, err_size, "%s: cannot write: %s", final, strerror(errno));
+            snprintf(err, err_size, "%s: cannot write: %s", final, strerror(saved));
         remove(tmp);
         return failed ? APP_ERR_SCHEMA : APP_ERR_IO;
     }

@@ -2,6 +2,8 @@
  * the reader, then replace the file atomically. */
 #include "project_internal.h"
 
+#include "render/write_target.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
@@ -129,20 +131,30 @@ app_result app_project_write(const char *path, const app_project *p, char *err, 
     if (!p)
         return pj_fail_file(&c, APP_ERR_IO, "no project to write (p is NULL)");
 
-    char *dir = pj_dirname(path);
-    if (!dir)
+    /* Through a symbolic link the file it names is replaced and the link stays a link; the
+     * relative paths inside are then relative to that file's folder. */
+    char *target = rd_write_target(path);
+    char *dir = target ? pj_dirname(target) : NULL;
+    if (!dir) {
+        free(target);
         return pj_fail_file(&c, APP_ERR_OUT_OF_MEMORY, "out of memory");
+    }
     char *dest_dir = realpath(dir, NULL); /* NULL: paths are written absolute */
     free(dir);
     cJSON *root = NULL;
     app_result r = pj_project_to_json(&c, p, dest_dir, &root);
     free(dest_dir);
-    if (r != APP_OK)
+    char *text = NULL;
+    if (r == APP_OK) {
+        text = cJSON_Print(root);
+        cJSON_Delete(root);
+        if (!text)
+            r = pj_fail_file(&c, APP_ERR_OUT_OF_MEMORY, "out of memory");
+    }
+    if (r != APP_OK) {
+        free(target);
         return r;
-    char *text = cJSON_Print(root);
-    cJSON_Delete(root);
-    if (!text)
-        return pj_fail_file(&c, APP_ERR_OUT_OF_MEMORY, "out of memory");
+    }
 
     /* The reader's rules are the format's rules: a project the reader would refuse is not
      * written. Files named inside are not checked, so a vanished texture cannot block a save. */
@@ -152,8 +164,9 @@ app_result app_project_write(const char *path, const app_project *p, char *err, 
     if (r == APP_OK) {
         size_t len = strlen(text);
         text[len] = '\n'; /* the terminator's byte becomes the final newline */
-        r = pj_write_atomic(&c, path, text, len + 1);
+        r = pj_write_atomic(&c, target, text, len + 1);
     }
     cJSON_free(text);
+    free(target);
     return r;
 }

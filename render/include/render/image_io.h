@@ -52,10 +52,12 @@ rd_image_result rd_image_write_rgba8(const char *path, int width, int height,
 rd_image_result rd_image_write_rgba8_dpi(const char *path, int width, int height,
                                          const unsigned char *rgba, float dpi, char *err,
                                          size_t err_size);
-/* Inserts an XMP packet (UTF-8 RDF text, under 64 KB) as an APP1 segment into the JPEG at
- * path, rewriting the file (image_xmp.c). */
-rd_image_result rd_image_jpeg_add_xmp(const char *path, const char *xmp, char *err,
-                                      size_t err_size);
+/* The same with an XMP packet (UTF-8 RDF text, under 64 KB) stored as an APP1 segment when the
+ * format is JPEG (image_xmp.c); PNG and TIFF are written without it. The packet is in the file
+ * before the file gets its name. */
+rd_image_result rd_image_write_rgba8_xmp(const char *path, int width, int height,
+                                         const unsigned char *rgba, const char *xmp, char *err,
+                                         size_t err_size);
 /* The pixels per inch a file states (0 when it states none or only an aspect). */
 rd_image_result rd_image_read_dpi(const char *path, float *dpi, char *err, size_t err_size);
 
@@ -64,9 +66,11 @@ rd_image_result rd_image_read_dpi(const char *path, float *dpi, char *err, size_
 rd_image_result rd_image_write_float(const char *path, int width, int height, int channels,
                                      const float *pixels, char *err, size_t err_size);
 
-/* Both writes are atomic: the image goes to PATH.tmp-<pid>-<n> in the same folder and is
- * renamed over PATH only when complete. On any failure the temporary file is removed and an
- * existing PATH is left untouched. */
+/* Every write is atomic: the image goes to PATH.tmp-<pid>-<n> in the same folder as PATH's
+ * target (a symbolic link is followed and stays a link), every write, the fsync and the close
+ * are checked, a PNG must end in IEND and a JPEG in EOI, and only then is the file renamed
+ * over the target. On any failure (a full disk: "No space left on device") the temporary file
+ * is removed, an existing file is left untouched and err names PATH and the reason. */
 
 /* 1 for .exr/.hdr, 0 for .png/.jpg/.jpeg/.tif/.tiff, -1 for an unknown extension or NULL. */
 int rd_image_format_is_float(const char *path);
