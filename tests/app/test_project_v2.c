@@ -235,7 +235,7 @@ static const bad_case bad_cases[] = {
     {"tiling_grout_too_wide", "\"grout\": 3", "\"grout\": 300",
      "$.tilings[0].grout: ", "must be in [0, 100], got 300"},
     {"tiling_align_unknown", "\"align\": \"corner\"", "\"align\": \"left\"",
-     "$.tilings[0].align: ", "expected centred, corner or line"},
+     "$.tilings[0].align: ", "expected centred, corner, line or auto"},
     {"tiling_to_below_from", "\"to\": 1200", "\"to\": -5", "$.tilings[1].to: ", "must be >= 0"},
     {"tiling_band_empty", "\"from\": 0, \"to\": 1200", "\"from\": 1300, \"to\": 1200",
      "$.tilings[1].to: ", "must be above \"from\" (1300 mm)"},
