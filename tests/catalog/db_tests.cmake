@@ -4,7 +4,7 @@
 set(CAT_DB_SOURCE "${CMAKE_SOURCE_DIR}/assets/catalog")
 
 foreach(name test_db_schema test_db_import test_db_hostile test_db_search test_db_shipped test_db_faults
-             test_db_roundtrip)
+             test_db_roundtrip test_db_search_words)
   add_executable(${name} ${CMAKE_CURRENT_LIST_DIR}/${name}.c)
   target_link_libraries(${name} PRIVATE tessera_catalog)
   target_include_directories(${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/common)
