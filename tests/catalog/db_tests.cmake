@@ -29,6 +29,15 @@ tessera_add_test(NAME catalog.db_cli_search
                          --max-width 400 --limit 5 --db ${CAT_DB_CLI}/search.sqlite
                  EXPECT_OUTPUT "thermostatic bath mixer, exposed +taps_mixers +300 x 195 x 110"
                  LABELS unit)
+# German words through folding and synonyms; every word required, the one that matches nothing
+# named.
+tessera_add_test(NAME catalog.db_cli_search_german
+                 COMMAND tessera catalog search "Weiß" --db ${CAT_DB_CLI}/search-de.sqlite
+                 EXPECT_OUTPUT "Weiss Weiss field tile 100 x 100" "Calacatta Bianco field tile"
+                 LABELS unit)
+tessera_add_test(NAME catalog.db_cli_search_unmatched
+                 COMMAND tessera catalog search tile purple --db ${CAT_DB_CLI}/search-de.sqlite
+                 EXPECT_STDERR "0 products" "no match for 'purple'" LABELS unit)
 tessera_add_test(NAME catalog.db_cli_show
                  COMMAND tessera catalog show NK-51244.00 --manufacturer nordkeram
                          --db ${CAT_DB_CLI}/show.sqlite
@@ -68,7 +77,8 @@ if(CMAKE_C_COMPILER_ID MATCHES "Clang" AND CMAKE_CXX_COMPILER_ID MATCHES "Clang"
   list(TRANSFORM CAT_DB_FUZZ_SOURCES PREPEND "${CAT_DB_FUZZ_DIR}/" REGEX "^[^/]")
   add_executable(fuzz_db_csv ${CMAKE_CURRENT_LIST_DIR}/test_db_fuzz_csv.c ${CAT_DB_FUZZ_SOURCES})
   target_include_directories(fuzz_db_csv PRIVATE ${CAT_DB_FUZZ_DIR}/include ${CAT_DB_FUZZ_DIR}/src)
-  target_link_libraries(fuzz_db_csv PRIVATE PkgConfig::CAT_DB_SQLITE3 m)
+  target_include_directories(fuzz_db_csv SYSTEM PRIVATE ${STEMMER_INCLUDE_DIR})
+  target_link_libraries(fuzz_db_csv PRIVATE PkgConfig::CAT_DB_SQLITE3 ${STEMMER_LIBRARY} m)
   target_compile_options(fuzz_db_csv PRIVATE -fsanitize=fuzzer,address,undefined
                                              -fno-omit-frame-pointer)
   target_link_options(fuzz_db_csv PRIVATE -fsanitize=fuzzer,address,undefined)
