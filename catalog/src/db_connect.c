@@ -3,9 +3,21 @@
 
 #include <stdio.h>
 
+/* sqlite3_auto_extension's entry point: every connection this process opens afterwards, also one
+ * opened with sqlite3_open directly (tests, tools looking behind the API), reads product_fts
+ * through the same tokenizer. */
+static int words_everywhere(sqlite3 *sql, char **err, const void *api)
+{
+    (void)err;
+    (void)api;
+    catdb_register_words(sql);
+    return SQLITE_OK;
+}
+
 cat_db_result catdb_connect(const char *path, int flags, sqlite3 **out, char *err, size_t err_size)
 {
     *out = NULL;
+    sqlite3_auto_extension((void (*)(void))words_everywhere); /* once; later calls do nothing */
     sqlite3 *sql = NULL;
     int rc = sqlite3_open_v2(path, &sql, flags | SQLITE_OPEN_NOMUTEX, NULL);
     if (rc != SQLITE_OK) {
@@ -23,6 +35,9 @@ cat_db_result catdb_connect(const char *path, int flags, sqlite3 **out, char *er
         r = catdb_fail(err, err_size, CAT_DB_ERR_DATABASE,
                        "%s: this SQLite has no FTS5 full-text search (SQLite %s)", path,
                        sqlite3_libversion());
+    if (r == CAT_DB_OK && !catdb_register_words(sql))
+        r = catdb_fail(err, err_size, CAT_DB_ERR_DATABASE,
+                       "%s: cannot set up the search's word tokenizer", path);
     if (r != CAT_DB_OK) {
         sqlite3_close(sql);
         return r;

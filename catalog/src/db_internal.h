@@ -18,10 +18,16 @@
 
 /* ---- the handle ----------------------------------------------------------------------------- */
 
+typedef struct catdb_stemmers catdb_stemmers;       /* libstemmer's German and English stemmers */
+typedef struct catdb_query_words catdb_query_words; /* the tokenizer, for query words */
+
 struct cat_db {
     sqlite3 *sql;
     char *path;
     sqlite3_stmt *search_fts, *search_fts_filtered, *search_exact, *search_all; /* reused */
+    sqlite3_stmt *search_synonyms, *search_any;                                 /* reused */
+    catdb_query_words *words; /* made on first use */
+    char *match;              /* the FTS5 query, made on first use */
 };
 
 /* 'TESS': PRAGMA application_id of a Tessera catalog. */
@@ -53,6 +59,44 @@ cat_db_result catdb_connect(const char *path, int flags, sqlite3 **out, char *er
 /* Registers catdb_rank(), the search's FTS5 ranking function (db_rank.c), on a connection.
  * Returns 0 when this SQLite has no FTS5. */
 int catdb_register_rank(sqlite3 *sql);
+
+/* ---- words (db_words.c) --------------------------------------------------------------------- */
+
+#define CATDB_WORD_BYTES 64 /* longer tokens are indexed as they are, neither folded nor stemmed   \
+                             */
+
+/* Folds a lower-cased, diacritic-free word (unicode61's output): "ß" to "ss", "ae", "oe", "ue"
+ * to "a", "o", "u". Returns the folded length; out is terminated. */
+size_t catdb_word_fold(const char *in, size_t n, char *out, size_t size);
+
+catdb_stemmers *catdb_stemmers_new(void); /* NULL when out of memory */
+void catdb_stemmers_free(catdb_stemmers *s);
+
+typedef struct catdb_word_form {
+    char text[CATDB_WORD_BYTES + 1];
+    size_t len;
+} catdb_word_form;
+
+/* The forms under which a lower-cased word is indexed: folded, then its German and English
+ * stems where they differ. Returns how many (0 for an empty word). */
+int catdb_word_forms(catdb_stemmers *s, const char *word, size_t n, catdb_word_form forms[3]);
+
+/* Registers the "tessera" FTS5 tokenizer (unicode61, folding, stems) on a connection; every
+ * connection that reads or writes product_fts needs it. Returns 0 on failure. */
+int catdb_register_words(sqlite3 *sql);
+
+/* The forms of one query word as the index knows them (the tokenizer's output in query mode),
+ * at most max; 0 when the word is not one token. *words is made on the first call and freed by
+ * catdb_query_words_free. */
+int catdb_query_forms(sqlite3 *sql, catdb_query_words **words, const char *word, size_t n,
+                      catdb_word_form *forms, int max);
+void catdb_query_words_free(catdb_query_words *words);
+
+/* Fills search_synonyms from the shipped synonym list (db_synonyms.c), replacing its rows. */
+cat_db_result catdb_synonyms_load(sqlite3 *sql, const char *path, char *err, size_t err_size);
+
+/* A hash of the synonym list, so that a changed list makes the catalog refresh. */
+uint64_t catdb_synonyms_hash(uint64_t h);
 
 /* Rolls back a transaction that a failed call could not roll back itself (its ROLLBACK can
  * fail too when memory runs out). Every public call on a cat_db starts with it: no call leaves a

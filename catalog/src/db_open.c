@@ -183,6 +183,10 @@ void cat_db_close(cat_db *db)
     sqlite3_finalize(db->search_fts_filtered);
     sqlite3_finalize(db->search_exact);
     sqlite3_finalize(db->search_all);
+    sqlite3_finalize(db->search_synonyms);
+    sqlite3_finalize(db->search_any);
+    catdb_query_words_free(db->words);
+    free(db->match);
     sqlite3_close(db->sql);
     free(db->path);
     free(db);

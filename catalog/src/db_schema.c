@@ -168,6 +168,22 @@ static const char schema_v3[] =
     /* listing a category by name (search with an empty text) */
     "CREATE INDEX products_by_category_name ON products (category, name);\n";
 
+/* Version 4: the index reads words through the "tessera" tokenizer (folding, German and English
+ * stems, db_words.c), rebuilt from the existing rows; the synonym table (db_synonyms.c). */
+static const char schema_v4[] =
+    "DROP TABLE product_fts;\n"
+    "CREATE VIRTUAL TABLE product_fts USING fts5 (" FTS_COLUMNS ",\n"
+    "    content = 'product_search', content_rowid = 'id',\n"
+    "    tokenize = 'tessera', prefix = '2 3');\n"
+    "INSERT INTO product_fts (product_fts) VALUES ('rebuild');\n"
+    "CREATE TABLE search_synonyms (\n"
+    "    form     TEXT NOT NULL,\n"
+    "    group_id INTEGER NOT NULL,\n"
+    "    term     TEXT NOT NULL,\n"
+    "    PRIMARY KEY (form, group_id, term)\n"
+    ") WITHOUT ROWID;\n"
+    "CREATE INDEX search_synonyms_by_group ON search_synonyms (group_id);\n";
+
 /* clang-format on */
 
 typedef cat_db_result (*migration_fn)(sqlite3 *sql, const char *path, char *err, size_t err_size);
@@ -189,8 +205,17 @@ static cat_db_result migrate_2_to_3(sqlite3 *sql, const char *path, char *err, s
                       err_size);
 }
 
+static cat_db_result migrate_3_to_4(sqlite3 *sql, const char *path, char *err, size_t err_size)
+{
+    cat_db_result r = catdb_exec(sql, path, "cannot migrate the schema from version 3 to 4",
+                                 schema_v4, err, err_size);
+    if (r == CAT_DB_OK)
+        r = catdb_synonyms_load(sql, path, err, err_size);
+    return r;
+}
+
 static const migration_fn migrations[CAT_DB_SCHEMA_VERSION] = {migrate_0_to_1, migrate_1_to_2,
-                                                               migrate_2_to_3};
+                                                               migrate_2_to_3, migrate_3_to_4};
 
 static cat_db_result pragma_int(sqlite3 *sql, const char *path, const char *pragma, int *out,
                                 char *err, size_t err_size)

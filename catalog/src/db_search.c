@@ -26,6 +26,9 @@
  * complete. */
 #define RANK_CAP 1000
 
+/* Room for an FTS5 query: every word with its synonyms, and the filters. */
+#define MATCH_BYTES 32768
+
 /* Column weights: name, series, manufacturer, article, article_compact, short_text, category
  * (db_rank.c). A word in the name counts most; the short text only breaks ties. The ranking
  * runs over row ids alone (the category filter is part of the FTS5 query); products are read
@@ -112,23 +115,57 @@ static int has_word(const char *s, size_t n)
     return 0;
 }
 
-/* Builds the FTS5 query: each word of text becomes a quoted string, with * for a prefix match
- * when it has two or more bytes (MATCH_TYPING: only the last word, as one types; the others
- * must be whole words, which FTS5 reads far faster than prefixes), the words ANDed (MATCH_ANY:
- * ORed); words without a letter or digit are left out. The category and manufacturer filters join
- * as column phrases, which FTS5 intersects far faster than a scan could ("{category} : "wcs
- * bidets""; the manufacturer is checked exactly afterwards). Returns the number of words used. */
-enum { MATCH_TYPING, MATCH_ALL_PREFIX, MATCH_ANY };
+static int prepare(cat_db *db, sqlite3_stmt **st, const char *text)
+{
+    if (*st)
+        return 1;
+    return sqlite3_prepare_v3(db->sql, text, -1, SQLITE_PREPARE_PERSISTENT, st, NULL) == SQLITE_OK;
+}
 
-static int build_match(const char *text, int mode, const filter_values *fv,
+/* The terms of the synonym groups of a word (db_synonyms.c), appended to out as FTS5
+ * alternatives (" OR "term""). Returns 0 when there is no room or the lookup fails. */
+static const char synonyms_sql[] = "SELECT DISTINCT t.term FROM search_synonyms k"
+                                   " JOIN search_synonyms t ON t.group_id = k.group_id"
+                                   " WHERE k.form IN (?1, ?2, ?3) ORDER BY t.term LIMIT 32";
+
+static int put_synonyms(cat_db *db, const char *word, size_t n, char *out, size_t size, size_t *o)
+{
+    catdb_word_form forms[3];
+    int count = catdb_query_forms(db->sql, &db->words, word, n, forms, 3);
+    if (count <= 0)
+        return 1; /* not one word (or no tokenizer): the word alone */
+    if (!prepare(db, &db->search_synonyms, synonyms_sql))
+        return 0;
+    sqlite3_stmt *st = db->search_synonyms;
+    for (int k = 0; k < 3; k++)
+        sqlite3_bind_text(st, k + 1, forms[k < count ? k : 0].text, -1, SQLITE_STATIC);
+    int ok = 1, rc;
+    while (ok && (rc = sqlite3_step(st)) == SQLITE_ROW) {
+        const char *term = (const char *)sqlite3_column_text(st, 0);
+        ok = term && put_raw(out, size, o, " OR ") && put_string(out, size, o, term, strlen(term));
+    }
+    sqlite3_reset(st);
+    sqlite3_clear_bindings(st);
+    return ok;
+}
+
+/* Builds the FTS5 query: every word of text must match (AND), each as itself or any term of its
+ * synonym groups (OR): "(\"tile\" OR \"fliese\" ...) (\"grey\"* OR \"grau\" ...)". The word
+ * itself is a prefix when it has two or more bytes (MATCH_TYPING: only the last word, as one
+ * types; the others must be whole words, which FTS5 reads far faster than prefixes); synonyms
+ * are whole words. Words without a letter or digit are left out. The category and manufacturer
+ * filters join as column phrases, which FTS5 intersects far faster than a scan could
+ * ("{category} : "wcs bidets""; the manufacturer is checked exactly afterwards). `only` >= 0
+ * keeps that word alone (and no filters). Returns the number of words used. */
+enum { MATCH_TYPING, MATCH_ALL_PREFIX };
+
+static int build_match(cat_db *db, const char *text, int mode, int only, const filter_values *fv,
                        const cat_search_filter *filter, char *out, size_t size)
 {
     size_t o = 0;
-    int terms = 0;
+    int terms = 0, index = 0;
     out[0] = 0;
-    if (!put_raw(out, size, &o, "("))
-        return 0;
-    for (const char *p = text; *p && terms < CAT_SEARCH_MAX_TERMS;) {
+    for (const char *p = text; *p && index < CAT_SEARCH_MAX_TERMS;) {
         while (is_space(*p))
             p++;
         const char *start = p;
@@ -141,13 +178,16 @@ static int build_match(const char *text, int mode, const filter_values *fv,
             p++;
         int last = !*p;
         int prefix = n >= 2 && (mode != MATCH_TYPING || last);
-        if ((terms && !put_raw(out, size, &o, mode == MATCH_ANY ? " OR " : " ")) ||
-            !put_string(out, size, &o, start, n) || (prefix && !put_raw(out, size, &o, "*")))
-            break;
+        if (only >= 0 && index++ != only)
+            continue;
+        if ((terms && !put_raw(out, size, &o, " AND ")) || !put_raw(out, size, &o, "(") ||
+            !put_string(out, size, &o, start, n) || (prefix && !put_raw(out, size, &o, "*")) ||
+            !put_synonyms(db, start, n, out, size, &o) || !put_raw(out, size, &o, ")"))
+            return 0;
         terms++;
     }
-    if (!terms || !put_raw(out, size, &o, ")"))
-        return 0;
+    if (!terms || only >= 0)
+        return terms;
     if (fv->category) {
         char words[64];
         snprintf(words, sizeof words, "%s", fv->category);
@@ -164,13 +204,6 @@ static int build_match(const char *text, int mode, const filter_values *fv,
             return 0;
     }
     return terms;
-}
-
-static int prepare(cat_db *db, sqlite3_stmt **st, const char *text)
-{
-    if (*st)
-        return 1;
-    return sqlite3_prepare_v3(db->sql, text, -1, SQLITE_PREPARE_PERSISTENT, st, NULL) == SQLITE_OK;
 }
 
 static void read_hit(sqlite3_stmt *st, cat_search_hit *h)
@@ -251,6 +284,14 @@ static cat_db_result manufacturer_id(cat_db *db, const char *name, long long *id
     return CAT_DB_OK;
 }
 
+/* The connection's buffer for FTS5 queries, made on first use. */
+static char *query_buffer(cat_db *db)
+{
+    if (!db->match)
+        db->match = malloc(MATCH_BYTES);
+    return db->match;
+}
+
 cat_db_result cat_search(cat_db *db, const char *text, const cat_search_filter *filter, int limit,
                          cat_search_hit *hits, int *count, char *err, size_t err_size)
 {
@@ -309,22 +350,61 @@ cat_db_result cat_search(cat_db *db, const char *text, const cat_search_filter *
     bind_filter(db->search_exact, &fv, limit);
     if (!collect(db->search_exact, hits, &n, limit, 1))
         return catdb_sql_fail(db->sql, db->path, err, err_size, "search failed");
-    char
-        match[2 * CAT_SEARCH_MAX_TEXT + 8 * CAT_SEARCH_MAX_TERMS + 2 * CAT_MANUFACTURER_BYTES + 64];
+    char *match = query_buffer(db);
+    if (!match)
+        return catdb_fail(err, err_size, CAT_DB_ERR_OUT_OF_MEMORY, "%s: out of memory", db->path);
     /* Whole words and a last prefix first; then every word as a prefix ("therm bath" finds
-     * thermostatic bath mixers); then, if nothing has every word, any of them ("Linea
-     * thermostat" still shows thermostats when the Linea series has none). */
-    int terms = build_match(trimmed, MATCH_TYPING, &fv, filter, match, sizeof match);
+     * thermostatic bath mixers). A word that matches nothing gives no hits, never fewer words:
+     * cat_search_unmatched names it. */
+    int terms = build_match(db, trimmed, MATCH_TYPING, -1, &fv, filter, match, MATCH_BYTES);
     if (n < limit && terms > 0 && !ranked(db, match, &fv, limit, hits, &n))
         return catdb_sql_fail(db->sql, db->path, err, err_size, "search failed");
     if (n < limit && terms > 1 &&
-        build_match(trimmed, MATCH_ALL_PREFIX, &fv, filter, match, sizeof match) > 0 &&
-        !ranked(db, match, &fv, limit, hits, &n))
-        return catdb_sql_fail(db->sql, db->path, err, err_size, "search failed");
-    if (n == 0 && terms > 1 &&
-        build_match(trimmed, MATCH_ANY, &fv, filter, match, sizeof match) > 1 &&
+        build_match(db, trimmed, MATCH_ALL_PREFIX, -1, &fv, filter, match, MATCH_BYTES) > 0 &&
         !ranked(db, match, &fv, limit, hits, &n))
         return catdb_sql_fail(db->sql, db->path, err, err_size, "search failed");
     *count = n;
+    return CAT_DB_OK;
+}
+
+cat_db_result cat_search_unmatched(cat_db *db, const char *text, char *word, size_t size, char *err,
+                                   size_t err_size)
+{
+    if (word && size)
+        word[0] = 0;
+    if (!db || !text || !word || !size)
+        return catdb_fail(err, err_size, CAT_DB_ERR_INVALID,
+                          "cat_search_unmatched: no catalog, text or room for the word");
+    catdb_recover(db);
+    if (!prepare(db, &db->search_any,
+                 "SELECT 1 FROM product_fts WHERE product_fts MATCH ?1 LIMIT 1"))
+        return catdb_sql_fail(db->sql, db->path, err, err_size, "cannot prepare the search");
+    char *match = query_buffer(db);
+    if (!match)
+        return catdb_fail(err, err_size, CAT_DB_ERR_OUT_OF_MEMORY, "%s: out of memory", db->path);
+    filter_values none = {0};
+    for (int i = 0; i < CAT_SEARCH_MAX_TERMS; i++) {
+        if (build_match(db, text, MATCH_ALL_PREFIX, i, &none, NULL, match, MATCH_BYTES) < 1)
+            break;
+        sqlite3_bind_text(db->search_any, 1, match, -1, SQLITE_STATIC);
+        int rc = sqlite3_step(db->search_any);
+        sqlite3_reset(db->search_any);
+        sqlite3_clear_bindings(db->search_any);
+        if (rc == SQLITE_ROW)
+            continue;
+        if (rc != SQLITE_DONE)
+            return catdb_sql_fail(db->sql, db->path, err, err_size, "search failed");
+        /* the i-th word: the one whose quoted string opens the query */
+        size_t o = 0;
+        for (const char *p = match + 2; *p && o + 1 < size; p++) {
+            if (*p == '"' && p[1] == '"')
+                p++;
+            else if (*p == '"')
+                break;
+            word[o++] = *p;
+        }
+        word[o] = 0;
+        return CAT_DB_OK;
+    }
     return CAT_DB_OK;
 }

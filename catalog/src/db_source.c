@@ -77,6 +77,7 @@ cat_db_result catdb_source_read(const char *dir, catdb_source *out, char *err, s
     uint64_t h = CATDB_HASH64_INIT;
     int versions[2] = {CAT_DB_SCHEMA_VERSION, IMPORT_LOGIC_VERSION};
     h = catdb_hash64(h, versions, sizeof versions);
+    h = catdb_synonyms_hash(h);
     for (int i = 0; i < out->count && r == CAT_DB_OK; i++) {
         unsigned char *data;
         size_t size;

@@ -41,6 +41,8 @@ cat_db_result catdb_sync_shipped(sqlite3 *sql, const char *path, const catdb_sou
     if (r == CAT_DB_OK)
         r = catdb_fts_resume(sql, path, err, err_size);
     if (r == CAT_DB_OK)
+        r = catdb_synonyms_load(sql, path, err, err_size);
+    if (r == CAT_DB_OK)
         r = catdb_meta_set(sql, path, "source_hash", src->hash, err, err_size);
     if (r == CAT_DB_OK)
         r = catdb_exec(sql, path, "cannot commit the shipped products", "COMMIT", err, err_size);

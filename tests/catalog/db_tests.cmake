@@ -4,7 +4,7 @@
 set(CAT_DB_SOURCE "${CMAKE_SOURCE_DIR}/assets/catalog")
 
 foreach(name test_db_schema test_db_import test_db_hostile test_db_search test_db_shipped test_db_faults
-             test_db_roundtrip)
+             test_db_roundtrip test_db_search_words)
   add_executable(${name} ${CMAKE_CURRENT_LIST_DIR}/${name}.c)
   target_link_libraries(${name} PRIVATE tessera_catalog)
   target_include_directories(${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/common)
@@ -29,6 +29,15 @@ tessera_add_test(NAME catalog.db_cli_search
                          --max-width 400 --limit 5 --db ${CAT_DB_CLI}/search.sqlite
                  EXPECT_OUTPUT "thermostatic bath mixer, exposed +taps_mixers +300 x 195 x 110"
                  LABELS unit)
+# German words through folding and synonyms; every word required, the one that matches nothing
+# named.
+tessera_add_test(NAME catalog.db_cli_search_german
+                 COMMAND tessera catalog search "Weiß" --db ${CAT_DB_CLI}/search-de.sqlite
+                 EXPECT_OUTPUT "Weiss Weiss field tile 100 x 100" "Calacatta Bianco field tile"
+                 LABELS unit)
+tessera_add_test(NAME catalog.db_cli_search_unmatched
+                 COMMAND tessera catalog search tile purple --db ${CAT_DB_CLI}/search-de.sqlite
+                 EXPECT_STDERR "0 products" "no match for 'purple'" LABELS unit)
 tessera_add_test(NAME catalog.db_cli_show
                  COMMAND tessera catalog show NK-51244.00 --manufacturer nordkeram
                          --db ${CAT_DB_CLI}/show.sqlite

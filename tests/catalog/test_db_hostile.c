@@ -231,7 +231,12 @@ static void test_hostile_search(cat_db *db)
     }
     /* Words are words: "name:uno" is not a column filter, "NOT" not an operator. */
     CHECK(cat_search(db, "NOT", NULL, 10, hits, &n, err, sizeof err) == CAT_DB_OK && n == 0);
-    CHECK(cat_search(db, "mixer NOT", NULL, 10, hits, &n, err, sizeof err) == CAT_DB_OK && n >= 1 &&
+    /* (every word must match, and no product has the word "not": none, and "NOT" is named) */
+    CHECK(cat_search(db, "mixer NOT", NULL, 10, hits, &n, err, sizeof err) == CAT_DB_OK && n == 0);
+    char word[16];
+    CHECK(cat_search_unmatched(db, "mixer NOT", word, sizeof word, err, sizeof err) == CAT_DB_OK &&
+          !strcmp(word, "NOT"));
+    CHECK(cat_search(db, "mixer \"", NULL, 10, hits, &n, err, sizeof err) == CAT_DB_OK && n >= 1 &&
           strstr(hits[0].name, "mixer"));
     CHECK(cat_search(db, "Uno", NULL, 10, hits, &n, err, sizeof err) == CAT_DB_OK && n >= 1);
 

@@ -61,6 +61,11 @@ int ui_catalog_browser_refresh(ui_catalog_browser *b)
         return 1;
     }
     b->error[0] = 0;
+    b->unmatched[0] = 0;
+    if (b->hit_count == 0 && b->text[0] &&
+        cat_search_unmatched(b->db, b->text, b->unmatched, sizeof b->unmatched, b->error,
+                             sizeof b->error) != CAT_DB_OK)
+        b->unmatched[0] = 0;
     return 0;
 }
 
@@ -121,7 +126,10 @@ void ui_catalog_browser_draw(ui_catalog_browser *b, float x, float y, float widt
         ui_catalog_browser_refresh(b);
         if (b->error[0])
             ui_gui_text_wrapped(b->error);
-        ui_gui_text("%d products (drag one into a view)", b->hit_count);
+        if (b->unmatched[0])
+            ui_gui_text("no match for '%s'", b->unmatched);
+        else
+            ui_gui_text("%d products (drag one into a view)", b->hit_count);
         if (ui_gui_begin_child("hits", 0.0f, list_height)) {
             for (int i = 0; i < b->hit_count; i++) {
                 const cat_search_hit *h = &b->hits[i];

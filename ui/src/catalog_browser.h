@@ -17,6 +17,7 @@ typedef struct ui_catalog_browser {
     int dirty; /* the query changed: search again */
     cat_search_hit hits[UI_BROWSER_MAX_HITS];
     int hit_count;
+    char unmatched[128];          /* no hits: the search word that matches nothing, or "" */
     double search_ms;             /* the last search's time, shown beside the hits */
     int selected;                 /* index into hits, -1 = none */
     cat_product product;          /* details of the selected hit */

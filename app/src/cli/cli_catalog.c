@@ -94,6 +94,19 @@ static void money(long long cents, char *buf, size_t size)
     snprintf(buf, size, "%lld.%02lld", cents / 100, cents % 100);
 }
 
+/* Why a search found nothing: the word that matches no product, or that only the combination
+ * (or a filter) has none. A word is never dropped from a search silently. */
+static void say_unmatched(cat_db *db, const char *text)
+{
+    char word[CAT_SEARCH_MAX_TEXT + 1], err[1024];
+    if (cat_search_unmatched(db, text, word, sizeof word, err, sizeof err) != CAT_DB_OK)
+        fprintf(stderr, "tessera: %s\n", err);
+    else if (word[0])
+        fprintf(stderr, "no match for '%s'\n", word);
+    else
+        fprintf(stderr, "no product matches every word of '%s' (with the filters)\n", text);
+}
+
 int cli_cmd_catalog_search(const cli_options *o)
 {
     if (o->arg_count == 0)
@@ -153,6 +166,8 @@ int cli_cmd_catalog_search(const cli_options *o)
     }
     if (r == CAT_DB_OK)
         fprintf(stderr, "%d product%s (%.2f ms)\n", n, n == 1 ? "" : "s", ms);
+    if (r == CAT_DB_OK && n == 0 && text[0])
+        say_unmatched(db, text);
     free(hits);
     cat_db_close(db);
     return exit_code(r);

@@ -22,7 +22,7 @@ extern "C" {
 
 /* The schema version this build writes (PRAGMA user_version). Older files are migrated on
  * open, one step at a time; newer ones are refused with CAT_DB_ERR_VERSION. */
-#define CAT_DB_SCHEMA_VERSION 3
+#define CAT_DB_SCHEMA_VERSION 4
 
 typedef enum cat_db_result {
     CAT_DB_OK = 0,
@@ -259,15 +259,24 @@ typedef struct cat_search_hit {
 #define CAT_SEARCH_MAX_TERMS 16  /* words of search text that count; the rest are ignored */
 
 /* Full-text search over names, series, manufacturers, article numbers, short texts and
- * categories. Every word must match (a word of two or more characters also matches as a prefix:
- * "therm" finds "thermostat"); when no product has every word, products with any of them are
- * ranked instead. Hits are ranked by bm25 with the name weighted most. A text that is exactly an
- * article number or GTIN puts that product first. Words are only words: FTS5 query syntax in
- * the text (AND, OR, NOT, quotes, *, column:) has no effect. An empty text lists the products
- * that pass the filter, by category and name. Fills hits[0 .. *count - 1], at most limit
- * (1 .. 10000). filter may be NULL. */
+ * categories. Words are folded (case, diacritics, "ß" as "ss", "ae" as "ä") and matched by their
+ * German and English stems too ("Waschtische" finds "Waschtisch", "basins" finds "basin"). Every
+ * word must match, each as itself or as any term of its synonym groups ("Waschtisch" finds
+ * basins, "grau" finds grey and grigio); the last word of two or more characters also matches
+ * as a prefix ("therm" finds "thermostat"), and when that finds too little every word does. A
+ * word that matches nothing gives no hits (cat_search_unmatched tells which). Hits are ranked
+ * with the name weighted most. A text that is exactly an article number or GTIN puts that
+ * product first. Words are only words: FTS5 query syntax in the text (AND, OR, NOT, quotes, *,
+ * column:) has no effect. An empty text lists the products that pass the filter, by category and
+ * name. Fills hits[0 .. *count - 1], at most limit (1 .. 10000). filter may be NULL. */
 cat_db_result cat_search(cat_db *db, const char *text, const cat_search_filter *filter, int limit,
                          cat_search_hit *hits, int *count, char *err, size_t err_size);
+
+/* After a search found nothing: the first word of text that no product matches at all (with its
+ * synonyms, as a prefix, without filters), into word; "" when every word matches some product
+ * and only their combination (or the filter) has none. */
+cat_db_result cat_search_unmatched(cat_db *db, const char *text, char *word, size_t size, char *err,
+                                   size_t err_size);
 
 /* ---- CSV import and export (the column set is in docs/catalog.md) -------------------------- */
 
