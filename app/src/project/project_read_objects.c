@@ -82,6 +82,8 @@ static app_result read_object(pj_ctx *c, const cJSON *item, int index, void *out
     app_result r = pj_get_string(c, item, "name", 0, 0, o->name, sizeof o->name);
     if (r == APP_OK)
         r = pj_get_string(c, item, "group", 0, 1, o->group, sizeof o->group);
+    if (r == APP_OK)
+        r = pj_get_string(c, item, "parent", 0, 1, o->parent, sizeof o->parent);
     if (r != APP_OK)
         return r;
 
