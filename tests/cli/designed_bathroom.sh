@@ -26,8 +26,8 @@ fail() {
 }
 # The position line of object NAME in project FILE: "[x, y, z]".
 position_of() {
-    awk -v name="\"$1\"" '$1 == "\"name\":" && $2 == name { found = 1 }
-        found && $1 == "\"position\":" { $1 = ""; sub(/^ /, ""); sub(/,$/, ""); print; exit }' "$2"
+    awk -v name="$1" 'index($0, "\"name\":\t\"" name "\"") { found = 1 }
+        found && /"position":/ { sub(/.*"position":[ \t]*/, ""); sub(/,$/, ""); print; exit }' "$2"
 }
 
 case "$what" in
@@ -55,13 +55,13 @@ check)
     fi
     ;;
 group_move)
-    printf 'move vanity 2600 2050 160\n' >"$out/move.edit"
+    printf 'move vanity 2600 1750 160\n' >"$out/move.edit"
     "$tessera" edit "$projects/designed-bathroom.json" "$out/move.edit" -o "$out/moved.json" \
         >"$out/edit.out" 2>&1 || fail "edit exit code $?"
     cat "$out/edit.out"
-    for pair in "vanity [2600, 2050, 160]" "basin [2600, 2050, 680]" \
-        "basin-mixer [2550, 2050, 850]" "mirror [2600, 2050, 1150]" \
-        "mirror-lamp [2600, 2050, 1880]"; do
+    for pair in "vanity [2600, 1750, 160]" "basin [2600, 1750, 680]" \
+        "basin-mixer [2550, 1750, 850]" "mirror [2600, 1750, 1150]" \
+        "mirror-lamp [2600, 1750, 1880]"; do
         name=${pair%% *}
         want=${pair#* }
         got=$(position_of "$name" "$out/moved.json")
