@@ -332,6 +332,8 @@ static const file_case FILES[] = {
      ": $.objects[0].model: ", "file not found: "},
     {"file_inf_position", "bad_inf_position.json", APP_ERR_SCHEMA,
      ": $.objects[0].position[1]: ", "must be a finite number"},
+    {"file_unknown_parent", "bad_parent.json", APP_ERR_SCHEMA,
+     ": $.objects[0].parent: ", "\"vanity\" names no other object"},
 };
 
 static int run_file(const file_case *c)

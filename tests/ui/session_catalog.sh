@@ -59,6 +59,15 @@ session_shots browser dragging dropped new reopened
 # reader.
 grep -q 'place "Cerana"' "$out/stderr.txt" || { echo "FAIL: no place edit"; exit 1; }
 grep -q '"CE41' "$out/saved.json" || { echo "FAIL: the dropped basin was not saved"; exit 1; }
+# It landed at its mounting height (docs/editing.md "Mounting heights"), not on the floor: its
+# name is its article (the demo's own basin is named "basin").
+article=$(sed -n 's/.*place "Cerana" "\(CE4[0-9]*\)".*/\1/p' "$out/stderr.txt" | head -1)
+z=$(awk -v name="$article" 'index($0, "\"name\":\t\"" name "\"") { found = 1 }
+    found && /"position":/ { sub(/.*\[/, ""); sub(/\].*/, ""); split($0, v, ", "); print v[3]; exit }' \
+    "$out/saved.json")
+echo "dropped $article at z = $z mm"
+awk -v z="$z" 'BEGIN { exit !(z + 0 >= 500) }' ||
+    { echo "FAIL: the dropped basin $article is at z = '$z' mm, not at its mounting height"; exit 1; }
 set +e
 "$tessera" check "$out/saved.json" >/dev/null
 rc=$?

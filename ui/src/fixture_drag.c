@@ -4,6 +4,8 @@
 #include "planner.h"
 #include "view_ray.h"
 
+#include "app/project/commands.h"
+
 #include <GLFW/glfw3.h>
 #include <math.h>
 #include <stdlib.h>
@@ -34,22 +36,31 @@ static const app_fixture *fixture_of_object(const planner *p, int object)
     return NULL;
 }
 
-/* Project object `object` and every object in its group, where the document has them. */
+/* Project object `object`, every object in its group and every object mounted on it (a
+ * vanity's basin, tap and mirror), where the document has them. */
 static int collect_objects(planner *p, ui_fixture_drag *d)
 {
     const app_project *pr = &p->project;
     const char *group = pr->objects[d->object].group;
     d->objects = malloc((size_t)pr->object_count * sizeof *d->objects);
     d->start = malloc((size_t)pr->object_count * sizeof *d->start);
-    if (!d->objects || !d->start)
+    int *mounted = malloc((size_t)pr->object_count * sizeof *mounted);
+    if (!d->objects || !d->start || !mounted) {
+        free(mounted);
         return 0;
+    }
+    int n_mounted = app_group_members(pr, d->object, mounted), m = 0;
     d->object_count = 0;
     for (int i = 0; i < pr->object_count; i++) {
-        if (i != d->object && !(group[0] && !strcmp(pr->objects[i].group, group)))
+        while (m < n_mounted && mounted[m] < i)
+            m++;
+        int on_it = m < n_mounted && mounted[m] == i;
+        if (i != d->object && !on_it && !(group[0] && !strcmp(pr->objects[i].group, group)))
             continue;
         d->objects[d->object_count] = i;
         memcpy(d->start[d->object_count++], pr->objects[i].position_mm, sizeof d->start[0]);
     }
+    free(mounted);
     return 1;
 }
 

@@ -282,6 +282,27 @@ static int variant_combo(planner *p, const app_object *o)
     return 1;
 }
 
+/* What the selection is mounted on and what is mounted on it (app_object.parent), and the
+ * Ungroup button that detaches both; 1 when it edited the document. */
+static int group_fields(planner *p, const app_object *o)
+{
+    int children = 0;
+    for (int k = 0; k < p->project.object_count; k++)
+        children += !strcmp(p->project.objects[k].parent, o->name);
+    if (!o->parent[0] && !children)
+        return 0;
+    if (o->parent[0])
+        ui_gui_text("mounted on %s", o->parent);
+    if (children)
+        ui_gui_text("carries %d object%s (they move with it)", children, children == 1 ? "" : "s");
+    if (!ui_gui_button("Ungroup"))
+        return 0;
+    char line[160];
+    snprintf(line, sizeof line, "ungroup \"%s\"", o->name);
+    planner_edit(p, line);
+    return 1;
+}
+
 static void selection_panel(planner *p)
 {
     int i = p->plan_o.selected_object;
@@ -339,6 +360,10 @@ static void selection_panel(planner *p)
             snprintf(line, sizeof line, "remove \"%s\"", o->name);
             p->plan_o.selected_object = -1;
             planner_edit(p, line);
+            ui_gui_end();
+            return;
+        }
+        if (group_fields(p, o)) {
             ui_gui_end();
             return;
         }

@@ -63,14 +63,15 @@ int planner_place_selected(planner *p, double x_mm, double y_mm)
     }
     const cat_product *prod = &b->product;
     const char *variant = b->variant < prod->variant_count ? prod->variants[b->variant].code : "";
-    /* Wall-hung products (basins, WCs, mirrors, lamps) keep the catalog's mounting height
-     * for later; they start on the floor against the nearest wall. */
+    /* No height: the product lands at its mounting height, or on the product it mounts onto
+     * when one is near the drop point (a basin on its vanity), against the nearest wall
+     * (docs/editing.md "Mounting heights"). */
     char line[512];
-    snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f 0 snap wall",
-             prod->manufacturer, prod->article, variant, x_mm, y_mm);
+    snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f snap wall", prod->manufacturer,
+             prod->article, variant, x_mm, y_mm);
     int rc = planner_edit(p, line);
     if (rc) {
-        snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f 0", prod->manufacturer,
+        snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f", prod->manufacturer,
                  prod->article, variant, x_mm, y_mm);
         rc = planner_edit(p, line);
     }

@@ -677,6 +677,8 @@ app_result app_placement_check(const app_project *p, const app_fixture *fx, int 
         r = check_wheelchair_wc(&c);
     if (r == APP_OK && c.bf != APP_BARRIER_FREE_OFF)
         r = check_barrier_free_doors(&c);
+    if (r == APP_OK)
+        r = pl_check_mounting(p, fx, count, out);
     ctx_free(&c);
     if (r != APP_OK && err && err_size)
         snprintf(err, err_size, "out of memory for the placement findings");

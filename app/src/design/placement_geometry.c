@@ -297,8 +297,8 @@ void app_findings_free(app_findings *f)
 
 const char *app_finding_kind_name(app_finding_kind k)
 {
-    static const char *const names[] = {"collision", "outside-room", "prewall",     "opening",
-                                        "free-area", "distance",     "barrier-free"};
+    static const char *const names[] = {"collision", "outside-room", "prewall",      "opening",
+                                        "free-area", "distance",     "barrier-free", "floating"};
     return (unsigned)k < sizeof names / sizeof names[0] ? names[k] : "unknown";
 }
 

@@ -52,4 +52,9 @@ app_result pl_add_finding(app_findings *f, app_finding_kind kind, app_severity s
 #endif
     ;
 
+/* placement_mounting.c: the floating-basin findings (a basin neither on a vanity unit nor
+ * wall-hung at a plausible rim height nor standing on the floor). */
+app_result pl_check_mounting(const app_project *p, const app_fixture *fx, int count,
+                             app_findings *out);
+
 #endif

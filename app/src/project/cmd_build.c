@@ -300,7 +300,8 @@ static app_result check_object(const app_project *p, const app_object *o, int se
 {
     if (!terminated(o->name, sizeof o->name) || !o->name[0])
         return fail(err, err_size, APP_ERR_SCHEMA, "an object needs a name (up to 63 bytes)");
-    if (!terminated(o->model, sizeof o->model) || !terminated(o->group, sizeof o->group))
+    if (!terminated(o->model, sizeof o->model) || !terminated(o->group, sizeof o->group) ||
+        !terminated(o->parent, sizeof o->parent))
         return fail(err, err_size, APP_ERR_SCHEMA, "object \"%s\": a text field is too long",
                     o->name);
     if ((unsigned)o->shape > APP_SHAPE_MODEL)
@@ -392,7 +393,7 @@ static app_result build_object(const app_project *p, const app_command_desc *d, 
     const app_object *old = &p->objects[d->index];
     if (d->type == APP_CMD_REMOVE_OBJECT) {
         snprintf(c->label, sizeof c->label, "remove \"%s\"", old->name);
-        return cmd_add_edit(c, CMD_T_OBJECT, CMD_OP_REMOVE, d->index, old, NULL);
+        return cmd_group_remove(p, d->index, c);
     }
     app_object o = *old;
     switch (d->type) {
@@ -431,7 +432,9 @@ static app_result build_object(const app_project *p, const app_command_desc *d, 
     }
     if ((r = check_object(p, &o, d->index, err, err_size)) != APP_OK)
         return r;
-    return cmd_add_edit(c, CMD_T_OBJECT, CMD_OP_REPLACE, d->index, old, &o);
+    if ((r = cmd_add_edit(c, CMD_T_OBJECT, CMD_OP_REPLACE, d->index, old, &o)) != APP_OK)
+        return r;
+    return cmd_group_follow(p, d->index, &o, c);
 }
 
 static app_result build_tiling(const app_project *p, const app_command_desc *d, cmd_command *c,
@@ -679,6 +682,10 @@ app_result cmd_build(const app_project *p, const app_command_desc *d, cmd_comman
     case APP_CMD_SET_PROBE:
         r = cmd_build_probe(p, d, out, err, err_size);
         break;
+    case APP_CMD_SET_PARENT:
+    case APP_CMD_UNGROUP:
+        r = cmd_build_parent(p, d, out, err, err_size);
+        break;
     default:
         r = fail(err, err_size, APP_ERR_SCHEMA, "unknown command type %d", (int)d->type);
         break;
@@ -699,6 +706,6 @@ const char *app_command_type_name(app_command_type t)
         "set-tile-start", "set-tile-rotation", "add-opening",      "remove-opening",
         "move-opening",   "move-corner",       "add-prewall",      "remove-prewall",
         "add-niche",      "remove-niche",      "add-material",     "set-reflection",
-        "set-probe"};
+        "set-probe",      "set-parent",        "ungroup"};
     return (unsigned)t < APP_CMD_COUNT ? names[t] : "unknown";
 }

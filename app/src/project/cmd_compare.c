@@ -99,6 +99,7 @@ static int object_eq(cmp *c, const app_object *x, const app_object *y)
     VEC(size_mm, 3);
     NUM(material);
     STR(group);
+    STR(parent);
     NUM(has_product);
     return product_eq(c, &x->product, &y->product);
 }

@@ -56,6 +56,19 @@ app_result cmd_build_probe(const app_project *p, const app_command_desc *d, cmd_
 int cmd_probe_words(const app_material *m, int count, const char *const *words, app_command_desc *d,
                     char *why, size_t why_size);
 const char *cmd_probe_update_name(int update);
+
+/* cmd_group.c: objects mounted on others (app_object.parent). cmd_group_members lists the
+ * objects mounted on object `index`, directly or through others (out has room for
+ * p->object_count entries; returns how many). cmd_group_follow adds the edits that carry them
+ * along when object `index` becomes `moved` (same offset, turned about its position by the
+ * same angle). cmd_group_remove adds the edits that remove the object and them. */
+int cmd_group_members(const app_project *p, int index, int *out);
+app_result cmd_group_follow(const app_project *p, int index, const app_object *moved,
+                            cmd_command *c);
+app_result cmd_group_remove(const app_project *p, int index, cmd_command *c);
+/* APP_CMD_SET_PARENT and APP_CMD_UNGROUP. */
+app_result cmd_build_parent(const app_project *p, const app_command_desc *d, cmd_command *c,
+                            char *err, size_t err_size);
 const char *cmd_correction_name(int correction);
 
 #endif

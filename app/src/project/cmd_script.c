@@ -18,6 +18,14 @@
 /* How far `snap wall` looks for a wall, and `snap corner` / `snap neighbour` for a corner or
  * a neighbour (mm); a neighbour is kept at the 200 mm of DOMAIN.md "Clearances". */
 #define SNAP_WALL_MM 500.0
+/* A dropped product looks for its carrier (a basin for its vanity) this far from the point. */
+#define MOUNT_REACH_MM 300.0
+/* A tap's hole: this far forward of the basin's back face (a one-hole furniture basin's hole
+ * sits 50-60 mm in front of the back rim). */
+#define TAP_HOLE_MM 50.0
+/* A mirror's underside above the basin's rim: 300 mm leaves room for the tap and splashes
+ * (the designed demo: rim 850, mirror from 1150). */
+#define MIRROR_ABOVE_MM 300.0
 #define SNAP_CORNER_MM 300.0
 #define SNAP_NEIGHBOUR_MM 300.0
 #define NEIGHBOUR_GAP_MM 200.0
@@ -399,6 +407,56 @@ static int variant_material(const app_project *p, const app_product_ref *ref,
     return mat;
 }
 
+/* A dropped product's carrier and height (docs/editing.md "Mounting heights"): the object
+ * named `on`, else (without a height) the nearest product it mounts onto within
+ * MOUNT_REACH_MM of the drop point. On a carrier it takes the carrier's plan position and
+ * turn (a basin on its vanity, a tap on the basin's tap hole, a mirror above the basin) and
+ * is mounted on it; without one it lands at its category's mounting height. */
+static int mount(sctx *c, const app_product_info *info, const char *on, int has_z, app_pose *pose,
+                 char *parent, size_t parent_size)
+{
+    app_fixture *fx = NULL;
+    int n = 0, carrier = -1;
+    char err[1024];
+    if (app_placement_fixtures(c->p, c->env ? c->env->lookup : NULL, c->env ? c->env->user : NULL,
+                               &fx, &n, err, sizeof err) != APP_OK)
+        return fail(c, "%s: %s", c->tok[0], err);
+    if (on) {
+        int i = find_object(c, on);
+        for (int k = 0; k < n && i >= 0; k++)
+            if (fx[k].object == i)
+                carrier = k;
+        if (i < 0 || carrier < 0) {
+            free(fx);
+            return i < 0 ? 0 : fail(c, "place: \"%s\" has no footprint to mount on", on);
+        }
+    } else {
+        double at[2] = {pose->x, pose->y};
+        carrier = app_mounting_support(fx, n, info->category, at, MOUNT_REACH_MM);
+    }
+    if (carrier >= 0) {
+        const app_object *o = &c->p->objects[fx[carrier].object];
+        const double rad = o->rotation_deg[2] * 3.14159265358979323846 / 180.0;
+        /* Forward from the carrier's back face (local +y turned into the plan). */
+        double ahead = 0, above = 0;
+        if (info->category == CAT_CATEGORY_TAPS_MIXERS)
+            ahead = TAP_HOLE_MM;
+        else if (info->category == CAT_CATEGORY_MIRRORS ||
+                 info->category == CAT_CATEGORY_MIRROR_CABINETS)
+            above = MIRROR_ABOVE_MM;
+        pose->x = o->position_mm[0] - sin(rad) * ahead;
+        pose->y = o->position_mm[1] + cos(rad) * ahead;
+        pose->rotation_deg = o->rotation_deg[2];
+        if (!has_z)
+            pose->z = fx[carrier].z1 + above;
+        snprintf(parent, parent_size, "%s", o->name);
+    } else if (!has_z) {
+        pose->z = app_mounting_z(info->category, info->height_mm);
+    }
+    free(fx);
+    return 1;
+}
+
 static int do_place(sctx *c)
 {
     int at = keyword(c, 1, "at");
@@ -407,14 +465,17 @@ static int do_place(sctx *c)
     app_product_ref ref;
     if (!product_ref(c, 1, at, &ref))
         return 0;
-    double pos[3], rot = 0;
-    for (int k = 0; k < 3; k++)
+    double pos[3] = {0, 0, 0}, rot = 0;
+    /* Without a height the product lands at its mounting height (or on its carrier). */
+    int has_z = at + 3 < c->ntok && decimal_syntax(c->tok[at + 3]);
+    int opt = at + 3 + has_z;
+    for (int k = 0; k < 2 + has_z; k++)
         if (!number(c, at + 1 + k, &pos[k]))
             return 0;
-    if (kw_numbers(c, at + 4, "rot", 1, &rot, 0) == 0)
+    if (kw_numbers(c, opt, "rot", 1, &rot, 0) == 0)
         return 0;
-    const char *as = NULL;
-    if (kw_word(c, at + 4, "as", &as, 0) == 0)
+    const char *as = NULL, *on = NULL;
+    if (kw_word(c, opt, "as", &as, 0) == 0 || kw_word(c, opt, "on", &on, 0) == 0)
         return 0;
     app_product_info info;
     if (!lookup(c, &ref, &info))
@@ -425,7 +486,10 @@ static int do_place(sctx *c)
     if (!ref.variant[0] && info.variant[0])
         memcpy(ref.variant, info.variant, sizeof ref.variant);
     app_pose pose = {pos[0], pos[1], pos[2], rot};
-    if (!snap(c, at + 4, info.width_mm, info.depth_mm, -1, &pose) || !all_used(c))
+    if (!snap(c, opt, info.width_mm, info.depth_mm, -1, &pose) || !all_used(c))
+        return 0;
+    char parent[64] = "";
+    if ((on || !has_z) && !mount(c, &info, on, has_z, &pose, parent, sizeof parent))
         return 0;
 
     app_command_desc d;
@@ -451,6 +515,7 @@ static int do_place(sctx *c)
     o->scale[0] = o->scale[1] = o->scale[2] = 1;
     o->has_product = 1;
     o->product = ref;
+    memcpy(o->parent, parent, sizeof o->parent);
 
     app_command_desc m;
     int mat = variant_material(c->p, &ref, &info, &m);
@@ -948,6 +1013,30 @@ static int do_undo_redo(sctx *c, int redo)
     return 1;
 }
 
+/* mount CHILD on PARENT | ungroup NAME (docs/editing.md "Groups"). */
+static int do_group(sctx *c, int ungroup)
+{
+    const char *name = NULL, *on = NULL, *parent = NULL;
+    if (!word(c, 1, &name))
+        return 0;
+    app_command_desc d;
+    memset(&d, 0, sizeof d);
+    if ((d.index = find_object(c, name)) < 0)
+        return 0;
+    if (ungroup) {
+        d.type = APP_CMD_UNGROUP;
+    } else {
+        if (!word(c, 2, &on) || !word(c, 3, &parent))
+            return 0;
+        if (strcmp(on, "on"))
+            return fail(c, "mount: write \"mount %s on OBJECT\"", name);
+        d.type = APP_CMD_SET_PARENT;
+        if (!copy_name(c, d.parent, sizeof d.parent, parent, "parent"))
+            return 0;
+    }
+    return all_used(c) && run(c, &d);
+}
+
 static int dispatch(sctx *c)
 {
     const char *cmd = c->tok[0];
@@ -963,6 +1052,8 @@ static int dispatch(sctx *c)
     if (!strcmp(cmd, "remove") || !strcmp(cmd, "rotate") || !strcmp(cmd, "variant") ||
         !strcmp(cmd, "product"))
         return do_object_edit(c);
+    if (!strcmp(cmd, "mount") || !strcmp(cmd, "ungroup"))
+        return do_group(c, !strcmp(cmd, "ungroup"));
     if (!strcmp(cmd, "tile"))
         return do_tile(c);
     if (!strcmp(cmd, "untile")) {

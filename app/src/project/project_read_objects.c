@@ -82,6 +82,8 @@ static app_result read_object(pj_ctx *c, const cJSON *item, int index, void *out
     app_result r = pj_get_string(c, item, "name", 0, 0, o->name, sizeof o->name);
     if (r == APP_OK)
         r = pj_get_string(c, item, "group", 0, 1, o->group, sizeof o->group);
+    if (r == APP_OK)
+        r = pj_get_string(c, item, "parent", 0, 1, o->parent, sizeof o->parent);
     if (r != APP_OK)
         return r;
 
@@ -127,5 +129,22 @@ app_result pj_read_objects(pj_ctx *c, const cJSON *root)
     app_result r = pj_read_array(c, root, "objects", &a);
     c->p->objects = a.items;
     c->p->object_count = a.count;
+    /* A "parent" names another object: the one this object is mounted on. */
+    const app_project *p = c->p;
+    for (int i = 0; r == APP_OK && i < p->object_count; i++) {
+        const char *parent = p->objects[i].parent;
+        int found = 0;
+        for (int k = 0; parent[0] && k < p->object_count && !found; k++)
+            found = k != i && !strcmp(p->objects[k].name, parent);
+        if (parent[0] && !found) {
+            size_t mark = pj_path_key(c, "objects");
+            pj_path_index(c, i);
+            pj_path_key(c, "parent");
+            r = pj_fail(c, APP_ERR_SCHEMA,
+                        "\"%s\" names no other object (the object \"%s\" is mounted on)", parent,
+                        p->objects[i].name);
+            pj_path_restore(c, mark);
+        }
+    }
     return r;
 }

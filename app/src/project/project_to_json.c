@@ -231,6 +231,8 @@ static void put_object(jb *b, cJSON *list, const app_object *obj)
     put_str(b, o, "name", obj->name, sizeof obj->name);
     if (obj->group[0])
         put_str(b, o, "group", obj->group, sizeof obj->group);
+    if (obj->parent[0])
+        put_str(b, o, "parent", obj->parent, sizeof obj->parent);
     if (b->r != APP_OK)
         return;
     if (obj->has_product) {

@@ -109,6 +109,8 @@ typedef enum app_finding_kind {
     APP_FINDING_FREE_AREA,     /* a fixture's free area is blocked by a fixture or a wall */
     APP_FINDING_DISTANCE,      /* less than 200 mm between fixtures or to a side wall */
     APP_FINDING_BARRIER_FREE,  /* a DIN 18040-2 rule (only with barrier-free checks) */
+    APP_FINDING_FLOATING,      /* a basin carried by nothing: not on a vanity unit, not
+                                  wall-hung at a plausible rim height, not on the floor */
 } app_finding_kind;
 
 typedef enum app_severity {
@@ -178,6 +180,34 @@ typedef struct app_free_area {
  * memory. */
 app_result app_free_areas(const app_project *p, const app_fixture *fx, int count,
                           app_barrier_free bf, app_free_area *out, char *err, size_t err_size);
+
+/* ---- mounting heights (DOMAIN.md "Typical sizes"; docs/editing.md "Mounting heights") ---- */
+
+typedef enum app_mount_of {
+    APP_MOUNT_TOP = 0, /* height_mm is the product's top: a basin's rim, a WC's seat */
+    APP_MOUNT_BOTTOM   /* height_mm is its underside: a mirror, a radiator */
+} app_mount_of;
+
+/* Where a product of a category is mounted: at height_mm (measured as `of` says) above the
+ * floor, or on top of a product of category `onto` when one is there (0 = never). */
+typedef struct app_mounting {
+    int category; /* cat_category */
+    double height_mm;
+    app_mount_of of;
+    int onto;
+} app_mounting;
+
+/* The category's mounting, NULL when it has none (it lands on the floor). */
+const app_mounting *app_mounting_of(int category);
+/* The height (position_mm z) a product of that category and height lands at when dropped
+ * freely: 850 - 170 = 680 for a 170 mm basin. 0 for a category without a mounting, and for
+ * a product taller than its mounting height (it stands on the floor). */
+double app_mounting_z(int category, double height_mm);
+/* The fixture of fx a product of that category dropped at plan point `at` is carried by: the
+ * nearest one of the mounting's `onto` category within max_distance_mm of the point (a basin
+ * dropped over or beside a vanity unit), or -1. */
+int app_mounting_support(const app_fixture *fx, int count, int category, const double at[2],
+                         double max_distance_mm);
 
 /* ---- snapping ---------------------------------------------------------------------------- */
 

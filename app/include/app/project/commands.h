@@ -13,6 +13,12 @@
  *     if (app_history_do(h, &project, &d, err, sizeof err) != APP_OK) show(err);
  *     app_history_undo(h, &project, err, sizeof err);
  *
+ * Groups: an object whose `parent` names another object is mounted on it (a basin on its
+ * vanity, a tap on its basin, a mirror above the basin). Moving, rotating or removing an
+ * object (APP_CMD_MOVE_OBJECT, APP_CMD_ROTATE_OBJECT, APP_CMD_SET_OBJECT, APP_CMD_REMOVE_OBJECT)
+ * takes everything mounted on it, directly or through others, along in the same undo step:
+ * moved by the same offset, turned about the object's position by the same angle, removed.
+ *
  * Results: APP_OK; APP_ERR_NOT_FOUND for an index out of range or nothing to undo/redo;
  * APP_ERR_SCHEMA when the edit would make an invalid project (the message says which rule);
  * APP_ERR_OUT_OF_MEMORY. The project's arrays are reallocated with realloc/free, as
@@ -57,6 +63,8 @@ typedef enum app_command_type {
     APP_CMD_SET_REFLECTION,    /* index (material), reflectivity, glossiness, blend */
     APP_CMD_SET_PROBE,         /* index (material), probe_update, probe_every, probe_resolution,
                                   correction (cmd_probe.c) */
+    APP_CMD_SET_PARENT,        /* index, parent (an object's name; "" = detach it) */
+    APP_CMD_UNGROUP,           /* index: detaches it from its parent and its children from it */
     APP_CMD_COUNT
 } app_command_type;
 
@@ -86,7 +94,13 @@ typedef struct app_command_desc {
     /* APP_CMD_SET_PROBE: the material's reflection probe policy (app_material's fields of
      * the same names; RENDERING.md section 8). */
     int probe_update, probe_every, probe_resolution, correction;
+    char parent[64]; /* APP_CMD_SET_PARENT */
 } app_command_desc;
+
+/* The objects mounted on object `index`, directly or through others (app_object.parent),
+ * written to out (room for p->object_count); returns how many. A live drag moves them with
+ * the object it drags, as the move edit on release will. */
+int app_group_members(const app_project *p, int index, int *out);
 
 /* "add-object", "move-object", ... (never NULL). */
 const char *app_command_type_name(app_command_type t);

@@ -110,6 +110,9 @@ typedef struct app_object {
     int material;           /* index into app_project.materials */
     char group[64];         /* parts of one fixture share a group name ("" = none): one
                                reflection probe for all of them, none of them in it */
+    char parent[64];        /* the name of the object this one is mounted on ("" = none): a
+                               basin on its vanity, a tap on its basin. Moving, rotating or
+                               removing the parent takes it along (app/project/commands.h) */
     int has_product; /* version 2: 1 = a placed catalog product (app/design/room.h); its model,
                         size and material come from the catalog */
     app_product_ref product;
