@@ -144,7 +144,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "bake output paper landscape scale svg renders render-size customer date "
-                "no-clearances quality backend",
+                "company xlsx no-clearances quality backend",
      .summary = "the print set: plan, wall elevations with tiles, renders, part list, quotation",
      .help = "  Renders of the project's cameras at quality final (or the PNG files in\n"
              "  --renders DIR).\n"},
@@ -174,10 +174,14 @@ const cli_command cli_commands[] = {
      .run = cli_cmd_quantities,
      .synopsis = "PROJECT",
      .max_args = 1,
-     .options = "csv-table surplus offcuts bench bench-mosaic db",
-     .summary = "the tile part list (whole/cut tiles, offcuts, boxes) and bill of materials",
-     .help = "  Prices and VAT from the catalog. --bench N times the layout; --bench-mosaic needs\n"
-             "  no project.\n",
+     .options = "csv-table json-table surplus offcuts company date xlsx bench bench-mosaic db",
+     .summary = "the tile part list (whole/cut tiles, offcuts, boxes), consumables, labour and the "
+                "quotation",
+     .help = "  Prices and VAT from the catalog. --json or --csv print machine-readable output;\n"
+             "  --xlsx FILE writes the quotation as a spreadsheet with formulas; --company FILE\n"
+             "  the company block (default $XDG_CONFIG_HOME/tessera/company.json), --date\n"
+             "  YYYY-MM-DD the quote's date. --bench N times the layout; --bench-mosaic needs no\n"
+             "  project.\n",
      .defaults = cli_defaults_quantities},
     {.name = "surfaces",
      .run = cli_cmd_surfaces,

@@ -29,7 +29,7 @@ typedef struct cli_options {
     /* Files and names. */
     const char *output, *camera, *csv, *plot, *markdown, *animate, *faces, *stats;
     const char *db, *category, *manufacturer, *variant, *out_dir, *svg, *renders, *customer, *date,
-        *mask, *heatmap, *png, *script, *frame_log;
+        *mask, *heatmap, *png, *script, *frame_log, *company, *xlsx;
 
     /* The image and the renderer. */
     int width, height;               /* --size WxH */
@@ -71,7 +71,7 @@ typedef struct cli_options {
 
     /* Flags. */
     int all_views, dry_run, barrier_free, wheelchair, quiet, csv_table, offcuts, bench_mosaic,
-        landscape, no_clearances, fullscreen, list;
+        landscape, no_clearances, fullscreen, list, json_table;
 } cli_options;
 
 /* Prints `tessera CMD`'s usage to stderr and returns CLI_USAGE: for a command that finds its

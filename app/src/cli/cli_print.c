@@ -218,8 +218,10 @@ int cli_cmd_print(const cli_options *o)
     char catalog_src[4200], assets[4096];
     snprintf(assets, sizeof assets, "%s", assets_dir());
     snprintf(catalog_src, sizeof catalog_src, "%s/catalog", assets);
-    po.customer = customer;
+    po.customer = customer ? customer : (p.customer.name[0] ? p.customer.name : NULL);
     po.date = date;
+    po.company = o->company;
+    po.xlsx = o->xlsx;
     po.catalog_source = catalog_src;
     po.assets_dir = assets;
     po.images = (const char *const *)images.paths;

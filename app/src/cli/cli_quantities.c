@@ -9,7 +9,9 @@
 #include "app/cli/cli.h"
 #include "app/design/quantities.h"
 #include "app/design/room_surfaces.h"
+#include "app/output/quote.h"
 #include "cli_commands.h"
+#include "cli_quantities_json.h"
 
 #include <errno.h>
 #include <math.h>
@@ -250,14 +252,90 @@ static void print_offcuts(const app_quantities *q, const app_tile_layout *layout
     }
 }
 
+static const char *kind_name(app_bom_kind k)
+{
+    return k == APP_BOM_CONSUMABLE ? "consumable" : k == APP_BOM_LABOUR ? "labour" : "product";
+}
+
+static void print_consumables(const app_consumables *c, int csv)
+{
+    if (csv) {
+        puts("section,what,amount,unit");
+        printf("consumables,floor tiled,%.4f,m2\nconsumables,walls tiled,%.4f,m2\n", c->floor_m2,
+               c->wall_m2);
+        printf("consumables,adhesive,%.3f,kg\nconsumables,adhesive bags,%d,piece\n", c->adhesive_kg,
+               c->adhesive_bags);
+        printf("consumables,joint length,%.3f,m\nconsumables,joint volume,%.4f,dm3\n",
+               c->joint_length_m, c->grout_dm3);
+        printf("consumables,grout,%.3f,kg\nconsumables,grout bags,%d,piece\n", c->grout_kg,
+               c->grout_bags);
+        printf("consumables,edge joint,%.3f,m\nconsumables,silicone,%.1f,ml\n", c->edge_joint_m,
+               c->silicone_ml);
+        printf("consumables,silicone cartridges,%d,piece\n", c->silicone_cartridges);
+        printf("consumables,waterproofing,%.4f,m2\nconsumables,fixtures,%d,piece\n",
+               c->waterproofing_m2, c->fixtures);
+        return;
+    }
+    printf("\nConsumables and labour (docs/tiling.md \"Consumables and labour\")\n");
+    printf("  tiled: floor %.2f m2, walls %.2f m2\n", c->floor_m2, c->wall_m2);
+    printf("  adhesive %.2f kg (%d bag%s)\n", c->adhesive_kg, c->adhesive_bags,
+           c->adhesive_bags == 1 ? "" : "s");
+    printf("  grout %.2f kg: %.3f dm3 of joint, %.1f m of joint (%d bag%s)\n", c->grout_kg,
+           c->grout_dm3, c->joint_length_m, c->grout_bags, c->grout_bags == 1 ? "" : "s");
+    printf("  edge joint %.2f m: silicone %.0f ml (%d cartridge%s)\n", c->edge_joint_m,
+           c->silicone_ml, c->silicone_cartridges, c->silicone_cartridges == 1 ? "" : "s");
+    printf("  waterproofing %.2f m2 (%d shower zone%s); %d product%s to install\n",
+           c->waterproofing_m2, c->shower_zones, c->shower_zones == 1 ? "" : "s", c->fixtures,
+           c->fixtures == 1 ? "" : "s");
+}
+
+static void print_quote_head(const app_quote *q, int csv)
+{
+    const app_customer *cu = &q->customer;
+    if (csv) {
+        puts("section,field,value");
+        printf("quote,number,");
+        csv_field(q->number, 1);
+        printf("quote,date,%s\nquote,valid_days,%d\nquote,valid_until,%s\n", q->date, q->valid_days,
+               q->valid_until);
+        if (q->has_company) {
+            printf("quote,company,");
+            csv_field(q->company.name, 1);
+        }
+        if (cu->name[0]) {
+            printf("quote,customer,");
+            csv_field(cu->name, 1);
+        }
+        for (int i = 0; i < cu->address_lines; i++) {
+            printf("quote,customer_address,");
+            csv_field(cu->address[i], 1);
+        }
+        return;
+    }
+    printf("\nQuotation %s, %s, valid until %s (%d days)\n", q->number, q->date, q->valid_until,
+           q->valid_days);
+    if (q->has_company) {
+        printf("  from: %s", q->company.name);
+        for (int i = 0; i < q->company.line_count; i++)
+            printf(", %s", q->company.lines[i]);
+        putchar('\n');
+    }
+    if (cu->name[0] || cu->address_lines) {
+        printf("  for: %s", cu->name);
+        for (int i = 0; i < cu->address_lines; i++)
+            printf(", %s", cu->address[i]);
+        putchar('\n');
+    }
+}
+
 static void print_bom(const app_bom *b, int csv)
 {
     char up[32], net[32], vat[32], gross[32];
     if (csv)
         puts("section,manufacturer,article,variant,name,quantity,unit,unit_price,currency,"
-             "vat_percent,net,vat,gross");
+             "vat_percent,net,vat,gross,position,kind,detail");
     else
-        printf("\nBill of materials\n%-20s %-14s %-40s %9s %-5s %10s %5s %11s %11s\n",
+        printf("\nBill of materials\n%3s %-20s %-14s %-40s %9s %-5s %10s %5s %11s %11s\n", "pos",
                "manufacturer", "article", "name", "quantity", "unit", "unit price", "VAT %", "net",
                "gross");
     for (int i = 0; i < b->line_count; i++) {
@@ -281,13 +359,19 @@ static void print_bom(const app_bom *b, int csv)
             csv_field(app_format_percent(l->vat_percent, q, sizeof q), 0);
             csv_field(net, 0);
             csv_field(vat, 0);
-            csv_field(gross, 1);
+            csv_field(gross, 0);
+            snprintf(q, sizeof q, "%d", i + 1);
+            csv_field(q, 0);
+            csv_field(kind_name(l->kind), 0);
+            csv_field(l->detail, 1);
         } else {
             char pc[16];
-            printf("%-20.20s %-14.14s %-40.40s %9.2f %-5s %10s %5s %11s %11s%s\n",
+            printf("%3d %-20.20s %-14.14s %-40.40s %9.2f %-5s %10s %5s %11s %11s%s\n", i + 1,
                    l->product.manufacturer, l->product.article, l->name, l->quantity,
                    cat_unit_name(l->unit), up, app_format_percent(l->vat_percent, pc, sizeof pc),
                    net, gross, l->foreign_currency ? " (not in the total)" : "");
+            if (l->detail[0])
+                printf("%3s %s\n", "", l->detail);
         }
     }
     /* A line in another currency is refused, not converted (no rates): it is named with both
@@ -317,6 +401,15 @@ static void print_bom(const app_bom *b, int csv)
         printf("total,,,,,,,,%s,,%s,%s,%s\n", b->currency, net, vat, gross);
     else {
         printf("Total net %s %s, VAT %s, gross %s %s\n", net, b->currency, vat, gross, b->currency);
+        double rates[16];
+        long long by_rate[16];
+        int nr = app_bom_vat_by_rate(b, rates, by_rate, 16);
+        for (int k = 0; k < nr; k++) {
+            char pc[16], amount[32];
+            money(amount, sizeof amount, by_rate[k]);
+            printf("  VAT %s %%: %s %s\n", app_format_percent(rates[k], pc, sizeof pc), amount,
+                   b->currency);
+        }
         if (b->foreign)
             printf("%d line(s) in another currency than %s, not in the total\n", b->foreign,
                    b->currency);
@@ -422,6 +515,10 @@ int cli_cmd_quantities(const cli_options *o)
         return bench_mosaic(o->bench_repeats > 0 ? o->bench_repeats : 5);
     if (!o->project)
         return cli_usage_error(o);
+    if (o->csv_table && o->json_table) {
+        fprintf(stderr, "tessera quantities: give --csv or --json, not both\n");
+        return CLI_USAGE;
+    }
     char err[2048];
     app_project p;
     if (app_project_read(o->project, &p, err, sizeof err) != APP_OK) {
@@ -452,6 +549,32 @@ int cli_cmd_quantities(const cli_options *o)
         res = app_quantities_compute(layouts, n, &qo, &q, err, sizeof err);
     if (res == APP_OK)
         res = app_bom_build(db, &p, &q, &bom, err, sizeof err);
+    app_consumables cons;
+    memset(&cons, 0, sizeof cons);
+    if (res == APP_OK)
+        res = app_consumables_compute(&p, db, layouts, n, NULL, &cons, err, sizeof err);
+    if (res == APP_OK)
+        res = app_bom_add_consumables(db, &cons, NULL, &bom, err, sizeof err);
+    app_quote quote;
+    memset(&quote, 0, sizeof quote);
+    if (res == APP_OK &&
+        app_quote_make(&p, o->company, o->date, &quote, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        rc = CLI_USAGE;
+        goto done;
+    }
+    if (res == APP_OK && o->xlsx &&
+        app_quote_write_xlsx(o->xlsx, &p, &quote, &bom, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        rc = CLI_FAILED;
+        goto done;
+    }
+    if (res == APP_OK && o->json_table) {
+        rc = cli_quantities_json(stdout, &p, &q, &cons, &quote, &bom, o->offcuts ? layouts : NULL)
+                 ? CLI_OK
+                 : CLI_FAILED;
+        goto done;
+    }
     if (res != APP_OK) {
         fprintf(stderr, "tessera: %s: %s\n", o->project, err);
         rc = res == APP_ERR_OUT_OF_MEMORY || res == APP_ERR_IO ? CLI_FAILED : CLI_USAGE;
@@ -463,8 +586,11 @@ int cli_cmd_quantities(const cli_options *o)
             print_tiles(&q, &bom, o->csv_table);
         if (o->offcuts && p.tiling_count > 0)
             print_offcuts(&q, layouts, o->csv_table);
+        print_consumables(&cons, o->csv_table);
+        print_quote_head(&quote, o->csv_table);
         print_bom(&bom, o->csv_table);
     }
+done:
     app_bom_free(&bom);
     app_quantities_free(&q);
     app_tile_layouts_free(layouts, n);

@@ -2,6 +2,7 @@
  * the layouts of every tiling of a project, and the priced bill of materials (DOMAIN.md "What the
  * best planners print": unit price, VAT, totals). */
 #include "app/design/quantities.h"
+#include "quantities_internal.h"
 #include "tile_layout_internal.h"
 
 #include <limits.h>
@@ -257,6 +258,26 @@ void app_bom_total(app_bom *b)
         b->net_cents = b->vat_cents = b->gross_cents = 0;
 }
 
+int app_bom_vat_by_rate(const app_bom *b, double *rates, long long *vat_cents, int max)
+{
+    int n = 0;
+    for (int i = 0; b && i < b->line_count; i++) {
+        const app_bom_line *l = &b->lines[i];
+        if (l->foreign_currency || l->out_of_range)
+            continue; /* not in the totals either */
+        int k = 0;
+        while (k < n && fabs(rates[k] - l->vat_percent) > 1e-9)
+            k++;
+        if (k == n && n < max) {
+            rates[n] = l->vat_percent;
+            vat_cents[n++] = 0;
+        }
+        if (k < n)
+            vat_cents[k] += l->vat_cents;
+    }
+    return n;
+}
+
 const char *app_format_percent(double percent, char *buf, size_t size)
 {
     if (!buf || size == 0)
@@ -357,4 +378,23 @@ void app_bom_free(app_bom *b)
         return;
     free(b->lines);
     memset(b, 0, sizeof *b);
+}
+
+/* ---- consumables and labour lines ----------------------------------------------------------- */
+
+app_result qty_bom_add_priced(cat_db *db, app_bom *b, int *cap, const app_product_ref *ref,
+                              app_bom_kind kind, double quantity, const char *detail, char *err,
+                              size_t err_size)
+{
+    if (!(quantity > 0) || !ref->article[0])
+        return APP_OK;
+    app_bom_line *l;
+    if (add_line(b, cap, &l, err, err_size) != APP_OK)
+        return APP_ERR_OUT_OF_MEMORY;
+    l->product = *ref;
+    l->kind = kind;
+    price_line(db, l);
+    l->quantity = quantity;
+    snprintf(l->detail, sizeof l->detail, "%s", detail);
+    return APP_OK;
 }

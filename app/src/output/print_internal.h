@@ -5,6 +5,7 @@
 #define APP_PRINT_INTERNAL_H
 
 #include "app/output/print.h"
+#include "app/output/quote.h"
 #include "app/project/project.h"
 #include "app/design/quantities.h"
 #include "app/design/tile_layout.h"
@@ -64,6 +65,8 @@ typedef struct pr_doc {
     app_quantities q;
     int have_bom; /* bom is valid */
     app_bom bom;
+    app_consumables cons; /* the amounts behind the consumables and labour lines of bom */
+    app_quote quote;      /* company, customer, number, date, validity */
 
     pr_page *pages;
     int page_count;

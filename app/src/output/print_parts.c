@@ -257,6 +257,82 @@ static void tile_list(flow *f)
     note(f, text);
 }
 
+/* A logo (PNG) fitted into w x h mm at (x, y); nothing when it does not load. */
+static void logo(cairo_t *cr, const char *path, double x, double y, double w, double h)
+{
+    cairo_surface_t *img = cairo_image_surface_create_from_png(path);
+    if (cairo_surface_status(img) == CAIRO_STATUS_SUCCESS) {
+        int iw = cairo_image_surface_get_width(img), ih = cairo_image_surface_get_height(img);
+        double k = fmin(w / iw, h / ih);
+        cairo_save(cr);
+        cairo_translate(cr, x, y);
+        cairo_scale(cr, k, k);
+        cairo_set_source_surface(cr, img, 0, 0);
+        cairo_paint(cr);
+        cairo_restore(cr);
+    }
+    cairo_surface_destroy(img);
+}
+
+/* The quotation's head: the company (logo, name, address) on the left, the customer on the
+ * right, then the quote number, date and validity. */
+static void quote_head(flow *f)
+{
+    pr_doc *d = f->d;
+    const app_quote *q = &d->quote;
+    const app_customer *cu = &q->customer;
+    int left = q->has_company ? 1 + q->company.line_count : 0;
+    int right =
+        (cu->name[0] ? 1 : 0) + cu->address_lines + (cu->email[0] != 0) + (cu->phone[0] != 0);
+    double logo_h = q->has_company && q->company.logo[0] ? 12.0 : 0.0;
+    double line = 3.4, h = fmax(logo_h + left * line, (right ? right + 1 : 0) * line) + 2 * line;
+    need(f, h + ROW_H * 3);
+    if (drawing(f)) {
+        cairo_t *cr = d->cr;
+        double x = d->area_x, y = f->y;
+        cairo_set_source_rgb(cr, 0, 0, 0);
+        if (logo_h > 0)
+            logo(cr, q->company.logo, x, y, 40.0, logo_h - 1.0);
+        double ly = y + logo_h + line;
+        if (q->has_company) {
+            pr_set_font(cr, PR_TEXT_NORMAL, 1);
+            pr_text(cr, x, ly, 0.0, 1.0, q->company.name);
+            pr_set_font(cr, PR_TEXT_SMALL, 0);
+            for (int i = 0; i < q->company.line_count; i++)
+                pr_text(cr, x, ly + (i + 1) * line, 0.0, 1.0, q->company.lines[i]);
+        }
+        double rx = d->area_x + d->area_w * 0.6, ry = y + line;
+        if (right) {
+            pr_set_font(cr, PR_TEXT_SMALL, 1);
+            pr_text(cr, rx, ry, 0.0, 1.0, "Customer");
+            ry += line;
+            if (cu->name[0]) {
+                pr_set_font(cr, PR_TEXT_NORMAL, 1);
+                pr_text(cr, rx, ry, 0.0, 1.0, cu->name);
+                ry += line;
+            }
+            pr_set_font(cr, PR_TEXT_SMALL, 0);
+            for (int i = 0; i < cu->address_lines; i++, ry += line)
+                pr_text(cr, rx, ry, 0.0, 1.0, cu->address[i]);
+            if (cu->email[0])
+                pr_text(cr, rx, ry, 0.0, 1.0, cu->email), ry += line;
+            if (cu->phone[0])
+                pr_text(cr, rx, ry, 0.0, 1.0, cu->phone), ry += line;
+        }
+    }
+    f->y += h - line;
+    char text[256];
+    snprintf(text, sizeof text, "Quote no. %s      Date %s      Valid until %s (%d days)",
+             q->number, q->date, q->valid_until, q->valid_days);
+    need(f, ROW_H);
+    if (drawing(f)) {
+        pr_set_font(d->cr, PR_TEXT_NORMAL, 1);
+        cairo_set_source_rgb(d->cr, 0, 0, 0);
+        pr_text(d->cr, d->area_x, f->y + ROW_H - 1.5, 0.0, 1.0, text);
+    }
+    f->y += ROW_H + 1.0;
+}
+
 static void quotation(flow *f)
 {
     pr_doc *d = f->d;
@@ -265,6 +341,7 @@ static void quotation(flow *f)
                                {"VAT %", 0.07, 1}, {"Net total", 0.15, 1}};
     const int nc = (int)(sizeof cols / sizeof cols[0]);
     heading(f, "Quotation");
+    quote_head(f);
     if (!d->have_bom || d->bom.line_count == 0) {
         note(f, d->have_bom ? "No catalog products are placed in this project."
                             : "No prices: the catalog could not be opened.");
@@ -273,7 +350,8 @@ static void quotation(flow *f)
     header(f, cols, nc);
     for (int i = 0; i < d->bom.line_count; i++) {
         const app_bom_line *b = &d->bom.lines[i];
-        need(f, ROW_H);
+        double row_h = b->detail[0] ? ROW_H + 2.6 : ROW_H;
+        need(f, row_h);
         char pos[16], qty[32], unit_price[48], vat[16], net[48], desc[260];
         snprintf(pos, sizeof pos, "%d", i + 1);
         if (b->unit == CAT_UNIT_PIECE || b->unit == CAT_UNIT_BOX)
@@ -293,26 +371,21 @@ static void quotation(flow *f)
         const char *cells[] = {
             pos, b->product.article, desc, qty, cat_unit_name(b->unit), unit_price, vat, net};
         row_text(f, cols, nc, cells, ROW_H, 0, d->area_x);
-        f->y += ROW_H;
+        if (b->detail[0] && drawing(f)) {
+            /* How the amount came about, under the description. */
+            pr_set_font(d->cr, 1.6, 0);
+            cairo_set_source_rgb(d->cr, 0.35, 0.35, 0.35);
+            double x = d->area_x + (cols[0].width + cols[1].width) * d->area_w + 1.0;
+            pr_text(d->cr, x, f->y + ROW_H + 1.2, 0.0, 1.0, b->detail);
+            cairo_set_source_rgb(d->cr, 0, 0, 0);
+        }
+        f->y += row_h;
         rule(f, PR_LINE_THIN);
     }
     /* Totals: net, VAT by rate, gross. */
     double rates[16];
     long long vat_by_rate[16];
-    int nr = 0;
-    for (int i = 0; i < d->bom.line_count; i++) {
-        if (d->bom.lines[i].foreign_currency)
-            continue; /* not in the totals either */
-        int k = 0;
-        while (k < nr && fabs(rates[k] - d->bom.lines[i].vat_percent) > 1e-9)
-            k++;
-        if (k == nr && nr < 16) {
-            rates[nr] = d->bom.lines[i].vat_percent;
-            vat_by_rate[nr++] = 0;
-        }
-        if (k < nr)
-            vat_by_rate[k] += d->bom.lines[i].vat_cents;
-    }
+    int nr = app_bom_vat_by_rate(&d->bom, rates, vat_by_rate, 16);
     static const col tcols[] = {{"", 0.70, 0}, {"", 0.15, 1}, {"", 0.15, 1}};
     const char *cur = d->bom.currency[0] ? d->bom.currency : "";
     char money[48], label[64];
@@ -349,7 +422,12 @@ static void quotation(flow *f)
                  d->bom.foreign, d->bom.foreign == 1 ? "" : "s", d->bom.currency);
         note(f, text);
     }
-    note(f, "Prices are list prices without discount; valid subject to the supplier's terms.");
+    char text[200];
+    snprintf(text, sizeof text,
+             "Prices are list prices without discount. This quotation is valid for %d days, until "
+             "%s.",
+             d->quote.valid_days, d->quote.valid_until);
+    note(f, text);
 }
 
 /* One offcut use as a small drawing: the source tile, the piece its first cut took (grey),

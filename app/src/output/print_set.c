@@ -52,8 +52,23 @@ static void prepare_quantities(pr_doc *d)
     if (app_bom_build(d->db, d->p, d->have_quantities ? &d->q : &none, &d->bom, err, sizeof err) ==
         APP_OK)
         d->have_bom = 1;
-    else
+    else {
         warn(d, "bill of materials", err);
+        return;
+    }
+    /* Consumables and labour (docs/tiling.md "Consumables and labour"): the quotation's
+     * positions after the products. */
+    if (app_consumables_compute(d->p, d->db, d->layouts, d->layout_count, NULL, &d->cons, err,
+                                sizeof err) != APP_OK ||
+        app_bom_add_consumables(d->db, &d->cons, NULL, &d->bom, err, sizeof err) != APP_OK)
+        warn(d, "consumables", err);
+}
+
+/* The title block's date when it is a date (YYYY-MM-DD), else NULL (today). */
+static const char *iso_date(const char *text)
+{
+    int y, m, dd, n = 0;
+    return text && sscanf(text, "%4d-%2d-%2d%n", &y, &m, &dd, &n) == 3 && !text[n] ? text : NULL;
 }
 
 static app_result prepare(pr_doc *d, const app_project *p, const app_print_options *o,
@@ -108,6 +123,9 @@ static app_result prepare(pr_doc *d, const app_project *p, const app_print_optio
     if (r != APP_OK)
         return r;
     prepare_quantities(d);
+    r = app_quote_make(p, o->company, iso_date(o->date), &d->quote, err, err_size);
+    if (r != APP_OK)
+        return r;
 
     int elevations = pr_elevation_count(d);
     int parts = pr_parts_page_count(d);
@@ -229,6 +247,8 @@ app_result app_print_pdf(const app_project *p, const app_print_options *o, const
                 r = APP_ERR_IO;
             }
         }
+        if (r == APP_OK && o->xlsx && d.have_bom)
+            r = app_quote_write_xlsx(o->xlsx, p, &d.quote, &d.bom, err, err_size);
         if (r == APP_OK && rename(tmp, pdf_path) != 0) {
             snprintf(err, err_size, "%s: cannot write: %s", pdf_path, strerror(errno));
             r = APP_ERR_IO;

@@ -130,6 +130,7 @@ app_result pj_read_lights(pj_ctx *c, const cJSON *root);
 app_result pj_read_cameras(pj_ctx *c, const cJSON *root);
 app_result pj_read_render(pj_ctx *c, const cJSON *root);
 app_result pj_read_daylight(pj_ctx *c, const cJSON *root);
+app_result pj_read_customer(pj_ctx *c, const cJSON *root); /* project_read_customer.c */
 /* Version 2: $.plan (project_read_plan.c, checked by project_plan_check.c), $.tilings
  * (project_read_tilings.c), a product reference {"manufacturer","article","variant"} (the
  * member `key` of obj; project_read_tilings.c). */

@@ -114,7 +114,7 @@ static app_result read_root(pj_ctx *c, cJSON *root, app_project *p)
         (r = pj_read_plan(c, root)) != APP_OK || (r = pj_read_tilings(c, root)) != APP_OK ||
         (r = pj_read_objects(c, root)) != APP_OK || (r = pj_read_lights(c, root)) != APP_OK ||
         (r = pj_read_cameras(c, root)) != APP_OK || (r = pj_read_render(c, root)) != APP_OK ||
-        (r = pj_read_daylight(c, root)) != APP_OK)
+        (r = pj_read_daylight(c, root)) != APP_OK || (r = pj_read_customer(c, root)) != APP_OK)
         return r;
     return APP_OK;
 }

@@ -338,6 +338,37 @@ static void put_daylight(jb *b, cJSON *root)
         pj_path_restore(b->c, mark);
 }
 
+/* Written only when the file had them (or an edit set them). */
+static void put_customer(jb *b, cJSON *root)
+{
+    const app_customer *cu = &b->p->customer;
+    if (b->r != APP_OK || !cu->present)
+        return;
+    cJSON *o = put_container(b, root, "customer", 0);
+    size_t mark = pj_path_key(b->c, "customer");
+    put_str(b, o, "name", cu->name, sizeof cu->name);
+    if (cu->address_lines > 0) {
+        cJSON *a = put_container(b, o, "address", 1);
+        for (int i = 0;
+             a && b->r == APP_OK && i < cu->address_lines && i < APP_CUSTOMER_ADDRESS_LINES; i++)
+            attach(b, a, NULL, cJSON_CreateString(cu->address[i]));
+    }
+    put_str(b, o, "email", cu->email, sizeof cu->email);
+    put_str(b, o, "phone", cu->phone, sizeof cu->phone);
+    if (b->r == APP_OK)
+        pj_path_restore(b->c, mark);
+    if (b->r != APP_OK || (!cu->quote_number[0] && cu->valid_days <= 0))
+        return;
+    cJSON *q = put_container(b, root, "quote", 0);
+    mark = pj_path_key(b->c, "quote");
+    if (cu->quote_number[0])
+        put_str(b, q, "number", cu->quote_number, sizeof cu->quote_number);
+    if (cu->valid_days > 0 && b->r == APP_OK)
+        attach(b, q, "valid_days", cJSON_CreateNumber(cu->valid_days));
+    if (b->r == APP_OK)
+        pj_path_restore(b->c, mark);
+}
+
 static void put_render(jb *b, cJSON *root)
 {
     const app_render_settings *r = &b->p->render;
@@ -418,6 +449,7 @@ app_result pj_project_to_json(pj_ctx *c, const app_project *p, const char *dest_
             pj_path_restore(c, mark);
     }
     put_render(&b, root);
+    put_customer(&b, root);
     put_daylight(&b, root);
     if (b.r != APP_OK) {
         cJSON_Delete(root);

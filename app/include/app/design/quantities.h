@@ -106,9 +106,15 @@ void app_quantities_free(app_quantities *q);
 
 /* ---- bill of materials ---------------------------------------------------------------------- */
 
+/* What a bill-of-materials line is: a placed product or tile, a consumable the tiling uses
+ * (adhesive, grout, silicone, waterproofing) or a labour line. */
+typedef enum app_bom_kind { APP_BOM_PRODUCT = 0, APP_BOM_CONSUMABLE, APP_BOM_LABOUR } app_bom_kind;
+
 typedef struct app_bom_line {
     app_product_ref product;
-    int found; /* 0: not in the catalog (priced 0, named by its reference) */
+    app_bom_kind kind;
+    char detail[96]; /* consumables and labour: how the amount came about ("21.5 kg") */
+    int found;       /* 0: not in the catalog (priced 0, named by its reference) */
     char name[CAT_NAME_BYTES + 1];
     char series[CAT_SERIES_BYTES + 1];
     cat_category category;
@@ -148,6 +154,10 @@ double app_tile_billed_quantity(const app_tile_quantity *t, cat_unit unit);
  * or sum that does not fit in cents is counted in b->out_of_range (see app_bom_build). */
 void app_bom_total(app_bom *b);
 
+/* The VAT of b's totalled lines (not those in another currency or out of range) per rate, in
+ * order of first appearance: at most max rates; returns how many. */
+int app_bom_vat_by_rate(const app_bom *b, double *rates, long long *vat_cents, int max);
+
 /* Writes a VAT rate with the digits it has: 19 -> "19", 8.1 -> "8.1", 7.7 -> "7.7" (at most two
  * decimals, trailing zeros dropped). Returns buf. */
 const char *app_format_percent(double percent, char *buf, size_t size);
@@ -158,6 +168,65 @@ const char *app_format_percent(double percent, char *buf, size_t size);
 app_result app_bom_build(cat_db *db, const app_project *p, const app_quantities *q, app_bom *out,
                          char *err, size_t err_size);
 void app_bom_free(app_bom *b);
+
+/* ---- consumables and labour ----------------------------------------------------------------- */
+
+/* Which catalog items the consumables and labour lines bill, and the rates that size them.
+ * app_consumable_rules_default names the shipped items (assets/catalog/consumables.csv); a
+ * showroom with other products fills its own. docs/tiling.md "Consumables and labour". */
+typedef struct app_consumable_rules {
+    app_product_ref adhesive, grout, silicone, waterproofing;
+    app_product_ref labour_floor, labour_wall, labour_fixture;
+    double adhesive_bag_kg;       /* 25: the adhesive item is one bag */
+    double grout_bag_kg;          /* 5 */
+    double grout_density_kg_dm3;  /* 1.6 (DOMAIN.md "Setting out tiles", consumables) */
+    double grout_depth_mm;        /* used when the tile's thickness is unknown: 8 */
+    double silicone_cartridge_ml; /* 310 */
+    double silicone_min_width_mm; /* a bead is at least this wide and as deep as wide: 5 */
+    double shower_wall_mm;        /* waterproofing height on the walls of a shower zone: 2000 */
+} app_consumable_rules;
+
+app_consumable_rules app_consumable_rules_default(void);
+
+/* The adhesive rate (kg per m2) for a tile of work size w x h (DOMAIN.md: 2.5-5 kg/m2 by tile
+ * size and notch): longest side up to 150 mm 2.5 (6 mm notch), up to 300 mm 3.0 (8 mm notch),
+ * below 0.25 m2 4.0 (10 mm notch), large format (0.25 m2 and up) 5.0 (12 mm notch with the
+ * tile's back buttered as well). */
+double app_adhesive_kg_per_m2(double w_mm, double h_mm);
+
+/* The amounts of one project, before prices. */
+typedef struct app_consumables {
+    double floor_m2, wall_m2; /* tiled regions (tiles and joints, inside the edge joint):
+                                 floors, and everything else (walls, pre-walls, ceilings) */
+    double adhesive_kg;
+    int adhesive_bags;
+    double joint_length_m;      /* grouted joints: half the uncut tile edges facing another tile */
+    double grout_dm3, grout_kg; /* joint length x joint width x tile thickness, its weight */
+    int grout_bags;
+    double edge_joint_m; /* boundaries of the tiled regions, a boundary two tiled surfaces
+                            share counted once; a wall band's own top and bottom are not
+                            edge joints unless they meet the floor or ceiling */
+    double silicone_ml;
+    int silicone_cartridges;
+    double waterproofing_m2; /* shower trays: the floor under them and the walls they stand
+                                against, up to shower_wall_mm (DIN 18534 practice) */
+    int shower_zones;
+    int fixtures; /* placed catalog products to install, pieces */
+} app_consumables;
+
+/* Computes the amounts of p whose tilings are laid out as layouts (app_room_tile_layouts, in
+ * the order of p->tilings); db supplies tile thicknesses and the placed products' categories
+ * and sizes (NULL: default depths, no shower zones). rules NULL = defaults. */
+app_result app_consumables_compute(const app_project *p, struct cat_db *db,
+                                   const app_tile_layout *layouts, int n,
+                                   const app_consumable_rules *rules, app_consumables *out,
+                                   char *err, size_t err_size);
+
+/* Appends the consumables and labour lines of c to b (priced from db like every line; lines
+ * with a zero amount are left out) and totals b again. */
+app_result app_bom_add_consumables(cat_db *db, const app_consumables *c,
+                                   const app_consumable_rules *rules, app_bom *b, char *err,
+                                   size_t err_size);
 
 #ifdef __cplusplus
 }

@@ -53,8 +53,11 @@ typedef struct app_print_options {
     const char *const *images;  /* PNG renders to include, one page each (may be NULL) */
     const char *const *image_titles; /* caption of each image (may be NULL) */
     int image_count;
-    int no_clearances; /* 1: leave out the clearance areas of the plan */
-    int verbose;       /* 1: warnings (a drawing that does not fit its scale) on stderr */
+    int no_clearances;   /* 1: leave out the clearance areas of the plan */
+    const char *company; /* the quotation's company file (app/output/quote.h); NULL = the
+                            default file when it exists */
+    const char *xlsx;    /* app_print_pdf also writes the quotation there; NULL = no */
+    int verbose;         /* 1: warnings (a drawing that does not fit its scale) on stderr */
 } app_print_options;
 
 #define APP_PRINT_REPORT_MAX_ELEVATIONS 64

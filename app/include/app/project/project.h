@@ -184,6 +184,19 @@ typedef struct app_render_settings {
     int ambient_model;     /* 0 "constant" (I_a), 1 "sh9" (irradiance from a probe, section 7) */
 } app_render_settings;
 
+/* Whom the quotation is made out to ($.customer) and its number and validity ($.quote);
+ * docs/project-format.md "Customer and quote". */
+#define APP_CUSTOMER_ADDRESS_LINES 4
+typedef struct app_customer {
+    int present; /* 1: the file has $.customer or $.quote (written back only then) */
+    char name[128];
+    char address[APP_CUSTOMER_ADDRESS_LINES][128];
+    int address_lines;
+    char email[128], phone[64];
+    char quote_number[64]; /* "" = made from the date (app/output/quote.h) */
+    int valid_days;        /* 0 = the default, 30 */
+} app_customer;
+
 typedef struct app_project {
     int version;      /* always APP_PROJECT_VERSION after a read (the model is current) */
     int file_version; /* the "version" found in the file, before migration */
@@ -204,6 +217,7 @@ typedef struct app_project {
     int camera_count;
     app_render_settings render;
     app_daylight daylight; /* the sky and sun through the windows */
+    app_customer customer; /* the quotation's addressee and number ($.customer, $.quote) */
 } app_project;
 
 /* Reads and validates a project file. *out is overwritten (not freed first): on success it
