@@ -316,13 +316,21 @@ int main(void)
                       APP_OK,
                   "%s", err);
         CHECK_MSG(app_bom_build(db, &p, &q, &bom, err, sizeof err) == APP_OK, "%s", err);
+        /* The quotation's consumables and labour lines (docs/tiling.md). */
+        app_consumables cons;
+        CHECK_MSG(app_consumables_compute(&p, db, layouts, layout_count, NULL, &cons, err,
+                                          sizeof err) == APP_OK,
+                  "%s", err);
+        CHECK_MSG(app_bom_add_consumables(db, &cons, NULL, &bom, err, sizeof err) == APP_OK, "%s",
+                  err);
     }
     snprintf(cmd, sizeof cmd, "pdftotext '%s' -", pdf);
     char *text = run_capture(cmd);
     CHECK(text != NULL);
     if (text) {
-        const char *articles[] = {"CE413001", "CE410001", "31000000", "TZ61000",
-                                  "FA-10104", "FA-10103", "TZ61006",  "FA-10107"};
+        const char *articles[] = {"CE413001", "CE410001",       "31000000",      "TZ61000",
+                                  "FA-10104", "FA-10103",       "TZ61006",       "FA-10107",
+                                  "FW-C2-25", "LAB-TILE-FLOOR", "LAB-TILE-WALL", "LAB-FIXTURE"};
         for (size_t i = 0; i < sizeof articles / sizeof articles[0]; i++)
             CHECK_MSG(strstr(text, articles[i]) != NULL, "%s", articles[i]);
         CHECK(strstr(text, "Jane Customer") != NULL);

@@ -517,7 +517,11 @@ static int run(pr_doc *d, int sheet)
     f.bottom = d->page_h - 10.0 - 16.0 - 4.0;
     f.y = f.top;
     tile_list(&f);
-    f.y += 4.0;
+    /* The quotation is the customer's document: it starts on a sheet of its own. */
+    if (f.y > f.top) {
+        f.at++;
+        f.y = f.top;
+    }
     quotation(&f);
     f.y += 4.0;
     offcut_plan(&f);
