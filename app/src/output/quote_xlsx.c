@@ -50,6 +50,16 @@ app_result app_quote_write_xlsx(const char *path, const app_project *p, const ap
         snprintf(err, err_size, "%s: path too long", path);
         return APP_ERR_IO;
     }
+    /* The folder is checked first: libxlsxwriter only finds out when it closes the workbook,
+     * and then prints its own message. */
+    char dir[4200];
+    const char *slash = strrchr(path, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) + (slash == path) : 1,
+             slash ? path : ".");
+    if (access(dir, W_OK) != 0) {
+        snprintf(err, err_size, "%s: cannot write: %s", path, strerror(errno));
+        return APP_ERR_IO;
+    }
     lxw_workbook *wb = workbook_new(tmp);
     if (!wb) {
         snprintf(err, err_size, "%s: cannot start the workbook (out of memory)", path);
