@@ -69,7 +69,7 @@ static void test_demo(void)
     printf("designed demo: total %.2f EUR, %d tile products, %d lines, %.1f ms\n", before / 100.0,
            v.q.line_count, v.bom.line_count, v.compute_ms);
 
-    /* Place one hand basin: the total rises by its gross price. */
+    /* Place one hand basin: the total rises by its gross price and its installation. */
     app_lazy_catalog lazy = {.db_path = db_path};
     app_script_env env = {.lookup = app_placement_lazy_lookup, .user = &lazy};
     app_history *h = app_history_create(10);
@@ -90,9 +90,19 @@ static void test_demo(void)
         expect = net + llround(net * prod.vat_percent / 100.0);
         cat_product_free(&prod);
     }
+    /* ... and one fixture installation (the labour line, docs/tiling.md). */
+    app_consumable_rules rules = app_consumable_rules_default();
+    memset(&prod, 0, sizeof prod);
+    CHECK(cat_product_find(db, rules.labour_fixture.manufacturer, rules.labour_fixture.article,
+                           &prod, err, sizeof err) == CAT_DB_OK);
+    if (prod.price_cents > 0) {
+        expect += prod.price_cents + llround(prod.price_cents * prod.vat_percent / 100.0);
+        cat_product_free(&prod);
+    }
     CHECK_MSG(ui_quantities_refresh(&v, &p, db) == 0, "%s", v.error);
     CHECK_MSG(llabs(v.bom.gross_cents - before - expect) <= 1,
-              "total %lld -> %lld, the basin costs %lld", before, v.bom.gross_cents, expect);
+              "total %lld -> %lld, the basin and its installation cost %lld", before,
+              v.bom.gross_cents, expect);
     /* Undo: back to the same total. */
     CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);
     CHECK(ui_quantities_refresh(&v, &p, db) == 0 && v.bom.gross_cents == before);

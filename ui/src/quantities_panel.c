@@ -52,8 +52,16 @@ int ui_quantities_refresh(ui_quantities_view *v, const app_project *p, cat_db *d
         r = app_quantities_compute(layouts, n, NULL, &v->q, v->error, sizeof v->error);
     if (r == APP_OK) {
         r = app_bom_build(db, p, &v->q, &v->bom, v->error, sizeof v->error);
-        if (r != APP_OK)
+        /* Consumables and labour: the same positions as the quotation. */
+        app_consumables c;
+        if (r == APP_OK)
+            r = app_consumables_compute(p, db, layouts, n, NULL, &c, v->error, sizeof v->error);
+        if (r == APP_OK)
+            r = app_bom_add_consumables(db, &c, NULL, &v->bom, v->error, sizeof v->error);
+        if (r != APP_OK) {
+            app_bom_free(&v->bom);
             app_quantities_free(&v->q);
+        }
     }
     app_tile_layouts_free(layouts, n);
     v->compute_ms = now_ms() - t0;

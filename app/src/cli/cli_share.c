@@ -99,6 +99,11 @@ static int part_list(const app_project *p, char ***cells, int *rows, char *total
         r = app_quantities_compute(layouts, n, NULL, &q, err, sizeof err);
     if (r == APP_OK)
         r = app_bom_build(db, p, &q, &bom, err, sizeof err);
+    app_consumables cons; /* consumables and labour, as on the quotation */
+    if (r == APP_OK)
+        r = app_consumables_compute(p, db, layouts, n, NULL, &cons, err, sizeof err);
+    if (r == APP_OK)
+        r = app_bom_add_consumables(db, &cons, NULL, &bom, err, sizeof err);
     if (r != APP_OK) {
         fprintf(stderr, "tessera share: %s (the part list is left out)\n", err);
     } else {
