@@ -179,6 +179,38 @@ static void test_shared_edge(void)
     release(&r);
 }
 
+/* $.customer and $.quote survive a save; bad ones are refused with the key named. */
+static void test_customer_roundtrip(void)
+{
+    char path[1024], dir[] = "/tmp/tessera-customer-XXXXXX", out[1100], err[2048] = "";
+    snprintf(path, sizeof path, "%s/tests/data/tiles/consumables_wall.json", TESSERA_SOURCE_DIR);
+    app_project a, b;
+    CHECK_MSG(app_project_read(path, &a, err, sizeof err) == APP_OK, "%s", err);
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(out, sizeof out, "%s/saved.json", dir);
+    CHECK_MSG(app_project_write(out, &a, err, sizeof err) == APP_OK, "%s", err);
+    CHECK_MSG(app_project_read(out, &b, err, sizeof err) == APP_OK, "%s", err);
+    CHECK(b.customer.present && !strcmp(b.customer.name, "Erika Mustermann"));
+    CHECK(b.customer.address_lines == 2 && !strcmp(b.customer.address[1], "10115 Berlin"));
+    CHECK(!strcmp(b.customer.email, "erika@example.org") && !b.customer.phone[0]);
+    CHECK(!strcmp(b.customer.quote_number, "Q-2026-0042") && b.customer.valid_days == 14);
+    app_project_free(&a);
+    app_project_free(&b);
+    unlink(out);
+    rmdir(dir);
+    /* A project without them is written without them. */
+    snprintf(path, sizeof path, "%s/tests/data/tiles/setout_floor.json", TESSERA_SOURCE_DIR);
+    CHECK(app_project_read(path, &a, err, sizeof err) == APP_OK && !a.customer.present);
+    app_project_free(&a);
+
+    const char *bad = "{\"version\": 2, \"plan\": {\"corners\": [[0,0],[1000,0],[1000,1000],"
+                      "[0,1000]], \"height\": 2500}, \"room\": {}, \"cameras\": [{\"name\": "
+                      "\"c\", \"position\": [500,100,1500], \"target\": [500,900,1000]}], "
+                      "\"customer\": {\"address\": [\"1\",\"2\",\"3\",\"4\",\"5\"]}}";
+    CHECK(app_project_parse(bad, strlen(bad), NULL, &a, err, sizeof err) == APP_ERR_SCHEMA);
+    CHECK_MSG(strstr(err, "$.customer.address") && strstr(err, "at most 4"), "%s", err);
+}
+
 static void test_quote(void)
 {
     char dir[] = "/tmp/tessera-quote-test-XXXXXX", path[512], err[1024];
@@ -232,6 +264,7 @@ int main(void)
     test_wall();
     test_shared_edge();
     test_quote();
+    test_customer_roundtrip();
     cat_db_close(db);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
