@@ -334,6 +334,9 @@ int main(void)
         for (size_t i = 0; i < sizeof articles / sizeof articles[0]; i++)
             CHECK_MSG(strstr(text, articles[i]) != NULL, "%s", articles[i]);
         CHECK(strstr(text, "Jane Customer") != NULL);
+        /* The quotation's header: a number from the date, valid 30 days (app/output/quote.h). */
+        CHECK(strstr(text, "Quote no. Q-20261122-") != NULL);
+        CHECK(strstr(text, "Valid until 2026-12-22 (30 days)") != NULL);
         CHECK(strstr(text, "1:20") != NULL);
         char page_text[32];
         snprintf(page_text, sizeof page_text, "%d of %d", rep.pages, rep.pages);

@@ -3,6 +3,9 @@
 JSON of the same run: reads the sheet with zipfile and the XML alone (no extra packages).
 
 usage: xlsx_check.py OUT.xlsx -- TESSERA quantities PROJECT [ARGS...]
+       xlsx_check.py OUT.xlsx -- TESSERA print PROJECT -o OUT.pdf [ARGS...]
+(print: the JSON comes from `TESSERA quantities PROJECT --json` with the same --company and
+--date, so the print set's spreadsheet is checked against the quantities of the same project.)
 
 Checks: the file is a zip with one worksheet; no temporary file is left beside it; each
 position row holds the article, the quantity, the unit price, a ROUND(qty*price,2) formula for
@@ -39,7 +42,17 @@ def main():
     out, command = sys.argv[1], sys.argv[sep + 1:]
     if os.path.exists(out):
         os.remove(out)
-    run = subprocess.run(command + ["--xlsx", out, "--json"], capture_output=True, text=True)
+    if command[1] == "print":
+        run = subprocess.run(command + ["--xlsx", out], capture_output=True, text=True)
+        same = []
+        for opt in ("--company", "--date"):
+            if opt in command:
+                same += [opt, command[command.index(opt) + 1]]
+        if run.returncode == 0:
+            run = subprocess.run([command[0], "quantities", command[2], "--json"] + same,
+                                 capture_output=True, text=True)
+    else:
+        run = subprocess.run(command + ["--xlsx", out, "--json"], capture_output=True, text=True)
     if run.returncode != 0:
         print(run.stderr, file=sys.stderr)
         sys.exit(1)
