@@ -96,7 +96,8 @@ quantities)
     grep -q -E '^BOR +Fliesenwerk Altena +FA-10132 ' "$out/qty.out" || fail "no border row"
     grep -q -E '^UNI +Terrazza Ceramiche +TZ61009 ' "$out/qty.out" || fail "no floor tile"
     for article in CE415701 CE410401 NK-51258.00 VX20013 31060000 CX7107-0 LU-322.10; do
-        grep -q -E "^[A-Za-z ]+ +$article " "$out/qty.out" || fail "$article not in the bill"
+        # a numbered position: "  5 Cerana   CE415701 ..."
+        grep -q -E "^ *[0-9]+ [A-Za-z ]+ +$article " "$out/qty.out" || fail "$article not in the bill"
     done
     grep -q -E '^Total net [0-9.]+ EUR' "$out/qty.out" || fail "no bill total"
     ;;

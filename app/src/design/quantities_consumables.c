@@ -255,6 +255,14 @@ static int boundary_at(const seg_list *l, int i, const double m[3], const double
 static double union_length(const seg_list *l)
 {
     double total = 0;
+    /* The pairwise splitting is cubic in the worst case: a region traced with thousands of
+     * points (a curved outline) is summed without merging shared stretches. */
+    if (l->n > 4000) {
+        for (int i = 0; i < l->n; i++)
+            total += hypot(hypot(l->s[i].b[0] - l->s[i].a[0], l->s[i].b[1] - l->s[i].a[1]),
+                           l->s[i].b[2] - l->s[i].a[2]);
+        return total;
+    }
     double *cuts = malloc(sizeof *cuts * (size_t)(2 * l->n + 2));
     if (!cuts)
         return 0;

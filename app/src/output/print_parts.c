@@ -351,7 +351,10 @@ static void quotation(flow *f)
     for (int i = 0; i < d->bom.line_count; i++) {
         const app_bom_line *b = &d->bom.lines[i];
         double row_h = b->detail[0] ? ROW_H + 2.6 : ROW_H;
+        int sheet = f->at;
         need(f, row_h);
+        if (f->at != sheet) /* a continued list repeats its column heads */
+            header(f, cols, nc);
         char pos[16], qty[32], unit_price[48], vat[16], net[48], desc[260];
         snprintf(pos, sizeof pos, "%d", i + 1);
         if (b->unit == CAT_UNIT_PIECE || b->unit == CAT_UNIT_BOX)
@@ -523,7 +526,9 @@ static int run(pr_doc *d, int sheet)
         f.y = f.top;
     }
     quotation(&f);
-    f.y += 4.0;
+    /* The cut plan is the tiler's: a sheet of its own, apart from the customer's quotation. */
+    f.at++;
+    f.y = f.top;
     offcut_plan(&f);
     return f.at + 1;
 }
