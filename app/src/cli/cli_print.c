@@ -1,6 +1,6 @@
 /* tessera print PROJECT -o plan.pdf [--paper A4|A3] [--landscape] [--scale 1:20|fit]
  *               [--svg DIR] [--renders DIR|none] [--render-size WxH] [--customer NAME]
- *               [--date TEXT] [--no-clearances] [--backend egl|osmesa]
+ *               [--date TEXT] [--no-clearances] [--backend egl|osmesa] [--text-boxes FILE]
  * The print set (app/output/print.h, docs/printing.md): plan, elevations, renders, part list. */
 #include "app/cli/cli.h"
 #include "app/output/print.h"
@@ -229,7 +229,9 @@ int cli_cmd_print(const cli_options *o)
     app_print_report rep = {0};
     double t0 = cli_now_ms();
     if (rc == CLI_OK) {
+        po.text_boxes_path = o->text_boxes;
         r = app_print_pdf(&p, &po, output, &rep, err, sizeof err);
+        po.text_boxes_path = NULL; /* the SVG pages are the same pages */
         if (r == APP_OK && svg)
             r = app_print_svg(&p, &po, svg, &rep, err, sizeof err);
         if (r != APP_OK) {

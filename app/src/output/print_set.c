@@ -108,7 +108,15 @@ static app_result prepare(pr_doc *d, const app_project *p, const app_print_optio
     if (r != APP_OK)
         return r;
     prepare_quantities(d);
+    pr_fixtures_number(d);
 
+    if (o->text_boxes_path) {
+        d->text_boxes_out = fopen(o->text_boxes_path, "w");
+        if (!d->text_boxes_out) {
+            snprintf(err, err_size, "%s: cannot write: %s", o->text_boxes_path, strerror(errno));
+            return APP_ERR_IO;
+        }
+    }
     int elevations = pr_elevation_count(d);
     int parts = pr_parts_page_count(d);
     int total = 1 + elevations + o->image_count + parts;
@@ -144,6 +152,9 @@ static void release(pr_doc *d)
         app_bom_free(&d->bom);
     cat_db_close(d->db);
     free(d->pages);
+    pr_text_boxes_free(&d->text_boxes);
+    if (d->text_boxes_out)
+        fclose(d->text_boxes_out);
     if (d->cr)
         cairo_destroy(d->cr);
     if (d->surface)

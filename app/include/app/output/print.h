@@ -27,8 +27,9 @@ void app_paper_size_mm(app_paper paper, int landscape, double *width_mm, double 
 /* "A4" / "A3" (any case); returns 1 and sets *out when known. */
 int app_paper_parse(const char *text, app_paper *out);
 
-/* The standard scales a drawing may take, largest first: 1:20, 1:25, 1:50, 1:100, 1:200. */
-#define APP_PRINT_SCALE_COUNT 5
+/* The standard scales a drawing may take, largest first: 1:10, 1:20, 1:25, 1:50, 1:100, 1:200
+ * (ISO 5455's building scales; 1:10 for details such as a pre-wall's unfolded faces). */
+#define APP_PRINT_SCALE_COUNT 6
 extern const int app_print_scales[APP_PRINT_SCALE_COUNT];
 
 /* The largest standard scale (smallest N of 1:N) at which a drawing of extent_w x extent_h
@@ -55,6 +56,9 @@ typedef struct app_print_options {
     int image_count;
     int no_clearances; /* 1: leave out the clearance areas of the plan */
     int verbose;       /* 1: warnings (a drawing that does not fit its scale) on stderr */
+    /* Debugging and tests: every text's ink box, one line each (page, x0, y0, x1, y1 in paper
+     * mm from the page's top-left corner, the drawing, the text; tab-separated). NULL: none. */
+    const char *text_boxes_path;
 } app_print_options;
 
 #define APP_PRINT_REPORT_MAX_ELEVATIONS 64
