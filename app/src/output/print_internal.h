@@ -97,8 +97,15 @@ typedef enum pr_page_kind {
 
 typedef struct pr_page {
     pr_page_kind kind;
-    int index; /* elevation: the elevation's index; image: the image; parts: the sheet */
+    int index;  /* elevation: the elevation's index; image: the image; parts: the sheet */
+    int second; /* elevation, image: the second one on the page, -1: none */
 } pr_page;
+
+/* A cut tile's number on an elevation, drawn after everything else where it is free. */
+typedef struct pr_cut_label {
+    double x, y; /* paper mm */
+    int number;
+} pr_cut_label;
 
 typedef struct pr_doc {
     const app_project *p;
@@ -130,6 +137,8 @@ typedef struct pr_doc {
     pr_text_boxes text_boxes; /* the texts of the page being drawn */
     FILE *text_boxes_out;     /* o->text_boxes_path, open while drawing; NULL: not asked */
     char page_title[160];     /* the drawing's name in the title block, for that list */
+    pr_cut_label *cut_labels; /* the elevation page's cut numbers waiting to be placed */
+    int cut_label_count, cut_label_cap;
     char *err;
     size_t err_size;
 } pr_doc;
@@ -195,9 +204,15 @@ int pr_place_balloon(cairo_t *cr, double x, double y, int number, pr_box within)
 /* print_plan.c, print_elevation.c, print_images.c, print_parts.c */
 app_result pr_draw_plan(pr_doc *d);
 int pr_elevation_count(const pr_doc *d);
-int pr_elevation_scale(pr_doc *d);
-app_result pr_draw_elevation(pr_doc *d, int index);
-app_result pr_draw_image(pr_doc *d, int index);
+/* The largest standard scale at which elevation `index` fits a page alone (or the forced one). */
+int pr_elevation_scale(pr_doc *d, int index);
+/* The elevation pages: one elevation a page, two when both fit side by side (or one above the
+ * other) at the scale each has alone. Fills pages[] (index, second) and returns their count. */
+int pr_elevation_pages(pr_doc *d, pr_page *pages);
+app_result pr_draw_elevation(pr_doc *d, int index, int second);
+/* Render pages hold two images each (the second may be -1). */
+int pr_image_page_count(const pr_doc *d);
+app_result pr_draw_image(pr_doc *d, int index, int second);
 int pr_parts_page_count(pr_doc *d);
 app_result pr_draw_parts(pr_doc *d, int sheet);
 
