@@ -28,8 +28,9 @@ static int cmp_numbered(const void *a, const void *b)
 
 /* Where the numbering starts: the middle of the first door, or of the first opening, on the
  * inside face of its wall; else corner 0. */
-static app_point2 start_point(const app_room_plan *pl)
+static app_point2 start_point(const app_room_plan *pl, const char **name)
 {
+    *name = "corner 1";
     for (int pass = 0; pass < 2; pass++)
         for (int k = 0; k < pl->opening_count; k++) {
             const app_opening *op = &pl->openings[k];
@@ -40,6 +41,7 @@ static app_point2 start_point(const app_room_plan *pl)
             double l = hypot(b.x - a.x, b.y - a.y), s = op->offset_mm + op->width_mm / 2;
             if (l <= 0)
                 continue;
+            *name = op->type == APP_OPENING_DOOR ? "the door" : "the window";
             return (app_point2){a.x + (b.x - a.x) * s / l, a.y + (b.y - a.y) * s / l};
         }
     return pl->corners[0];
@@ -56,7 +58,8 @@ void pr_fixtures_number(pr_doc *d)
         cx += pl->corners[i].x / pl->corner_count;
         cy += pl->corners[i].y / pl->corner_count;
     }
-    app_point2 s = start_point(pl);
+    const char *name;
+    app_point2 s = start_point(pl, &name);
     double start = atan2(s.y - cy, s.x - cx);
     int n = 0;
     for (int i = 0; i < d->fixture_count; i++) {
@@ -103,4 +106,11 @@ int pr_fixture_numbers_text(const pr_doc *d, const app_product_ref *ref, char *o
             count++;
         }
     return count;
+}
+
+const char *pr_numbering_start(const pr_doc *d)
+{
+    const char *name;
+    start_point(&d->plan, &name);
+    return name;
 }

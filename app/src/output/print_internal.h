@@ -43,6 +43,8 @@ typedef struct pr_doc pr_doc;
 
 /* print_fixture_numbers.c: numbers by position, clockwise around the room from the door. */
 void pr_fixtures_number(pr_doc *d);
+/* Where the numbering starts, for the legend: "the door", "the window" or "corner 1". */
+const char *pr_numbering_start(const pr_doc *d);
 /* The 1-based position of a product in the quotation (the bill of materials), 0: none. */
 int pr_quotation_position(const pr_doc *d, const app_product_ref *ref);
 /* The plan numbers of the fixtures of that product, "3, 7"; returns how many. */
@@ -137,6 +139,7 @@ typedef struct pr_doc {
     pr_text_boxes text_boxes; /* the texts of the page being drawn */
     FILE *text_boxes_out;     /* o->text_boxes_path, open while drawing; NULL: not asked */
     char page_title[160];     /* the drawing's name in the title block, for that list */
+    int clearances_drawn;     /* free areas drawn on the plan (the legend explains the hatch) */
     pr_cut_label *cut_labels; /* the elevation page's cut numbers waiting to be placed */
     int cut_label_count, cut_label_cap;
     char *err;

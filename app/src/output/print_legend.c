@@ -40,7 +40,8 @@ static void columns(pr_doc *d, cairo_t *cr, double w[4])
     w[2] += GAP;
 }
 
-static int note_lines(const pr_doc *d, const char **lines, char buf[][160])
+/* The notes under the list; all = 1 counts every note that may be needed (for measuring). */
+static int note_lines(const pr_doc *d, int all, const char **lines, char buf[][160])
 {
     int n = 0;
     int unplaced = 0, products = 0;
@@ -48,11 +49,11 @@ static int note_lines(const pr_doc *d, const char **lines, char buf[][160])
         unplaced += d->fixtures[i].number && !d->fixtures[i].number_placed;
         products += d->fixtures[i].number && d->fixtures[i].has_product;
     }
-    if (unplaced)
+    if (unplaced || all)
         lines[n++] = "* no room for its number on the plan";
-    if (products)
+    if (products || all)
         lines[n++] = "Pos.: the line of the quotation";
-    if (!d->o->no_clearances)
+    if (d->clearances_drawn || all)
         lines[n++] = "Hatched: free area in front (VDI 6000)";
     snprintf(buf[0], 160, "Room height %.0f mm, walls %.0f mm", d->plan.height_mm,
              d->plan.wall_thickness_mm);
@@ -60,23 +61,31 @@ static int note_lines(const pr_doc *d, const char **lines, char buf[][160])
     return n;
 }
 
+static void heading_text(const pr_doc *d, char *out, size_t size)
+{
+    snprintf(out, size, "Fixtures, clockwise from %s", pr_numbering_start(d));
+}
+
 void pr_legend_size(pr_doc *d, cairo_t *cr, double *width, double *height)
 {
     double w[4];
     columns(d, cr, w);
+    char heading[96];
+    heading_text(d, heading, sizeof heading);
+    pr_set_font(cr, PR_TEXT_NORMAL, 1);
+    double hw = pr_text_width(cr, heading);
     int rows = 0;
     for (int i = 0; i < d->fixture_count; i++)
         rows += d->fixtures[i].number > 0;
     const char *lines[8];
     char buf[1][160];
-    /* Counted with the footnote for unplaced numbers: its line may be needed after placing. */
-    int notes = note_lines(d, lines, buf) + 1;
+    /* Every note that may be needed: which are is known only once the plan is drawn. */
+    int notes = note_lines(d, 1, lines, buf);
     pr_set_font(cr, PR_TEXT_SMALL, 0);
     double nw = 0;
-    for (int i = 0; i < notes - 1; i++)
+    for (int i = 0; i < notes; i++)
         nw = fmax(nw, pr_text_width(cr, lines[i]));
-    nw = fmax(nw, pr_text_width(cr, "* no room for its number on the plan"));
-    *width = fmax(w[0] + w[1] + w[2] + w[3], nw);
+    *width = fmax(fmax(w[0] + w[1] + w[2] + w[3], nw), hw);
     *height = HEAD_H + (rows ? ROW_H * (rows + 1) : 0) + NOTE_H * notes + BAR_H;
 }
 
@@ -99,8 +108,10 @@ void pr_legend_draw(pr_doc *d, double x, double y, int scale)
     columns(d, cr, w);
     cairo_save(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
+    char heading[96];
+    heading_text(d, heading, sizeof heading);
     pr_set_font(cr, PR_TEXT_NORMAL, 1);
-    pr_text(cr, x, y + 3.5, 0.0, 1.0, "Fixtures, clockwise from the door");
+    pr_text(cr, x, y + 3.5, 0.0, 1.0, heading);
     double yy = y + HEAD_H;
     int rows = 0;
     for (int i = 0; i < d->fixture_count; i++)
@@ -141,7 +152,7 @@ void pr_legend_draw(pr_doc *d, double x, double y, int scale)
         }
     const char *lines[8];
     char buf[1][160];
-    int notes = note_lines(d, lines, buf);
+    int notes = note_lines(d, 0, lines, buf);
     pr_set_font(cr, PR_TEXT_SMALL, 0);
     cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
     yy += 1.0;

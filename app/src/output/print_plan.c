@@ -351,6 +351,7 @@ static void draw_clearances(pr_doc *d, const pr_view *v, int labels)
             }
             continue;
         }
+        d->clearances_drawn++;
         cairo_new_path(cr);
         for (int k = 0; k < 4; k++)
             cairo_line_to(cr, px(v, a->corners[k][0], a->corners[k][1]),
@@ -649,6 +650,37 @@ static void draw_wall_dimensions(pr_doc *d, const pr_view *v)
     }
 }
 
+/* "corner N" beyond each outer corner, on the corner's outward diagonal, so the plan reads
+ * against the elevations (which name the corners at each face's ends) and the legend's start. */
+static void draw_corner_names(pr_doc *d, const pr_view *v, const app_point2 *outer)
+{
+    cairo_t *cr = d->cr;
+    const app_room_plan *pl = &d->plan;
+    pr_set_font(cr, PR_TEXT_SMALL, 1);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    for (int i = 0; i < pl->corner_count; i++) {
+        double ix = px(v, pl->corners[i].x, pl->corners[i].y), iy = py(v, pl->corners[i].x, pl->corners[i].y);
+        double ox = px(v, outer[i].x, outer[i].y), oy = py(v, outer[i].x, outer[i].y);
+        double dx = ox - ix, dy = oy - iy, l = hypot(dx, dy);
+        if (l < 1e-9)
+            continue;
+        dx /= l;
+        dy /= l;
+        char text[32];
+        snprintf(text, sizeof text, "corner %d", i + 1);
+        /* The text grows away from the drawing: anchored at its end nearest the corner. */
+        double ax = dx >= 0 ? 0.0 : 1.0, ay = dy >= 0 ? 0.0 : 1.0;
+        static const double dists[] = {1.5, 3.5, 6.0, 9.0, 12.0};
+        for (size_t k = 0; k < sizeof dists / sizeof dists[0]; k++) {
+            double tx = ox + dx * dists[k], ty = oy + dy * dists[k];
+            if (pr_box_is_free(cr, pr_text_measure(cr, tx, ty, 0, ax, ay, text), 0.4)) {
+                pr_text(cr, tx, ty, ax, ay, text);
+                break;
+            }
+        }
+    }
+}
+
 static int is_axis_rectangle(const app_room_plan *pl)
 {
     if (pl->corner_count != 4)
@@ -840,6 +872,7 @@ app_result pr_draw_plan(pr_doc *d)
         pr_dimension(cr, px(&v, x0, iy0), py(&v, x0, iy0), px(&v, x0, iy1), py(&v, x0, iy1), 16.0,
                      iy1 - iy0);
     }
+    draw_corner_names(d, &v, outer);
     draw_fixture_distances(d, &v);
     draw_fixture_labels(d, &v);
     if (!d->o->no_clearances)
