@@ -240,13 +240,13 @@ int cli_cmd_print(const cli_options *o)
         }
     }
     if (rc == CLI_OK)
-        fprintf(stderr,
-                "tessera print: %s: %d pages (plan 1:%d, %d elevations on %d pages, 1:%d and larger, "
-                "with %d whole and %d cut tiles, %d render pages, %d part-list pages) in %.0f ms\n",
-                output, rep.pages, rep.plan_scale, rep.elevations, rep.elevation_pages,
-                rep.elevation_scale,
-                rep.tiles_whole, rep.tiles_cut, rep.render_pages, rep.partlist_pages,
-                cli_now_ms() - t0);
+        fprintf(
+            stderr,
+            "tessera print: %s: %d pages (plan 1:%d, %d elevations on %d pages, 1:%d and larger, "
+            "with %d whole and %d cut tiles, %d render pages, %d part-list pages) in %.0f ms\n",
+            output, rep.pages, rep.plan_scale, rep.elevations, rep.elevation_pages,
+            rep.elevation_scale, rep.tiles_whole, rep.tiles_cut, rep.render_pages,
+            rep.partlist_pages, cli_now_ms() - t0);
     if (made_tmp) {
         for (int i = 0; i < images.count; i++)
             unlink(images.paths[i]);

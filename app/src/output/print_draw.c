@@ -289,9 +289,9 @@ int pr_place_balloon(cairo_t *cr, double x, double y, int number, pr_box within)
     const double r = PR_BALLOON_RADIUS;
     /* The anchor first, then along leaders in eight directions at growing lengths: the
      * shortest free leader wins. */
-    static const double dirs[8][2] = {{0, -1}, {0, 1},          {1, 0},         {-1, 0},
-                                      {0.7071, -0.7071}, {-0.7071, -0.7071}, {0.7071, 0.7071},
-                                      {-0.7071, 0.7071}};
+    static const double dirs[8][2] = {
+        {0, -1},          {0, 1},           {1, 0}, {-1, 0}, {0.7071, -0.7071}, {-0.7071, -0.7071},
+        {0.7071, 0.7071}, {-0.7071, 0.7071}};
     static const double lengths[] = {0, 4.5, 7, 10, 14, 19, 25};
     for (size_t li = 0; li < sizeof lengths / sizeof lengths[0]; li++)
         for (int k = 0; k < (li == 0 ? 1 : 8); k++) {

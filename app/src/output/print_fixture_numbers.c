@@ -37,7 +37,8 @@ static app_point2 start_point(const app_room_plan *pl, const char **name)
             if ((pass == 0 && op->type != APP_OPENING_DOOR) || op->wall < 0 ||
                 op->wall >= pl->corner_count)
                 continue;
-            app_point2 a = pl->corners[op->wall], b = pl->corners[(op->wall + 1) % pl->corner_count];
+            app_point2 a = pl->corners[op->wall],
+                       b = pl->corners[(op->wall + 1) % pl->corner_count];
             double l = hypot(b.x - a.x, b.y - a.y), s = op->offset_mm + op->width_mm / 2;
             if (l <= 0)
                 continue;

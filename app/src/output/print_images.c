@@ -87,8 +87,10 @@ app_result pr_draw_image(pr_doc *d, int index, int second)
             draw_cell(d, img[0], title_of(d, index), ax, ay, aw, ah);
         } else {
             /* Side by side or stacked: the arrangement whose smaller image is larger. */
-            int w0 = cairo_image_surface_get_width(img[0]), h0 = cairo_image_surface_get_height(img[0]);
-            int w1 = cairo_image_surface_get_width(img[1]), h1 = cairo_image_surface_get_height(img[1]);
+            int w0 = cairo_image_surface_get_width(img[0]),
+                h0 = cairo_image_surface_get_height(img[0]);
+            int w1 = cairo_image_surface_get_width(img[1]),
+                h1 = cairo_image_surface_get_height(img[1]);
             double side = (aw - GAP) / 2, stack = (ah - GAP) / 2;
             double ks0 = fit(w0, h0, side, ah) * w0, ks1 = fit(w1, h1, side, ah) * w1;
             double kt0 = fit(w0, h0, aw, stack) * w0, kt1 = fit(w1, h1, aw, stack) * w1;

@@ -81,8 +81,10 @@ static void wall_quad(cairo_t *cr, const pr_view *v, app_point2 o, app_point2 u,
 static void wall_line(cairo_t *cr, const pr_view *v, app_point2 o, app_point2 u, app_point2 n,
                       double s0, double d0, double s1, double d1)
 {
-    cairo_move_to(cr, px(v, o.x + u.x * s0 + n.x * d0, o.y + u.y * s0 + n.y * d0), py(v, o.x + u.x * s0 + n.x * d0, o.y + u.y * s0 + n.y * d0));
-    cairo_line_to(cr, px(v, o.x + u.x * s1 + n.x * d1, o.y + u.y * s1 + n.y * d1), py(v, o.x + u.x * s1 + n.x * d1, o.y + u.y * s1 + n.y * d1));
+    cairo_move_to(cr, px(v, o.x + u.x * s0 + n.x * d0, o.y + u.y * s0 + n.y * d0),
+                  py(v, o.x + u.x * s0 + n.x * d0, o.y + u.y * s0 + n.y * d0));
+    cairo_line_to(cr, px(v, o.x + u.x * s1 + n.x * d1, o.y + u.y * s1 + n.y * d1),
+                  py(v, o.x + u.x * s1 + n.x * d1, o.y + u.y * s1 + n.y * d1));
 }
 
 static void draw_openings(pr_doc *d, const pr_view *v)
@@ -206,10 +208,12 @@ static void draw_walls(pr_doc *d, const pr_view *v, const app_point2 *outer)
     int n = pl->corner_count;
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
     for (int i = 0; i < n; i++)
-        (i ? cairo_line_to : cairo_move_to)(cr, px(v, outer[i].x, outer[i].y), py(v, outer[i].x, outer[i].y));
+        (i ? cairo_line_to : cairo_move_to)(cr, px(v, outer[i].x, outer[i].y),
+                                            py(v, outer[i].x, outer[i].y));
     cairo_close_path(cr);
     for (int i = 0; i < n; i++)
-        (i ? cairo_line_to : cairo_move_to)(cr, px(v, pl->corners[i].x, pl->corners[i].y), py(v, pl->corners[i].x, pl->corners[i].y));
+        (i ? cairo_line_to : cairo_move_to)(cr, px(v, pl->corners[i].x, pl->corners[i].y),
+                                            py(v, pl->corners[i].x, pl->corners[i].y));
     cairo_close_path(cr);
     /* Cut walls: a mid grey with a light hatch, heavy outlines (ISO 128-50 for sections). */
     cairo_set_source_rgb(cr, 0.62, 0.62, 0.62);
@@ -442,7 +446,8 @@ static int draw_fixtures(pr_doc *d, const pr_view *v)
                 pts[k] = (app_point2){pp->pts[k][0], pp->pts[k][1]};
             int h = pr_convex_hull(pts, pp->count, hull);
             for (int k = 0; k < h; k++)
-                (k ? cairo_line_to : cairo_move_to)(cr, px(v, hull[k].x, hull[k].y), py(v, hull[k].x, hull[k].y));
+                (k ? cairo_line_to : cairo_move_to)(cr, px(v, hull[k].x, hull[k].y),
+                                                    py(v, hull[k].x, hull[k].y));
             cairo_close_path(cr);
             int overhead = refs[r].bottom > 1800.0;
             if (!overhead) {
@@ -565,7 +570,8 @@ static void draw_fixture_distances(pr_doc *d, const pr_view *v)
             /* A value landing on another text moves the dimension sideways, with extension
              * lines from the fixture and the wall. */
             double ax = px(v, fx, fy), ay = py(v, fx, fy);
-            double bx = px(v, fx + n.x * bd, fy + n.y * bd), by = py(v, fx + n.x * bd, fy + n.y * bd);
+            double bx = px(v, fx + n.x * bd, fy + n.y * bd),
+                   by = py(v, fx + n.x * bd, fy + n.y * bd);
             static const double shifts[] = {0, 3, -3, 6, -6, 9, -9, 12, -12};
             double shift = 0;
             for (size_t q = 0; q < sizeof shifts / sizeof shifts[0]; q++) {
@@ -600,8 +606,8 @@ static int chain_pass(pr_doc *d, const pr_view *v, app_point2 o, app_point2 u, c
                                       py(v, x1, y1), -(t + 5.0 + step), s1 - s0, draw);
         }
     double x1 = o.x + u.x * len, y1 = o.y + u.y * len;
-    ok &= pr_dimension_placed(d->cr, px(v, o.x, o.y), py(v, o.x, o.y), px(v, x1, y1),
-                              py(v, x1, y1), -(t + (ns > 2 ? 10.5 : 5.0) + step), len, draw);
+    ok &= pr_dimension_placed(d->cr, px(v, o.x, o.y), py(v, o.x, o.y), px(v, x1, y1), py(v, x1, y1),
+                              -(t + (ns > 2 ? 10.5 : 5.0) + step), len, draw);
     return ok;
 }
 
@@ -659,7 +665,8 @@ static void draw_corner_names(pr_doc *d, const pr_view *v, const app_point2 *out
     pr_set_font(cr, PR_TEXT_SMALL, 1);
     cairo_set_source_rgb(cr, 0, 0, 0);
     for (int i = 0; i < pl->corner_count; i++) {
-        double ix = px(v, pl->corners[i].x, pl->corners[i].y), iy = py(v, pl->corners[i].x, pl->corners[i].y);
+        double ix = px(v, pl->corners[i].x, pl->corners[i].y),
+               iy = py(v, pl->corners[i].x, pl->corners[i].y);
         double ox = px(v, outer[i].x, outer[i].y), oy = py(v, outer[i].x, outer[i].y);
         double dx = ox - ix, dy = oy - iy, l = hypot(dx, dy);
         if (l < 1e-9)
@@ -838,7 +845,8 @@ app_result pr_draw_plan(pr_doc *d)
         v.ox = dl + y1 / scale;
         v.oy = dt + x1 / scale;
     }
-    double legend_x = lay.legend_below ? d->area_x + (d->area_w - lw) / 2 : d->area_x + d->area_w - lw;
+    double legend_x =
+        lay.legend_below ? d->area_x + (d->area_w - lw) / 2 : d->area_x + d->area_w - lw;
     double legend_y = lay.legend_below ? d->area_y + d->area_h - lh : d->area_y;
     cairo_t *cr = d->cr;
     cairo_save(cr);
