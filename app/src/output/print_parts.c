@@ -274,7 +274,7 @@ static void quotation(flow *f)
     for (int i = 0; i < d->bom.line_count; i++) {
         const app_bom_line *b = &d->bom.lines[i];
         need(f, ROW_H);
-        char pos[16], qty[32], unit_price[48], vat[16], net[48], desc[260];
+        char pos[16], qty[32], unit_price[48], vat[16], net[48], desc[260], numbers[64];
         snprintf(pos, sizeof pos, "%d", i + 1);
         if (b->unit == CAT_UNIT_PIECE || b->unit == CAT_UNIT_BOX)
             snprintf(qty, sizeof qty, "%.0f", b->quantity);
@@ -286,6 +286,9 @@ static void quotation(flow *f)
         if (b->foreign_currency)
             snprintf(desc, sizeof desc, "ERROR priced in %s, not %s: not in the total. %s",
                      b->currency, d->bom.currency, b->name);
+        else if (b->found && !b->is_tile &&
+                 pr_fixture_numbers_text(d, &b->product, numbers, sizeof numbers) > 0)
+            snprintf(desc, sizeof desc, "No. %s: %s", numbers, b->name); /* as on the plan */
         else if (b->found)
             snprintf(desc, sizeof desc, "%s", b->name);
         else
