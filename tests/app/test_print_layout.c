@@ -206,6 +206,19 @@ static void print_project(const char *dir, const char *file, const char *name, i
         const char *quote = strstr(all, "Quotation");
         int line = quote ? number_on_line(quote, "CE415701", 0) : -1;
         CHECK_MSG(pos > 0 && pos == line, "%s: legend Pos. %d, quotation line %d", name, pos, line);
+        /* The quotation names the fixture's plan number, the legend's line starts with it. */
+        const char *q = quote ? strstr(quote, "CE415701") : NULL;
+        const char *no = q ? strstr(q, "No. ") : NULL;
+        int number = no ? atoi(no + 4) : -1;
+        const char *legend = strstr(plan, "CE415701");
+        const char *line_start = legend;
+        while (line_start > plan && line_start[-1] != '\n')
+            line_start--;
+        char token[16], segment[512];
+        snprintf(token, sizeof token, " %d ", number);
+        snprintf(segment, sizeof segment, "%.*s", (int)(legend - line_start), line_start);
+        CHECK_MSG(number > 0 && strstr(segment, token), "%s: quotation No. %d, legend \"%s\"", name,
+                  number, segment);
     }
     free(plan);
     free(all);
