@@ -1,6 +1,7 @@
-/* The fixtures' numbers, by position: clockwise around the room seen from above, starting at the
- * door (the first door of the plan, else its first opening, else its first corner), so a customer
- * standing in the door reads the plan and the room in the same order. The same number marks the
+/* The fixtures' numbers, by position: clockwise along the walls seen from above (each fixture at
+ * the point of its nearest wall), starting at the door (the first door of the plan, else its
+ * first opening, else its first corner), so a customer standing in the door reads the plan and
+ * the room in the same order. The same number marks the
  * fixture on the plan, on the elevations and in the part list (its quotation position is looked
  * up here too, so the legend and the quotation cannot disagree). */
 #include "print_internal.h"
@@ -12,7 +13,7 @@
 
 typedef struct numbered {
     int fixture;
-    double sweep;  /* clockwise angle from the door, 0 .. 2 pi */
+    double sweep;  /* clockwise distance along the walls from the door, mm */
     double bottom; /* stacked fixtures (basin, mixer, mirror): the lower first */
 } numbered;
 
@@ -48,29 +49,49 @@ static app_point2 start_point(const app_room_plan *pl, const char **name)
     return pl->corners[0];
 }
 
+/* The position of p along the room's outline: the arc length, counter-clockwise from corner 0,
+ * of the point of the nearest wall nearest to p. */
+static double outline_position(const app_room_plan *pl, app_point2 p)
+{
+    double best = 1e300, at = 0, run = 0;
+    for (int i = 0; i < pl->corner_count; i++) {
+        app_point2 a = pl->corners[i], b = pl->corners[(i + 1) % pl->corner_count];
+        double dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy, l = sqrt(l2);
+        double t = l2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2 : 0;
+        t = t < 0 ? 0 : (t > 1 ? 1 : t);
+        double qx = a.x + dx * t - p.x, qy = a.y + dy * t - p.y, dist = qx * qx + qy * qy;
+        if (dist < best - 1e-9) {
+            best = dist;
+            at = run + t * l;
+        }
+        run += l;
+    }
+    return at;
+}
+
 void pr_fixtures_number(pr_doc *d)
 {
     const app_room_plan *pl = &d->plan;
     numbered *list = malloc((size_t)(d->fixture_count + 1) * sizeof *list);
     if (!list)
         return;
-    double cx = 0, cy = 0;
+    double perimeter = 0;
     for (int i = 0; i < pl->corner_count; i++) {
-        cx += pl->corners[i].x / pl->corner_count;
-        cy += pl->corners[i].y / pl->corner_count;
+        app_point2 a = pl->corners[i], b = pl->corners[(i + 1) % pl->corner_count];
+        perimeter += hypot(b.x - a.x, b.y - a.y);
     }
     const char *name;
-    app_point2 s = start_point(pl, &name);
-    double start = atan2(s.y - cy, s.x - cx);
+    double start = outline_position(pl, start_point(pl, &name));
     int n = 0;
     for (int i = 0; i < d->fixture_count; i++) {
         pr_fixture *f = &d->fixtures[i];
         f->number = 0;
         if (f->part_count == 0)
             continue;
-        double fx = (f->min[0] + f->max[0]) / 2, fy = (f->min[1] + f->max[1]) / 2;
-        /* Plan y points up: clockwise is the angle falling from the door's. */
-        double sweep = fmod(start - atan2(fy - cy, fx - cx) + 4 * PR_PI, 2 * PR_PI);
+        app_point2 c = {(f->min[0] + f->max[0]) / 2, (f->min[1] + f->max[1]) / 2};
+        /* The plan's corners run counter-clockwise: clockwise is backwards along the outline. */
+        double sweep =
+            perimeter > 0 ? fmod(start - outline_position(pl, c) + 2 * perimeter, perimeter) : 0;
         list[n++] = (numbered){i, sweep, f->min[2]};
     }
     qsort(list, (size_t)n, sizeof *list, cmp_numbered);
