@@ -69,7 +69,7 @@ typedef struct app_print_report {
     int plan_scale, elevation_scale; /* the 1:N used (elevations: the smallest, 1:largest N) */
     int elevation_pages;             /* pages holding elevations (one or two a page) */
     int elevations;                  /* elevations drawn: walls, then pre-walls */
-    int tiles_whole, tiles_cut; /* drawn on the elevations, summed over all walls */
+    int tiles_whole, tiles_cut;      /* drawn on the elevations, summed over all walls */
     /* Per elevation (walls 0..n-1, then pre-wall fronts): the tiles of that face's own
      * layouts (a pre-wall's front seen on its wall's sheet is counted on its own sheet). */
     int elevation_whole[APP_PRINT_REPORT_MAX_ELEVATIONS];
