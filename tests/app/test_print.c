@@ -244,6 +244,8 @@ static void test_scales(void)
     CHECK(app_print_fit_scale(7000, 6000, 20, 190, 200) == 50);
     CHECK(app_print_fit_scale(8000, 6000, 20, 190, 200) == 100);
     CHECK(app_print_fit_scale(1e6, 1e6, 20, 190, 200) == 200);
+    /* 1:10 when the drawing fits at it (a pre-wall, a small room on A3). */
+    CHECK(app_print_fit_scale(1500, 1000, 20, 190, 200) == 10);
     int n = -1;
     CHECK(app_print_scale_parse("1:25", &n) && n == 25);
     CHECK(app_print_scale_parse("50", &n) && n == 50);

@@ -144,7 +144,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "bake output paper landscape scale svg renders render-size customer date "
-                "company xlsx no-clearances quality backend",
+                "company xlsx no-clearances quality backend text-boxes",
      .summary = "the print set: plan, wall elevations with tiles, renders, part list, quotation",
      .help = "  Renders of the project's cameras at quality final (or the PNG files in\n"
              "  --renders DIR).\n"},

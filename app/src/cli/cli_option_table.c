@@ -174,6 +174,7 @@ static const cli_option_spec options[] = {
      .hint = "the folder to write into"},
     STRING("svg", svg, "DIR", "also write each page as DIR/page-NN.svg"),
     STRING("renders", renders, "DIR|none", "take the renders from DIR's PNG files, or none"),
+    STRING("text-boxes", text_boxes, "FILE", "list every text's box on the pages (debugging)"),
     STRING("customer", customer, "NAME", "the customer named on the title block"),
     STRING("date", date, "TEXT", "the date on the title block (default: today)"),
     STRING("company", company, "FILE",

@@ -29,7 +29,7 @@ typedef struct cli_options {
     /* Files and names. */
     const char *output, *camera, *csv, *plot, *markdown, *animate, *faces, *stats;
     const char *db, *category, *manufacturer, *variant, *out_dir, *svg, *renders, *customer, *date,
-        *mask, *heatmap, *png, *script, *frame_log, *company, *xlsx;
+        *mask, *heatmap, *png, *script, *frame_log, *company, *xlsx, *text_boxes;
 
     /* The image and the renderer. */
     int width, height;               /* --size WxH */

@@ -1,6 +1,6 @@
 /* tessera print PROJECT -o plan.pdf [--paper A4|A3] [--landscape] [--scale 1:20|fit]
  *               [--svg DIR] [--renders DIR|none] [--render-size WxH] [--customer NAME]
- *               [--date TEXT] [--no-clearances] [--backend egl|osmesa]
+ *               [--date TEXT] [--no-clearances] [--backend egl|osmesa] [--text-boxes FILE]
  * The print set (app/output/print.h, docs/printing.md): plan, elevations, renders, part list. */
 #include "app/cli/cli.h"
 #include "app/output/print.h"
@@ -231,7 +231,9 @@ int cli_cmd_print(const cli_options *o)
     app_print_report rep = {0};
     double t0 = cli_now_ms();
     if (rc == CLI_OK) {
+        po.text_boxes_path = o->text_boxes;
         r = app_print_pdf(&p, &po, output, &rep, err, sizeof err);
+        po.text_boxes_path = NULL; /* the SVG pages are the same pages */
         if (r == APP_OK && svg)
             r = app_print_svg(&p, &po, svg, &rep, err, sizeof err);
         if (r != APP_OK) {
@@ -240,12 +242,13 @@ int cli_cmd_print(const cli_options *o)
         }
     }
     if (rc == CLI_OK)
-        fprintf(stderr,
-                "tessera print: %s: %d pages (plan 1:%d, %d elevations 1:%d with %d whole and "
-                "%d cut tiles, %d renders, %d part-list pages) in %.0f ms\n",
-                output, rep.pages, rep.plan_scale, rep.elevation_pages, rep.elevation_scale,
-                rep.tiles_whole, rep.tiles_cut, rep.render_pages, rep.partlist_pages,
-                cli_now_ms() - t0);
+        fprintf(
+            stderr,
+            "tessera print: %s: %d pages (plan 1:%d, %d elevations on %d pages, 1:%d and larger, "
+            "with %d whole and %d cut tiles, %d render pages, %d part-list pages) in %.0f ms\n",
+            output, rep.pages, rep.plan_scale, rep.elevations, rep.elevation_pages,
+            rep.elevation_scale, rep.tiles_whole, rep.tiles_cut, rep.render_pages,
+            rep.partlist_pages, cli_now_ms() - t0);
     if (made_tmp) {
         for (int i = 0; i < images.count; i++)
             unlink(images.paths[i]);

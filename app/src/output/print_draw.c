@@ -30,6 +30,8 @@ void pr_text_rotated(cairo_t *cr, double x, double y, double angle, double ax, d
     /* ay: 0 top (ascent below y), 0.5 middle of the capitals, 1 baseline at y. */
     double cap = fe.ascent * 0.72;
     double dy = ay >= 1.0 ? 0.0 : (ay <= 0.0 ? cap : cap * (1.0 - ay) + 0.0);
+    if (text[0])
+        pr_box_record(cr, pr_text_measure(cr, x, y, angle, ax, ay, text), text);
     cairo_save(cr);
     cairo_translate(cr, x, y);
     cairo_rotate(cr, -angle);
@@ -44,19 +46,76 @@ void pr_text(cairo_t *cr, double x, double y, double ax, double ay, const char *
     pr_text_rotated(cr, x, y, 0.0, ax, ay, text);
 }
 
-void pr_dimension(cairo_t *cr, double ax, double ay, double bx, double by, double offset,
-                  double value_mm)
+/* Where a dimension's value goes: variant 0 centred above the line (when it fits between the
+ * ticks), 1 beyond the b end, 2 beyond the a end, 3 centred a line further out. */
+static void dimension_text_at(cairo_t *cr, const double a2[2], const double b2[2], double ux,
+                              double uy, double sgn, int variant, const char *text, double *x,
+                              double *y, double *angle)
+{
+    double len = hypot(b2[0] - a2[0], b2[1] - a2[1]);
+    double an = atan2(-uy, ux); /* counter-clockwise on paper */
+    if (an > PR_PI / 2 + 1e-6)
+        an -= PR_PI;
+    else if (an <= -PR_PI / 2 + 1e-6)
+        an += PR_PI;
+    /* "Above" the line as read: the text's up direction. */
+    double upx = -sin(an), upy = -cos(an);
+    double w = pr_text_width(cr, text);
+    double mx = (a2[0] + b2[0]) / 2, my = (a2[1] + b2[1]) / 2;
+    if (variant == 0 && w + 2.0 > len)
+        variant = 1; /* no room between the ticks */
+    if (variant == 1) {
+        mx = b2[0] + ux * (w / 2 + 3.0);
+        my = b2[1] + uy * (w / 2 + 3.0);
+    } else if (variant == 2) {
+        mx = a2[0] - ux * (w / 2 + 3.0);
+        my = a2[1] - uy * (w / 2 + 3.0);
+    }
+    double lift = 0.8;
+    if (variant == 3) {
+        /* Away from the object: "up" as read may point either way. */
+        double nx = uy, ny = -ux; /* left of a->b */
+        double out = (upx * nx + upy * ny) * sgn >= 0 ? 1.0 : -1.0;
+        lift = out > 0 ? 3.6 : -1.2 - 2.6;
+    }
+    *x = mx + upx * lift;
+    *y = my + upy * lift;
+    *angle = an;
+}
+
+int pr_dimension_placed(cairo_t *cr, double ax, double ay, double bx, double by, double offset,
+                        double value_mm, int draw)
 {
     double dx = bx - ax, dy = by - ay, len = hypot(dx, dy);
     if (len < 1e-6)
-        return;
+        return 1;
     double ux = dx / len, uy = dy / len;
     /* Left of a->b on paper (y down): (uy, -ux). */
     double nx = uy, ny = -ux;
     double a2x = ax + nx * offset, a2y = ay + ny * offset;
     double b2x = bx + nx * offset, b2y = by + ny * offset;
     double sgn = offset >= 0 ? 1.0 : -1.0;
+    char text[32];
+    snprintf(text, sizeof text, "%.0f", value_mm);
     cairo_save(cr);
+    pr_set_font(cr, PR_TEXT_NORMAL, 0);
+    const double a2[2] = {a2x, a2y}, b2[2] = {b2x, b2y};
+    /* The value takes the first place free of the texts already on the page. */
+    int placed = 0, variant = 0;
+    double tx = 0, ty = 0, angle = 0;
+    for (int k = 0; k < 4 && !placed; k++) {
+        dimension_text_at(cr, a2, b2, ux, uy, sgn, k, text, &tx, &ty, &angle);
+        placed = pr_box_is_free(cr, pr_text_measure(cr, tx, ty, angle, 0.5, 1.0, text), 0.3);
+        variant = k;
+    }
+    if (!placed)
+        dimension_text_at(cr, a2, b2, ux, uy, sgn, variant = 0, text, &tx, &ty, &angle);
+    if (!draw) {
+        if (placed)
+            pr_box_record(cr, pr_text_measure(cr, tx, ty, angle, 0.5, 1.0, text), text);
+        cairo_restore(cr);
+        return placed;
+    }
     cairo_set_source_rgb(cr, 0, 0, 0);
     cairo_set_line_width(cr, PR_LINE_THIN);
     /* Extension lines: from 1 mm off the object to 1.5 mm past the dimension line. */
@@ -72,32 +131,35 @@ void pr_dimension(cairo_t *cr, double ax, double ay, double bx, double by, doubl
     cairo_stroke(cr);
     /* Ticks: short heavy strokes at 45 degrees through each end. */
     cairo_set_line_width(cr, PR_LINE_WIDE);
-    double tx = (ux + nx) * 0.7071 * 1.3, ty = (uy + ny) * 0.7071 * 1.3;
-    cairo_move_to(cr, a2x - tx, a2y - ty);
-    cairo_line_to(cr, a2x + tx, a2y + ty);
-    cairo_move_to(cr, b2x - tx, b2y - ty);
-    cairo_line_to(cr, b2x + tx, b2y + ty);
+    double kx = (ux + nx) * 0.7071 * 1.3, ky = (uy + ny) * 0.7071 * 1.3;
+    cairo_move_to(cr, a2x - kx, a2y - ky);
+    cairo_line_to(cr, a2x + kx, a2y + ky);
+    cairo_move_to(cr, b2x - kx, b2y - ky);
+    cairo_line_to(cr, b2x + kx, b2y + ky);
     cairo_stroke(cr);
-    /* The value above the line (on the side away from the object), readable from the bottom
-     * or the right (ISO 129-1 method 1). */
-    char text[32];
-    snprintf(text, sizeof text, "%.0f", value_mm);
-    pr_set_font(cr, PR_TEXT_NORMAL, 0);
-    double angle = atan2(-uy, ux); /* counter-clockwise on paper */
-    if (angle > PR_PI / 2 + 1e-6)
-        angle -= PR_PI;
-    else if (angle <= -PR_PI / 2 + 1e-6)
-        angle += PR_PI;
-    double mx = (a2x + b2x) / 2, my = (a2y + b2y) / 2;
-    /* "Above" the line as read: the text's up direction. */
-    double upx = -sin(angle), upy = -cos(angle);
-    double w = pr_text_width(cr, text);
-    if (w + 2.0 > len) { /* no room between the ticks: put the value beside the end */
-        mx = b2x + ux * (w / 2 + 3.0);
-        my = b2y + uy * (w / 2 + 3.0);
-    }
-    pr_text_rotated(cr, mx + upx * 0.8, my + upy * 0.8, angle, 0.5, 1.0, text);
+    /* The value (readable from the bottom or the right, ISO 129-1 method 1). */
+    pr_text_rotated(cr, tx, ty, angle, 0.5, 1.0, text);
     cairo_restore(cr);
+    return placed;
+}
+
+void pr_dimension(cairo_t *cr, double ax, double ay, double bx, double by, double offset,
+                  double value_mm)
+{
+    pr_dimension_placed(cr, ax, ay, bx, by, offset, value_mm, 1);
+}
+
+int pr_text_boxes_mark(cairo_t *cr)
+{
+    pr_text_boxes *r = pr_text_boxes_of(cr);
+    return r ? r->count : 0;
+}
+
+void pr_text_boxes_rollback(cairo_t *cr, int mark)
+{
+    pr_text_boxes *r = pr_text_boxes_of(cr);
+    if (r && mark <= r->count)
+        r->count = mark;
 }
 
 void pr_hatch_path(cairo_t *cr, double spacing, double angle_deg)
@@ -156,7 +218,8 @@ void pr_scale_bar(cairo_t *cr, double x, double y, int scale)
      * 1:100 and smaller) in five alternating blocks, ending at (x, y). */
     if (scale <= 0)
         return;
-    double metres = scale >= 100 ? 2.0 : 1.0, len = metres * 1000.0 / scale, x0 = x - len;
+    double metres = scale >= 100 ? 2.0 : (scale <= 10 ? 0.5 : 1.0);
+    double len = metres * 1000.0 / scale, x0 = x - len;
     cairo_save(cr);
     cairo_set_line_width(cr, PR_LINE_THIN);
     for (int i = 0; i < 5; i++) {
@@ -171,7 +234,7 @@ void pr_scale_bar(cairo_t *cr, double x, double y, int scale)
     pr_set_font(cr, 1.8, 0);
     char text[32];
     pr_text(cr, x0, y - 2.0, 0.5, 1.0, "0");
-    snprintf(text, sizeof text, "%.0f m", metres);
+    snprintf(text, sizeof text, "%g m", metres);
     pr_text(cr, x, y - 2.0, 0.5, 1.0, text);
     snprintf(text, sizeof text, "1:%d", scale);
     pr_text(cr, x0 - 2.5, y, 1.0, 1.0, text);
@@ -194,4 +257,62 @@ void pr_format_money(long long cents, char *out, size_t size)
     }
     grouped[j] = 0;
     snprintf(out, size, "%s%s.%02llu", neg ? "-" : "", grouped, frac);
+}
+
+void pr_balloon(cairo_t *cr, double x, double y, int number)
+{
+    char text[16];
+    snprintf(text, sizeof text, "%d", number);
+    const double r = PR_BALLOON_RADIUS;
+    cairo_save(cr);
+    cairo_new_path(cr);
+    cairo_arc(cr, x, y, r, 0, 2 * PR_PI);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_set_line_width(cr, PR_LINE_FINE);
+    cairo_stroke(cr);
+    pr_set_font(cr, number >= 100 ? 1.5 : (number >= 10 ? 1.8 : 2.0), 1);
+    /* The circle is the text's box: the digits inside are not recorded again. */
+    pr_box_record(cr, pr_box_to_paper(cr, x - r, y - r, x + r, y + r), text);
+    pr_text_boxes *reg = pr_text_boxes_of(cr);
+    if (reg)
+        reg->suspended++;
+    pr_text(cr, x, y, 0.5, 0.5, text);
+    if (reg)
+        reg->suspended--;
+    cairo_restore(cr);
+}
+
+int pr_place_balloon(cairo_t *cr, double x, double y, int number, pr_box within)
+{
+    const double r = PR_BALLOON_RADIUS;
+    /* The anchor first, then along leaders in eight directions at growing lengths: the
+     * shortest free leader wins. */
+    static const double dirs[8][2] = {
+        {0, -1},          {0, 1},           {1, 0}, {-1, 0}, {0.7071, -0.7071}, {-0.7071, -0.7071},
+        {0.7071, 0.7071}, {-0.7071, 0.7071}};
+    static const double lengths[] = {0, 4.5, 7, 10, 14, 19, 25};
+    for (size_t li = 0; li < sizeof lengths / sizeof lengths[0]; li++)
+        for (int k = 0; k < (li == 0 ? 1 : 8); k++) {
+            double bx = x + dirs[k][0] * lengths[li], by = y + dirs[k][1] * lengths[li];
+            pr_box b = pr_box_to_paper(cr, bx - r, by - r, bx + r, by + r);
+            if (b.x0 < within.x0 || b.y0 < within.y0 || b.x1 > within.x1 || b.y1 > within.y1 ||
+                !pr_box_is_free(cr, b, 0.4))
+                continue;
+            if (li > 0) {
+                cairo_save(cr);
+                cairo_set_source_rgb(cr, 0.25, 0.25, 0.25);
+                cairo_set_line_width(cr, PR_LINE_THIN);
+                cairo_move_to(cr, x, y);
+                cairo_line_to(cr, bx - dirs[k][0] * r, by - dirs[k][1] * r);
+                cairo_stroke(cr);
+                cairo_arc(cr, x, y, 0.4, 0, 2 * PR_PI);
+                cairo_fill(cr);
+                cairo_restore(cr);
+            }
+            pr_balloon(cr, bx, by, number);
+            return 1;
+        }
+    return 0;
 }

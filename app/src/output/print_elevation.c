@@ -55,22 +55,65 @@ static void elev_of(const pr_doc *d, int index, elev *e)
     e->depth = pw->depth_mm;
 }
 
-int pr_elevation_scale(pr_doc *d)
+/* Paper room around an elevation's face: the rows' chain left and the height right (16 mm
+ * each), the length, the corner names and the counts below (20 mm), its caption above (6 mm). */
+#define EL_SIDE 16.0
+#define EL_BELOW 20.0
+#define EL_ABOVE 6.0
+#define EL_LEGEND 8.0 /* the page's bottom line: whole / cut legend and the scale bar */
+
+/* The face's extent in model mm, pre-walls unfolded (sides beside it, top above). */
+static void elev_extent(const pr_doc *d, int index, double *w, double *h)
+{
+    elev e;
+    elev_of(d, index, &e);
+    *w = e.length + 2 * e.depth;
+    *h = e.height + e.depth;
+}
+
+static int elev_fits(const pr_doc *d, int index, int n, double rw, double rh)
+{
+    double w, h;
+    elev_extent(d, index, &w, &h);
+    return w / n + 2 * EL_SIDE <= rw && h / n + EL_BELOW + EL_ABOVE <= rh;
+}
+
+int pr_elevation_scale(pr_doc *d, int index)
 {
     if (d->o->scale > 0)
         return d->o->scale;
-    double lmax = 0, hmax = 0;
-    for (int i = 0; i < pr_elevation_count(d); i++) {
-        elev e;
-        elev_of(d, i, &e);
-        double l = e.length + 2 * e.depth, h = e.height + e.depth; /* unfolded pre-walls */
-        lmax = l > lmax ? l : lmax;
-        hmax = h > hmax ? h : hmax;
+    double aw = d->page_w - 28.0, ah = d->page_h - 44.0 - EL_LEGEND;
+    for (int i = 0; i < APP_PRINT_SCALE_COUNT; i++)
+        if (elev_fits(d, index, app_print_scales[i], aw, ah))
+            return app_print_scales[i];
+    return app_print_scales[APP_PRINT_SCALE_COUNT - 1];
+}
+
+/* Two elevations side by side (1) or one above the other (2) at scale n, or 0. */
+static int pair_arrangement(const pr_doc *d, int a, int b, int n)
+{
+    double aw = d->page_w - 28.0, ah = d->page_h - 44.0 - EL_LEGEND;
+    if (elev_fits(d, a, n, aw / 2, ah) && elev_fits(d, b, n, aw / 2, ah))
+        return 1;
+    if (elev_fits(d, a, n, aw, ah / 2) && elev_fits(d, b, n, aw, ah / 2))
+        return 2;
+    return 0;
+}
+
+int pr_elevation_pages(pr_doc *d, pr_page *pages)
+{
+    int count = pr_elevation_count(d), n = 0;
+    for (int i = 0; i < count; i++) {
+        int si = pr_elevation_scale(d, i);
+        if (i + 1 < count && pr_elevation_scale(d, i + 1) == si &&
+            pair_arrangement(d, i, i + 1, si)) {
+            pages[n++] = (pr_page){PR_PAGE_ELEVATION, i, i + 1};
+            i++;
+        } else {
+            pages[n++] = (pr_page){PR_PAGE_ELEVATION, i, -1};
+        }
     }
-    double aw = d->page_w - 28.0, ah = d->page_h - 44.0;
-    /* The dimension chains take ~16 mm on the left and right, the length and corner names
-     * ~16 mm below; the legend a line at the bottom. */
-    return app_print_fit_scale(lmax, hmax, 16.0, aw, ah - 8.0);
+    return n;
 }
 
 /* Surface coordinates (s, t) to paper: x = ax + bx s, y = ay + by t. A wall seen from inside
@@ -158,7 +201,8 @@ static void draw_layout(pr_doc *d, const ev *v, const app_tile_layout *l, const 
             cairo_new_path(cr);
             (*cut)++;
         }
-        /* Cut tiles carry their number (as in the cut plan), at the clipped shape's centre. */
+        /* Cut tiles carry their number (as in the cut plan), at the clipped shape's centre,
+         * drawn last where no other text is. */
         if (!pt->whole && pt->piece_count > 0) {
             double cx = 0, cy = 0;
             int np = 0;
@@ -169,11 +213,16 @@ static void draw_layout(pr_doc *d, const ev *v, const app_tile_layout *l, const 
                     cy += l->points[pc->first + k].y;
                 }
             }
-            char num[16];
-            snprintf(num, sizeof num, "%d", i + 1);
-            pr_set_font(cr, 1.3, 0);
-            cairo_set_source_rgb(cr, 0.55, 0.1, 0.1);
-            pr_text(cr, ex(v, cx / np), ey(v, cy / np), 0.5, 0.5, num);
+            if (d->cut_label_count == d->cut_label_cap) {
+                int cap = d->cut_label_cap ? d->cut_label_cap * 2 : 256;
+                pr_cut_label *c = realloc(d->cut_labels, (size_t)cap * sizeof *c);
+                if (!c)
+                    continue; /* only this number is left out */
+                d->cut_labels = c;
+                d->cut_label_cap = cap;
+            }
+            d->cut_labels[d->cut_label_count++] =
+                (pr_cut_label){ex(v, cx / np), ey(v, cy / np), i + 1};
         }
         /* Edges: the tile's own edges thin (the grout line), cut edges heavier in red; one
          * path per kind and tile, so a mosaic wall stays a few strokes per tile. */
@@ -269,14 +318,14 @@ static void draw_fixtures(pr_doc *d, const ev *v, const elev *e, double *marks, 
         free(pts);
         free(hull);
     }
-    /* One level mark and label per fixture shown, at its top, at the fixture's right end as
-     * drawn (text to the right) or, if that runs past the face or onto a label already
-     * placed, at its left end (text to the left); a third collision drops the label. */
-    double boxes[64][4];
-    int nbox = 0;
+    /* One level mark per fixture shown, at its top, at the fixture's right end as drawn (text
+     * to the right) or, if that runs past the face or onto a text already there, at its left
+     * end (text to the left); a third collision drops the mark. Catalog products first
+     * (pass 0), so a crowded wall keeps the marks that matter to the installer. Then each
+     * fixture's number (as on the plan) at the middle of its silhouette, or on a leader. */
     const double face_l = ex(v, e->s0 + e->length), face_r = ex(v, e->s0);
-    /* Catalog products first (pass 0), then the rest, so a crowded wall keeps the labels
-     * that matter to the installer. */
+    double mid_s[256], mid_t[256];
+    int shown_list[256], nshown = 0;
     for (int pass = 0; pass < 2; pass++)
         for (int i = 0; i < d->fixture_count; i++) {
             int shown = 0;
@@ -296,33 +345,37 @@ static void draw_fixtures(pr_doc *d, const ev *v, const elev *e, double *marks, 
             smin = smin < e->s0 ? e->s0 : smin;
             smax = smax > e->s0 + e->length ? e->s0 + e->length : smax;
             double top = f->max[2];
-            char text[128];
-            snprintf(text, sizeof text, "+%.0f %s", top, f->label);
+            if (nshown < 256) {
+                shown_list[nshown] = i;
+                mid_s[nshown] = (smin + smax) / 2;
+                mid_t[nshown++] = (f->min[2] + f->max[2]) / 2;
+            }
+            char text[64];
+            snprintf(text, sizeof text, "+%.0f", top);
             pr_set_font(cr, PR_TEXT_SMALL, 0);
             double w = pr_text_width(cr, text) + 4.0, y = ey(v, top);
             for (int attempt = 0; attempt < 2; attempt++) {
                 int left = attempt == 1;
                 double x = left ? ex(v, smax) + 1.0 : ex(v, smin) - 1.0;
                 double bx0 = left ? x - w : x - 1.5, bx1 = left ? x + 1.5 : x + w;
-                int clash = (!left && bx1 > face_r + 2.0) || (left && bx0 < face_l - 2.0);
-                for (int b = 0; b < nbox && !clash; b++)
-                    clash = bx0 < boxes[b][2] && bx1 > boxes[b][0] && y - 3.0 < boxes[b][3] &&
-                            y + 0.5 > boxes[b][1];
-                if (clash)
+                if ((!left && bx1 > face_r + 2.0) || (left && bx0 < face_l - 2.0))
+                    continue;
+                pr_box tb = pr_text_measure(cr, left ? x - 2.0 : x + 2.0, y - 0.7, 0,
+                                            left ? 1.0 : 0.0, 1.0, text);
+                if (!pr_box_is_free(cr, tb, 0.3))
                     continue;
                 pr_level_mark(cr, x, y, text, left);
-                if (nbox < 64) {
-                    boxes[nbox][0] = bx0;
-                    boxes[nbox][1] = y - 3.0;
-                    boxes[nbox][2] = bx1;
-                    boxes[nbox][3] = y + 0.5;
-                    nbox++;
-                }
                 if (*mark_count < 64)
                     marks[(*mark_count)++] = top;
                 break;
             }
         }
+    pr_box within = {d->area_x, d->area_y, d->area_x + d->area_w, d->area_y + d->area_h - 8.0};
+    for (int k = 0; k < nshown; k++) {
+        const pr_fixture *f = &d->fixtures[shown_list[k]];
+        if (f->number)
+            pr_place_balloon(cr, ex(v, mid_s[k]), ey(v, mid_t[k]), f->number, within);
+    }
     free(list);
 }
 
@@ -461,30 +514,24 @@ static void draw_unfolded_faces(pr_doc *d, const ev *front, const elev *e, int k
     draw_face(d, &tv, surface, e->s0, 0, e->s0 + e->length, depth, whole, cut);
 }
 
-app_result pr_draw_elevation(pr_doc *d, int index)
+/* Elevation `index` at 1:scale, centred in the region (paper mm). */
+static void draw_one(pr_doc *d, int index, int scale, double rx, double ry, double rw, double rh)
 {
     elev e;
     elev_of(d, index, &e);
-    int scale = pr_elevation_scale(d);
-    if (d->report)
-        d->report->elevation_scale = scale;
-    app_result r = pr_page_begin(d, e.title, scale);
-    if (r != APP_OK)
-        return r;
     cairo_t *cr = d->cr;
     const double s0 = e.s0, s1 = e.s0 + e.length;
     /* A pre-wall's sheet is unfolded: its sides left and right of the front, its top above. */
     const double side = index < d->plan.corner_count ? 0.0 : e.depth;
-    double left_edge = d->area_x + d->area_w / 2 - e.length / 2 / scale;
-    double floor_y = d->area_y + d->area_h / 2 + (e.height + side) / 2 / scale + 4.0;
+    double left_edge = rx + rw / 2 - e.length / 2 / scale;
+    double tall = (e.height + side) / scale;
+    double floor_y = ry + (rh - tall - EL_BELOW - EL_ABOVE) / 2 + EL_ABOVE + tall;
     ev v = {.ax = left_edge + s1 / scale,
             .bx = -1.0 / scale,
             .ay = floor_y,
             .by = -1.0 / scale,
             .n = scale};
     cairo_save(cr);
-    cairo_rectangle(cr, d->area_x - 4, d->area_y - 4, d->area_w + 8, d->area_h + 8);
-    cairo_clip(cr);
 
     /* The wall face. */
     rect_st(cr, &v, s0, 0, s1, e.height);
@@ -617,7 +664,22 @@ app_result pr_draw_elevation(pr_doc *d, int index)
         pr_text(cr, right, bottom + 13.0, 1.0, 1.0, a);
         pr_text(cr, left, bottom + 13.0, 0.0, 1.0, b);
     }
-    /* The legend: whole and cut tiles, and the counts on this face. */
+    /* The caption above, the counts of this face under the corner names. */
+    pr_set_font(cr, PR_TEXT_LARGE, 1);
+    pr_text(cr, (left + right) / 2, top - sw - (side > 0 ? 5.5 : 2.5), 0.5, 1.0, e.title);
+    char summary[400];
+    snprintf(summary, sizeof summary, "%s   %s", e.surface,
+             tiles_text[0] ? tiles_text : "not tiled");
+    pr_set_font(cr, PR_TEXT_SMALL, 0);
+    pr_text(cr, (left + right) / 2, bottom + 17.5, 0.5, 1.0, summary);
+    cairo_restore(cr);
+}
+
+/* The page's bottom line: the whole / cut legend and the graphic scale. */
+static void draw_legend_row(pr_doc *d, int scale)
+{
+    cairo_t *cr = d->cr;
+    pr_set_font(cr, PR_TEXT_SMALL, 0);
     double lx = d->area_x, ly = d->area_y + d->area_h - 1.0;
     cairo_rectangle(cr, lx, ly - 3.0, 5.0, 3.0);
     cairo_set_source_rgb(cr, 0.8, 0.8, 0.8);
@@ -636,12 +698,63 @@ app_result pr_draw_elevation(pr_doc *d, int index)
     cairo_set_line_width(cr, PR_LINE_FINE);
     cairo_stroke(cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
-    pr_text(cr, lx + 32.5, ly, 0.0, 1.0, "cut tile (cut edges red)");
-    char summary[400];
-    snprintf(summary, sizeof summary, "%s   %s", e.surface,
-             tiles_text[0] ? tiles_text : "not tiled");
-    pr_text(cr, lx + 75.0, ly, 0.0, 1.0, summary);
+    pr_text(cr, lx + 32.5, ly, 0.0, 1.0, "cut tile (cut edges red, numbers as in the cut plan)");
     pr_scale_bar(cr, d->area_x + d->area_w - 2.0, ly, scale);
+}
+
+/* The cut tiles' numbers last, each where no other text is (over a silhouette or a label it is
+ * left out: the cut plan still lists it). */
+static void draw_cut_labels(pr_doc *d)
+{
+    cairo_t *cr = d->cr;
+    pr_set_font(cr, 1.3, 0);
+    cairo_set_source_rgb(cr, 0.55, 0.1, 0.1);
+    for (int i = 0; i < d->cut_label_count; i++) {
+        const pr_cut_label *c = &d->cut_labels[i];
+        char num[16];
+        snprintf(num, sizeof num, "%d", c->number);
+        if (pr_box_is_free(cr, pr_text_measure(cr, c->x, c->y, 0, 0.5, 0.5, num), 0.15))
+            pr_text(cr, c->x, c->y, 0.5, 0.5, num);
+    }
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    d->cut_label_count = 0;
+}
+
+app_result pr_draw_elevation(pr_doc *d, int index, int second)
+{
+    int scale = pr_elevation_scale(d, index);
+    if (d->report && (d->report->elevation_scale == 0 || scale > d->report->elevation_scale))
+        d->report->elevation_scale = scale;
+    elev a, b;
+    elev_of(d, index, &a);
+    char title[300];
+    if (second >= 0) {
+        elev_of(d, second, &b);
+        snprintf(title, sizeof title, "Elevations: %.120s; %.120s", a.title + strlen("Elevation "),
+                 b.title + strlen("Elevation "));
+    } else {
+        snprintf(title, sizeof title, "%s", a.title);
+    }
+    app_result r = pr_page_begin(d, title, scale);
+    if (r != APP_OK)
+        return r;
+    cairo_t *cr = d->cr;
+    cairo_save(cr);
+    cairo_rectangle(cr, d->area_x - 4, d->area_y - 4, d->area_w + 8, d->area_h + 8);
+    cairo_clip(cr);
+    d->cut_label_count = 0;
+    draw_legend_row(d, scale);
+    double rx = d->area_x, ry = d->area_y, rw = d->area_w, rh = d->area_h - EL_LEGEND;
+    if (second < 0) {
+        draw_one(d, index, scale, rx, ry, rw, rh);
+    } else if (pair_arrangement(d, index, second, scale) == 1) {
+        draw_one(d, index, scale, rx, ry, rw / 2, rh);
+        draw_one(d, second, scale, rx + rw / 2, ry, rw / 2, rh);
+    } else {
+        draw_one(d, index, scale, rx, ry, rw, rh / 2);
+        draw_one(d, second, scale, rx, ry + rh / 2, rw, rh / 2);
+    }
+    draw_cut_labels(d);
     cairo_restore(cr);
     return pr_page_end(d);
 }

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <strings.h>
 
-const int app_print_scales[APP_PRINT_SCALE_COUNT] = {20, 25, 50, 100, 200};
+const int app_print_scales[APP_PRINT_SCALE_COUNT] = {10, 20, 25, 50, 100, 200};
 
 #define PR_MARGIN 10.0       /* paper mm around the frame */
 #define PR_TITLE_HEIGHT 16.0 /* the title block's height */
@@ -146,6 +146,9 @@ app_result pr_page_begin(pr_doc *d, const char *title, int scale)
         cairo_svg_surface_restrict_to_version(d->surface, CAIRO_SVG_VERSION_1_1);
         d->cr = cairo_create(d->surface);
     }
+    pr_text_boxes_clear(&d->text_boxes);
+    pr_text_boxes_attach(d->cr, &d->text_boxes);
+    snprintf(d->page_title, sizeof d->page_title, "%s", title);
     cairo_save(d->cr);
     cairo_identity_matrix(d->cr);
     cairo_scale(d->cr, 72.0 / 25.4, 72.0 / 25.4); /* user unit: the paper millimetre */
@@ -160,6 +163,9 @@ app_result pr_page_begin(pr_doc *d, const char *title, int scale)
 
 app_result pr_page_end(pr_doc *d)
 {
+    if (d->text_boxes_out)
+        pr_text_boxes_write(&d->text_boxes, d->text_boxes_out, d->page + 1, d->page_title);
+    pr_text_boxes_clear(&d->text_boxes);
     cairo_restore(d->cr);
     cairo_status_t st = cairo_status(d->cr);
     if (st == CAIRO_STATUS_SUCCESS)

@@ -355,7 +355,7 @@ static void quotation(flow *f)
         need(f, row_h);
         if (f->at != sheet) /* a continued list repeats its column heads */
             header(f, cols, nc);
-        char pos[16], qty[32], unit_price[48], vat[16], net[48], desc[260];
+        char pos[16], qty[32], unit_price[48], vat[16], net[48], desc[260], numbers[64];
         snprintf(pos, sizeof pos, "%d", i + 1);
         if (b->unit == CAT_UNIT_PIECE || b->unit == CAT_UNIT_BOX)
             snprintf(qty, sizeof qty, "%.0f", b->quantity);
@@ -367,6 +367,9 @@ static void quotation(flow *f)
         if (b->foreign_currency)
             snprintf(desc, sizeof desc, "ERROR priced in %s, not %s: not in the total. %s",
                      b->currency, d->bom.currency, b->name);
+        else if (b->found && !b->is_tile &&
+                 pr_fixture_numbers_text(d, &b->product, numbers, sizeof numbers) > 0)
+            snprintf(desc, sizeof desc, "No. %s: %s", numbers, b->name); /* as on the plan */
         else if (b->found)
             snprintf(desc, sizeof desc, "%s", b->name);
         else

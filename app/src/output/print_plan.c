@@ -15,15 +15,18 @@
 typedef struct pr_view {
     double ox, oy; /* paper position of world (0, 0) */
     double n;      /* scale denominator */
+    int turned;    /* 1: the plan is turned a quarter counter-clockwise to fit the sheet */
 } pr_view;
 
-static double px(const pr_view *v, double x)
+/* World (x, y) to paper: plan y points up the page; a turned plan maps (x, y) to (-y, x) first,
+ * a rotation (never a mirror), so the drawing stays the room seen from above. */
+static double px(const pr_view *v, double x, double y)
 {
-    return v->ox + x / v->n;
+    return v->ox + (v->turned ? -y : x) / v->n;
 }
-static double py(const pr_view *v, double y)
+static double py(const pr_view *v, double x, double y)
 {
-    return v->oy - y / v->n; /* plan y points up the page */
+    return v->oy - (v->turned ? x : y) / v->n;
 }
 
 void pr_offset_polygon(const app_point2 *c, int n, double distance, app_point2 *out)
@@ -68,9 +71,9 @@ static void wall_quad(cairo_t *cr, const pr_view *v, app_point2 o, app_point2 u,
     for (int k = 0; k < 4; k++) {
         double x = o.x + u.x * ss[k] + n.x * dd[k], y = o.y + u.y * ss[k] + n.y * dd[k];
         if (k == 0)
-            cairo_move_to(cr, px(v, x), py(v, y));
+            cairo_move_to(cr, px(v, x, y), py(v, x, y));
         else
-            cairo_line_to(cr, px(v, x), py(v, y));
+            cairo_line_to(cr, px(v, x, y), py(v, x, y));
     }
     cairo_close_path(cr);
 }
@@ -78,8 +81,10 @@ static void wall_quad(cairo_t *cr, const pr_view *v, app_point2 o, app_point2 u,
 static void wall_line(cairo_t *cr, const pr_view *v, app_point2 o, app_point2 u, app_point2 n,
                       double s0, double d0, double s1, double d1)
 {
-    cairo_move_to(cr, px(v, o.x + u.x * s0 + n.x * d0), py(v, o.y + u.y * s0 + n.y * d0));
-    cairo_line_to(cr, px(v, o.x + u.x * s1 + n.x * d1), py(v, o.y + u.y * s1 + n.y * d1));
+    cairo_move_to(cr, px(v, o.x + u.x * s0 + n.x * d0, o.y + u.y * s0 + n.y * d0),
+                  py(v, o.x + u.x * s0 + n.x * d0, o.y + u.y * s0 + n.y * d0));
+    cairo_line_to(cr, px(v, o.x + u.x * s1 + n.x * d1, o.y + u.y * s1 + n.y * d1),
+                  py(v, o.x + u.x * s1 + n.x * d1, o.y + u.y * s1 + n.y * d1));
 }
 
 static void draw_openings(pr_doc *d, const pr_view *v)
@@ -141,9 +146,9 @@ static void draw_openings(pr_doc *d, const pr_view *v)
             double dd = face + dir * w * cos(a);
             double x = o.x + u.x * s + n.x * dd, y = o.y + u.y * s + n.y * dd;
             if (i == 0)
-                cairo_move_to(cr, px(v, x), py(v, y));
+                cairo_move_to(cr, px(v, x, y), py(v, x, y));
             else
-                cairo_line_to(cr, px(v, x), py(v, y));
+                cairo_line_to(cr, px(v, x, y), py(v, x, y));
         }
         cairo_stroke(cr);
     }
@@ -203,10 +208,12 @@ static void draw_walls(pr_doc *d, const pr_view *v, const app_point2 *outer)
     int n = pl->corner_count;
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
     for (int i = 0; i < n; i++)
-        (i ? cairo_line_to : cairo_move_to)(cr, px(v, outer[i].x), py(v, outer[i].y));
+        (i ? cairo_line_to : cairo_move_to)(cr, px(v, outer[i].x, outer[i].y),
+                                            py(v, outer[i].x, outer[i].y));
     cairo_close_path(cr);
     for (int i = 0; i < n; i++)
-        (i ? cairo_line_to : cairo_move_to)(cr, px(v, pl->corners[i].x), py(v, pl->corners[i].y));
+        (i ? cairo_line_to : cairo_move_to)(cr, px(v, pl->corners[i].x, pl->corners[i].y),
+                                            py(v, pl->corners[i].x, pl->corners[i].y));
     cairo_close_path(cr);
     /* Cut walls: a mid grey with a light hatch, heavy outlines (ISO 128-50 for sections). */
     cairo_set_source_rgb(cr, 0.62, 0.62, 0.62);
@@ -290,7 +297,7 @@ static int nearest_wall(const app_room_plan *pl, const app_point2 *hull, int h, 
  * places it (app_free_areas): the checks' sizes, slid sideways to stay inside the room and
  * clear of furniture, so the drawing shows what the check accepted. Without the catalog's
  * product sizes the fixtures cannot be built and no area is drawn (nor could it be checked). */
-static void draw_clearances(pr_doc *d, const pr_view *v)
+static void draw_clearances(pr_doc *d, const pr_view *v, int labels)
 {
     cairo_t *cr = d->cr;
     app_fixture *fx = NULL;
@@ -319,9 +326,40 @@ static void draw_clearances(pr_doc *d, const pr_view *v)
         const app_free_area *a = &areas[i];
         if (!a->has_area)
             continue;
+        double cx = 0, cy = 0;
+        for (int k = 0; k < 4; k++) {
+            cx += a->corners[k][0] / 4;
+            cy += a->corners[k][1] / 4;
+        }
+        if (labels) {
+            /* Its size inside it, moved across the area when texts are in the way, left out
+             * (the hatch stays, the legend explains it) when the area has no free spot. */
+            char text[64];
+            snprintf(text, sizeof text, "free %.0f x %.0f", a->width_mm, a->depth_mm);
+            pr_set_font(cr, 1.8, 0);
+            cairo_set_source_rgb(cr, 0.2, 0.4, 0.6);
+            double x = px(v, cx, cy), y = py(v, cx, cy);
+            double hw = fabs(px(v, a->corners[0][0], a->corners[0][1]) - x);
+            double hh = fabs(py(v, a->corners[0][0], a->corners[0][1]) - y);
+            static const double moves[][2] = {{0, 0},  {0, -1}, {0, 1},   {-1, 0},  {1, 0},
+                                              {0, -2}, {0, 2},  {-1, -1}, {1, 1},   {-1, 1},
+                                              {1, -1}, {0, -3}, {0, 3},   {-2, -2}, {2, 2}};
+            for (size_t m = 0; m < sizeof moves / sizeof moves[0]; m++) {
+                double tx = x + moves[m][0] * 3.0, ty = y + moves[m][1] * 2.5;
+                if (fabs(tx - x) > hw || fabs(ty - y) > hh)
+                    continue;
+                if (pr_box_is_free(cr, pr_text_measure(cr, tx, ty, 0, 0.5, 0.5, text), 0.4)) {
+                    pr_text(cr, tx, ty, 0.5, 0.5, text);
+                    break;
+                }
+            }
+            continue;
+        }
+        d->clearances_drawn++;
         cairo_new_path(cr);
         for (int k = 0; k < 4; k++)
-            cairo_line_to(cr, px(v, a->corners[k][0]), py(v, a->corners[k][1]));
+            cairo_line_to(cr, px(v, a->corners[k][0], a->corners[k][1]),
+                          py(v, a->corners[k][0], a->corners[k][1]));
         cairo_close_path(cr);
         cairo_set_source_rgb(cr, 0.55, 0.7, 0.85);
         cairo_set_line_width(cr, PR_LINE_THIN);
@@ -330,16 +368,6 @@ static void draw_clearances(pr_doc *d, const pr_view *v)
         cairo_set_dash(cr, dash, 2, 0);
         cairo_stroke(cr);
         cairo_set_dash(cr, NULL, 0, 0);
-        double cx = 0, cy = 0;
-        for (int k = 0; k < 4; k++) {
-            cx += a->corners[k][0] / 4;
-            cy += a->corners[k][1] / 4;
-        }
-        char text[64];
-        snprintf(text, sizeof text, "free %.0f x %.0f", a->width_mm, a->depth_mm);
-        pr_set_font(cr, 1.8, 0);
-        cairo_set_source_rgb(cr, 0.2, 0.4, 0.6);
-        pr_text(cr, px(v, cx), py(v, cy), 0.5, 0.5, text);
     }
     cairo_set_source_rgb(cr, 0, 0, 0);
     free(areas);
@@ -363,8 +391,8 @@ static void draw_floor_tiles(pr_doc *d, const pr_view *v)
                         continue;
                     app_point2 a = l->points[pc->first + k];
                     app_point2 b = l->points[pc->first + (k + 1) % pc->count];
-                    cairo_move_to(cr, px(v, a.x), py(v, a.y));
-                    cairo_line_to(cr, px(v, b.x), py(v, b.y));
+                    cairo_move_to(cr, px(v, a.x, a.y), py(v, a.x, a.y));
+                    cairo_line_to(cr, px(v, b.x, b.y), py(v, b.x, b.y));
                 }
             }
         }
@@ -418,7 +446,8 @@ static int draw_fixtures(pr_doc *d, const pr_view *v)
                 pts[k] = (app_point2){pp->pts[k][0], pp->pts[k][1]};
             int h = pr_convex_hull(pts, pp->count, hull);
             for (int k = 0; k < h; k++)
-                (k ? cairo_line_to : cairo_move_to)(cr, px(v, hull[k].x), py(v, hull[k].y));
+                (k ? cairo_line_to : cairo_move_to)(cr, px(v, hull[k].x, hull[k].y),
+                                                    py(v, hull[k].x, hull[k].y));
             cairo_close_path(cr);
             int overhead = refs[r].bottom > 1800.0;
             if (!overhead) {
@@ -442,21 +471,17 @@ static int draw_fixtures(pr_doc *d, const pr_view *v)
     return drawn;
 }
 
-/* The fixtures' labels (article numbers or names), drawn after the walls and dimensions. */
+/* The fixtures' numbers (the legend names them), drawn after the walls and dimensions. */
 static void draw_fixture_labels(pr_doc *d, const pr_view *v)
 {
     cairo_t *cr = d->cr;
-    /* Labels last, on a white ground, so no outline crosses them. Larger fixtures first; a
-     * label that would overlap one already placed moves up or down (with a leader to its
-     * fixture), and is set at its place anyway when no free spot is near. */
+    /* Numbers last, in white circles, so no outline crosses them. Larger fixtures first, at
+     * their middle; a number whose place is taken moves out on a leader, and one that finds
+     * no free place is only in the legend. */
     int *order = malloc((size_t)(d->fixture_count + 1) * sizeof *order);
-    double(*boxes)[4] = malloc((size_t)(d->fixture_count + 1) * sizeof *boxes);
-    if (!order || !boxes) {
-        free(order);
-        free(boxes);
+    if (!order)
         return;
-    }
-    int nl = 0, nb = 0;
+    int nl = 0;
     for (int i = 0; i < d->fixture_count; i++)
         if (d->fixtures[i].part_count > 0)
             order[nl++] = i;
@@ -471,50 +496,15 @@ static void draw_fixture_labels(pr_doc *d, const pr_view *v)
             order[b] = order[b - 1];
             order[b - 1] = t;
         }
+    pr_box within = {d->area_x, d->area_y, d->area_x + d->area_w, d->area_y + d->area_h};
     for (int r = 0; r < nl; r++) {
-        const pr_fixture *f = &d->fixtures[order[r]];
-        double cx = px(v, (f->min[0] + f->max[0]) / 2), cy = py(v, (f->min[1] + f->max[1]) / 2);
-        double fw = (f->max[0] - f->min[0]) / v->n, fh = (f->max[1] - f->min[1]) / v->n;
-        /* Only label what is large enough to carry it, or what has an article number. */
-        if (!f->has_product && fw * fh < 40.0)
+        pr_fixture *f = &d->fixtures[order[r]];
+        if (!f->number)
             continue;
-        pr_set_font(cr, PR_TEXT_SMALL, f->has_product);
-        double tw = pr_text_width(cr, f->label);
-        static const double shifts[] = {0, 3.0, -3.0, 6.0, -6.0, 9.0, -9.0};
-        double y = cy;
-        for (size_t k = 0; k < sizeof shifts / sizeof shifts[0]; k++) {
-            double yy = cy + shifts[k];
-            int clash = 0;
-            for (int b = 0; b < nb && !clash; b++)
-                clash = cx - tw / 2 - 0.5 < boxes[b][2] && cx + tw / 2 + 0.5 > boxes[b][0] &&
-                        yy - 1.3 < boxes[b][3] && yy + 1.3 > boxes[b][1];
-            if (!clash) {
-                y = yy;
-                break;
-            }
-        }
-        if (y != cy) {
-            cairo_set_source_rgb(cr, 0.35, 0.35, 0.35);
-            cairo_set_line_width(cr, PR_LINE_THIN);
-            cairo_move_to(cr, cx, cy);
-            cairo_line_to(cr, cx, y + (y > cy ? -1.3 : 1.3));
-            cairo_stroke(cr);
-            cairo_arc(cr, cx, cy, 0.35, 0, 2 * PR_PI);
-            cairo_fill(cr);
-        }
-        cairo_set_source_rgba(cr, 1, 1, 1, 0.85);
-        cairo_rectangle(cr, cx - tw / 2 - 0.5, y - 1.3, tw + 1.0, 2.6);
-        cairo_fill(cr);
-        cairo_set_source_rgb(cr, 0, 0, 0);
-        pr_text(cr, cx, y, 0.5, 0.5, f->label);
-        boxes[nb][0] = cx - tw / 2 - 0.5;
-        boxes[nb][1] = y - 1.3;
-        boxes[nb][2] = cx + tw / 2 + 0.5;
-        boxes[nb][3] = y + 1.3;
-        nb++;
+        double fx = (f->min[0] + f->max[0]) / 2, fy = (f->min[1] + f->max[1]) / 2;
+        f->number_placed = pr_place_balloon(cr, px(v, fx, fy), py(v, fx, fy), f->number, within);
     }
     free(order);
-    free(boxes);
 }
 
 /* Distances from each floor fixture to its nearest wall and to the nearest wall across. */
@@ -577,11 +567,48 @@ static void draw_fixture_distances(pr_doc *d, const pr_view *v)
             if (bd < 5.0)
                 continue; /* standing against the wall */
             double fx = o.x + u.x * s + n.x * face, fy = o.y + u.y * s + n.y * face;
-            pr_dimension(d->cr, px(v, fx), py(v, fy), px(v, fx + n.x * bd), py(v, fy + n.y * bd),
-                         0.0, bd);
+            /* A value landing on another text moves the dimension sideways, with extension
+             * lines from the fixture and the wall. */
+            double ax = px(v, fx, fy), ay = py(v, fx, fy);
+            double bx = px(v, fx + n.x * bd, fy + n.y * bd),
+                   by = py(v, fx + n.x * bd, fy + n.y * bd);
+            static const double shifts[] = {0, 3, -3, 6, -6, 9, -9, 12, -12};
+            double shift = 0;
+            for (size_t q = 0; q < sizeof shifts / sizeof shifts[0]; q++) {
+                int mark = pr_text_boxes_mark(d->cr);
+                int ok = pr_dimension_placed(d->cr, ax, ay, bx, by, shifts[q], bd, 0);
+                pr_text_boxes_rollback(d->cr, mark);
+                if (ok) {
+                    shift = shifts[q];
+                    break;
+                }
+            }
+            pr_dimension(d->cr, ax, ay, bx, by, shift, bd);
         }
         free(hull);
     }
+}
+
+/* One wall's chains at `step` mm further out than their places: the openings' and pre-walls'
+ * stops inside, the wall's length outside. Returns 1 when every value found a free place. */
+static int chain_pass(pr_doc *d, const pr_view *v, app_point2 o, app_point2 u, const double *stops,
+                      int ns, double len, double t, double step, int draw)
+{
+    int ok = 1;
+    if (ns > 2)
+        for (int k = 0; k + 1 < ns; k++) {
+            double s0 = stops[k], s1 = stops[k + 1];
+            if (s1 - s0 < 1.0)
+                continue;
+            double x0 = o.x + u.x * s0, y0 = o.y + u.y * s0, x1 = o.x + u.x * s1,
+                   y1 = o.y + u.y * s1;
+            ok &= pr_dimension_placed(d->cr, px(v, x0, y0), py(v, x0, y0), px(v, x1, y1),
+                                      py(v, x1, y1), -(t + 5.0 + step), s1 - s0, draw);
+        }
+    double x1 = o.x + u.x * len, y1 = o.y + u.y * len;
+    ok &= pr_dimension_placed(d->cr, px(v, o.x, o.y), py(v, o.x, o.y), px(v, x1, y1), py(v, x1, y1),
+                              -(t + (ns > 2 ? 10.5 : 5.0) + step), len, draw);
+    return ok;
 }
 
 /* Wall lengths outside the walls, with the openings and pre-walls as an inner chain. */
@@ -614,20 +641,50 @@ static void draw_wall_dimensions(pr_doc *d, const pr_view *v)
                 stops[b] = stops[b - 1];
                 stops[b - 1] = tmp;
             }
-        double ax = px(v, o.x), ay = py(v, o.y);
-        double bx = px(v, o.x + u.x * len), by = py(v, o.y + u.y * len);
         /* The interior lies to the left of a->b on paper as in the world (the page is not
-         * mirrored), so outward is a negative offset. */
-        if (ns > 2) {
-            for (int k = 0; k + 1 < ns; k++) {
-                double s0 = stops[k], s1 = stops[k + 1];
-                if (s1 - s0 < 1.0)
-                    continue;
-                pr_dimension(d->cr, px(v, o.x + u.x * s0), py(v, o.y + u.y * s0),
-                             px(v, o.x + u.x * s1), py(v, o.y + u.y * s1), -(t + 5.0), s1 - s0);
+         * mirrored), so outward is a negative offset. A chain whose values would land on texts
+         * already drawn moves outwards, a step at a time, the overall length with it. */
+        int attempt;
+        for (attempt = 0; attempt < 4; attempt++) {
+            int mark = pr_text_boxes_mark(d->cr);
+            int ok = chain_pass(d, v, o, u, stops, ns, len, t, 4.0 * attempt, 0);
+            pr_text_boxes_rollback(d->cr, mark);
+            if (ok)
+                break;
+        }
+        chain_pass(d, v, o, u, stops, ns, len, t, attempt < 4 ? 4.0 * attempt : 0.0, 1);
+    }
+}
+
+/* "corner N" beyond each outer corner, on the corner's outward diagonal, so the plan reads
+ * against the elevations (which name the corners at each face's ends) and the legend's start. */
+static void draw_corner_names(pr_doc *d, const pr_view *v, const app_point2 *outer)
+{
+    cairo_t *cr = d->cr;
+    const app_room_plan *pl = &d->plan;
+    pr_set_font(cr, PR_TEXT_SMALL, 1);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    for (int i = 0; i < pl->corner_count; i++) {
+        double ix = px(v, pl->corners[i].x, pl->corners[i].y),
+               iy = py(v, pl->corners[i].x, pl->corners[i].y);
+        double ox = px(v, outer[i].x, outer[i].y), oy = py(v, outer[i].x, outer[i].y);
+        double dx = ox - ix, dy = oy - iy, l = hypot(dx, dy);
+        if (l < 1e-9)
+            continue;
+        dx /= l;
+        dy /= l;
+        char text[32];
+        snprintf(text, sizeof text, "corner %d", i + 1);
+        /* The text grows away from the drawing: anchored at its end nearest the corner. */
+        double ax = dx >= 0 ? 0.0 : 1.0, ay = dy >= 0 ? 0.0 : 1.0;
+        static const double dists[] = {1.5, 3.5, 6.0, 9.0, 12.0};
+        for (size_t k = 0; k < sizeof dists / sizeof dists[0]; k++) {
+            double tx = ox + dx * dists[k], ty = oy + dy * dists[k];
+            if (pr_box_is_free(cr, pr_text_measure(cr, tx, ty, 0, ax, ay, text), 0.4)) {
+                pr_text(cr, tx, ty, ax, ay, text);
+                break;
             }
         }
-        pr_dimension(d->cr, ax, ay, bx, by, -(t + (ns > 2 ? 10.5 : 5.0)), len);
     }
 }
 
@@ -641,6 +698,100 @@ static int is_axis_rectangle(const app_room_plan *pl)
             return 0;
     }
     return 1;
+}
+
+/* Room for the dimension chains outside each wall, in paper mm (the value's text included):
+ * one chain (wall lengths) ~8 mm, a second (openings, pre-walls) ~14 mm; a room that is not an
+ * axis-aligned rectangle also has its overall size at ~17 mm on every side. Sides are the world's
+ * bottom, right, top and left. */
+static void side_borders(const app_room_plan *pl, double border[4])
+{
+    if (!is_axis_rectangle(pl)) {
+        for (int k = 0; k < 4; k++)
+            border[k] = 17.0;
+        return;
+    }
+    for (int k = 0; k < 4; k++)
+        border[k] = 8.0;
+    for (int i = 0; i < 4; i++) {
+        app_point2 o, u, n;
+        double len;
+        wall_frame(pl, i, &o, &u, &n, &len);
+        int busy = 0;
+        for (int k = 0; k < pl->opening_count; k++)
+            busy |= pl->openings[k].wall == i;
+        for (int k = 0; k < pl->prewall_count; k++)
+            busy |= pl->prewalls[k].wall == i;
+        /* The outward normal -n names the side. */
+        int side = -n.y < -0.5 ? 0 : (-n.x > 0.5 ? 1 : (-n.y > 0.5 ? 2 : 3));
+        if (busy)
+            border[side] = 14.0;
+    }
+}
+
+typedef struct plan_layout {
+    int scale, turned;
+    int legend_below; /* 0: the legend stands right of the drawing */
+    double w, h;      /* the drawing with its chains, paper mm */
+    double left, top; /* the chains' room on the paper's left and top */
+} plan_layout;
+
+/* The drawing's paper size at 1:n, turned or not; returns 1 when it fits beside (or under) the
+ * legend in the drawing area. */
+static int layout_fits(const pr_doc *d, const double ext[4], const double border[4], int n,
+                       int turned, double lw, double lh, plan_layout *out)
+{
+    double ww = (ext[2] - ext[0]) / n, wh = (ext[3] - ext[1]) / n;
+    plan_layout l = {.scale = n, .turned = turned};
+    if (!turned) { /* paper left/right/top/bottom = world left/right/top/bottom */
+        l.w = ww + border[3] + border[1];
+        l.h = wh + border[2] + border[0];
+        l.left = border[3];
+        l.top = border[2];
+    } else { /* turned a quarter counter-clockwise: world top to the left, right to the top */
+        l.w = wh + border[2] + border[0];
+        l.h = ww + border[3] + border[1];
+        l.left = border[2];
+        l.top = border[1];
+    }
+    const double gap = 5.0;
+    if (l.w + gap + lw <= d->area_w && l.h <= d->area_h && lh <= d->area_h) {
+        *out = l;
+        return 1;
+    }
+    if (l.h + gap + lh <= d->area_h && l.w <= d->area_w && lw <= d->area_w) {
+        l.legend_below = 1;
+        *out = l;
+        return 1;
+    }
+    *out = l;
+    return 0;
+}
+
+/* The largest standard scale at which the plan and its legend fit the sheet, the plan turned a
+ * quarter when that gives a larger scale (a long room on a landscape sheet); the forced scale
+ * when --scale gives one. */
+static plan_layout choose_layout(pr_doc *d, const double ext[4], double lw, double lh, int *fits)
+{
+    double border[4];
+    side_borders(&d->plan, border);
+    plan_layout l;
+    if (d->o->scale > 0) {
+        *fits = layout_fits(d, ext, border, d->o->scale, 0, lw, lh, &l) ||
+                layout_fits(d, ext, border, d->o->scale, 1, lw, lh, &l);
+        if (!*fits)
+            layout_fits(d, ext, border, d->o->scale, 0, lw, lh, &l);
+        return l;
+    }
+    for (int i = 0; i < APP_PRINT_SCALE_COUNT; i++)
+        for (int turned = 0; turned < 2; turned++)
+            if (layout_fits(d, ext, border, app_print_scales[i], turned, lw, lh, &l)) {
+                *fits = 1;
+                return l;
+            }
+    *fits = 0;
+    layout_fits(d, ext, border, app_print_scales[APP_PRINT_SCALE_COUNT - 1], 0, lw, lh, &l);
+    return l;
 }
 
 app_result pr_draw_plan(pr_doc *d)
@@ -660,24 +811,19 @@ app_result pr_draw_plan(pr_doc *d)
         y0 = outer[i].y < y0 ? outer[i].y : y0;
         y1 = outer[i].y > y1 ? outer[i].y : y1;
     }
-    /* Room for the dimension chains outside the walls, in paper mm (each side, the value's
-     * text included): one chain (wall lengths) ~8 mm, a second (openings) ~14 mm, the overall
-     * size of a non-rectangular room ~19 mm on two sides. */
-    double border = (pl->opening_count + pl->prewall_count > 0 ? 14.0 : 8.0);
-    if (!is_axis_rectangle(pl))
-        border = 17.0;
-    double a_w = 0, a_h = 0;
-    {
-        /* The drawing area is known once the frame is drawn; the frame needs the scale. Both
-         * depend only on the paper, so take them from a dry computation. */
-        double pw = d->page_w - 20.0 - 8.0, ph = d->page_h - 20.0 - 16.0 - 8.0;
-        a_w = pw;
-        a_h = ph;
-    }
-    int scale =
-        d->o->scale > 0 ? d->o->scale : app_print_fit_scale(x1 - x0, y1 - y0, border, a_w, a_h);
-    if (d->o->verbose &&
-        ((x1 - x0) / scale + 2 * border > a_w || (y1 - y0) / scale + 2 * border > a_h))
+    /* The legend's size, measured on a scratch context (an SVG page's context is made by
+     * pr_page_begin, after the scale is known). */
+    double lw = 0, lh = 0;
+    cairo_surface_t *scratch = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, NULL);
+    cairo_t *mcr = cairo_create(scratch);
+    pr_legend_size(d, mcr, &lw, &lh);
+    cairo_destroy(mcr);
+    cairo_surface_destroy(scratch);
+    const double ext[4] = {x0, y0, x1, y1};
+    int fits = 0;
+    plan_layout lay = choose_layout(d, ext, lw, lh, &fits);
+    int scale = lay.scale;
+    if (d->o->verbose && !fits)
         fprintf(stderr, "tessera print: the plan does not fit the paper at 1:%d\n", scale);
     if (d->report)
         d->report->plan_scale = scale;
@@ -686,16 +832,32 @@ app_result pr_draw_plan(pr_doc *d)
         free(outer);
         return r;
     }
-    pr_view v = {.n = scale};
-    v.ox = d->area_x + d->area_w / 2 - (x0 + x1) / 2 / scale;
-    v.oy = d->area_y + d->area_h / 2 + (y0 + y1) / 2 / scale;
+    /* The drawing centred in what the legend leaves; the legend at the top right, or under it. */
+    double region_w = lay.legend_below ? d->area_w : d->area_w - lw - 5.0;
+    double region_h = lay.legend_below ? d->area_h - lh - 5.0 : d->area_h;
+    double dl = d->area_x + (region_w - lay.w) / 2 + lay.left;
+    double dt = d->area_y + (region_h - lay.h) / 2 + lay.top;
+    pr_view v = {.n = scale, .turned = lay.turned};
+    if (!lay.turned) {
+        v.ox = dl - x0 / scale;
+        v.oy = dt + y1 / scale;
+    } else {
+        v.ox = dl + y1 / scale;
+        v.oy = dt + x1 / scale;
+    }
+    double legend_x =
+        lay.legend_below ? d->area_x + (d->area_w - lw) / 2 : d->area_x + d->area_w - lw;
+    double legend_y = lay.legend_below ? d->area_y + d->area_h - lh : d->area_y;
     cairo_t *cr = d->cr;
     cairo_save(cr);
     cairo_rectangle(cr, d->area_x - 4, d->area_y - 4, d->area_w + 8, d->area_h + 8);
     cairo_clip(cr);
+    /* The legend's block is kept clear of the plan's labels. */
+    pr_box_reserve(cr, pr_box_to_paper(cr, legend_x - 1.0, legend_y - 1.0, legend_x + lw + 1.0,
+                                       legend_y + lh + 1.0));
     draw_floor_tiles(d, &v);
     if (!d->o->no_clearances)
-        draw_clearances(d, &v);
+        draw_clearances(d, &v, 0);
     int drawn = draw_fixtures(d, &v);
     if (d->report)
         d->report->fixtures = drawn;
@@ -704,8 +866,6 @@ app_result pr_draw_plan(pr_doc *d)
     draw_niches(d, &v);
     draw_openings(d, &v);
     draw_wall_dimensions(d, &v);
-    draw_fixture_distances(d, &v);
-    draw_fixture_labels(d, &v);
     if (!is_axis_rectangle(pl)) {
         double ix0 = 1e300, iy0 = 1e300, ix1 = -1e300, iy1 = -1e300;
         for (int i = 0; i < n; i++) {
@@ -715,17 +875,17 @@ app_result pr_draw_plan(pr_doc *d)
             iy1 = pl->corners[i].y > iy1 ? pl->corners[i].y : iy1;
         }
         /* Overall inside size below and left of everything else. */
-        pr_dimension(cr, px(&v, ix0), py(&v, y0), px(&v, ix1), py(&v, y0), -16.0, ix1 - ix0);
-        pr_dimension(cr, px(&v, x0), py(&v, iy0), px(&v, x0), py(&v, iy1), 16.0, iy1 - iy0);
+        pr_dimension(cr, px(&v, ix0, y0), py(&v, ix0, y0), px(&v, ix1, y0), py(&v, ix1, y0), -16.0,
+                     ix1 - ix0);
+        pr_dimension(cr, px(&v, x0, iy0), py(&v, x0, iy0), px(&v, x0, iy1), py(&v, x0, iy1), 16.0,
+                     iy1 - iy0);
     }
-    /* North-free orientation note and the room's height. */
-    char note[96];
-    snprintf(note, sizeof note, "Room height %.0f mm, walls %.0f mm", pl->height_mm,
-             pl->wall_thickness_mm);
-    pr_set_font(cr, PR_TEXT_SMALL, 0);
-    cairo_set_source_rgb(cr, 0, 0, 0);
-    pr_text(cr, d->area_x, d->area_y + 2.0, 0.0, 1.0, note);
-    pr_scale_bar(cr, d->area_x + d->area_w - 2.0, d->area_y + d->area_h - 1.0, scale);
+    draw_corner_names(d, &v, outer);
+    draw_fixture_distances(d, &v);
+    draw_fixture_labels(d, &v);
+    if (!d->o->no_clearances)
+        draw_clearances(d, &v, 1);
+    pr_legend_draw(d, legend_x, legend_y, scale);
     cairo_restore(cr);
     free(outer);
     return pr_page_end(d);

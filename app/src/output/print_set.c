@@ -126,27 +126,36 @@ static app_result prepare(pr_doc *d, const app_project *p, const app_print_optio
     r = app_quote_make(p, o->company, iso_date(o->date), &d->quote, err, err_size);
     if (r != APP_OK)
         return r;
+    pr_fixtures_number(d);
 
+    if (o->text_boxes_path) {
+        d->text_boxes_out = fopen(o->text_boxes_path, "w");
+        if (!d->text_boxes_out) {
+            snprintf(err, err_size, "%s: cannot write: %s", o->text_boxes_path, strerror(errno));
+            return APP_ERR_IO;
+        }
+    }
     int elevations = pr_elevation_count(d);
     int parts = pr_parts_page_count(d);
     int total = 1 + elevations + o->image_count + parts;
-    d->pages = calloc((size_t)total, sizeof *d->pages);
+    d->pages = calloc((size_t)total + 1, sizeof *d->pages);
     if (!d->pages) {
         snprintf(err, err_size, "print: out of memory");
         return APP_ERR_OUT_OF_MEMORY;
     }
     int n = 0;
-    d->pages[n++] = (pr_page){PR_PAGE_PLAN, 0};
-    for (int i = 0; i < elevations; i++)
-        d->pages[n++] = (pr_page){PR_PAGE_ELEVATION, i};
-    for (int i = 0; i < o->image_count; i++)
-        d->pages[n++] = (pr_page){PR_PAGE_IMAGE, i};
+    d->pages[n++] = (pr_page){PR_PAGE_PLAN, 0, -1};
+    int elevation_pages = pr_elevation_pages(d, d->pages + n);
+    n += elevation_pages;
+    for (int i = 0; i < o->image_count; i += 2)
+        d->pages[n++] = (pr_page){PR_PAGE_IMAGE, i, i + 1 < o->image_count ? i + 1 : -1};
     for (int i = 0; i < parts; i++)
-        d->pages[n++] = (pr_page){PR_PAGE_PARTS, i};
+        d->pages[n++] = (pr_page){PR_PAGE_PARTS, i, -1};
     d->page_count = n;
     if (report) {
         report->pages = n;
-        report->elevation_pages = elevations;
+        report->elevation_pages = elevation_pages;
+        report->elevations = elevations;
     }
     return APP_OK;
 }
@@ -162,6 +171,10 @@ static void release(pr_doc *d)
         app_bom_free(&d->bom);
     cat_db_close(d->db);
     free(d->pages);
+    pr_text_boxes_free(&d->text_boxes);
+    free(d->cut_labels);
+    if (d->text_boxes_out)
+        fclose(d->text_boxes_out);
     if (d->cr)
         cairo_destroy(d->cr);
     if (d->surface)
@@ -179,10 +192,10 @@ static app_result draw_pages(pr_doc *d)
             r = pr_draw_plan(d);
             break;
         case PR_PAGE_ELEVATION:
-            r = pr_draw_elevation(d, pg->index);
+            r = pr_draw_elevation(d, pg->index, pg->second);
             break;
         case PR_PAGE_IMAGE:
-            r = pr_draw_image(d, pg->index);
+            r = pr_draw_image(d, pg->index, pg->second);
             break;
         case PR_PAGE_PARTS:
             r = pr_draw_parts(d, pg->index);

@@ -27,8 +27,9 @@ void app_paper_size_mm(app_paper paper, int landscape, double *width_mm, double 
 /* "A4" / "A3" (any case); returns 1 and sets *out when known. */
 int app_paper_parse(const char *text, app_paper *out);
 
-/* The standard scales a drawing may take, largest first: 1:20, 1:25, 1:50, 1:100, 1:200. */
-#define APP_PRINT_SCALE_COUNT 5
+/* The standard scales a drawing may take, largest first: 1:10, 1:20, 1:25, 1:50, 1:100, 1:200
+ * (ISO 5455's building scales; 1:10 for details such as a pre-wall's unfolded faces). */
+#define APP_PRINT_SCALE_COUNT 6
 extern const int app_print_scales[APP_PRINT_SCALE_COUNT];
 
 /* The largest standard scale (smallest N of 1:N) at which a drawing of extent_w x extent_h
@@ -58,6 +59,9 @@ typedef struct app_print_options {
                             default file when it exists */
     const char *xlsx;    /* app_print_pdf also writes the quotation there; NULL = no */
     int verbose;         /* 1: warnings (a drawing that does not fit its scale) on stderr */
+    /* Debugging and tests: every text's ink box, one line each (page, x0, y0, x1, y1 in paper
+     * mm from the page's top-left corner, the drawing, the text; tab-separated). NULL: none. */
+    const char *text_boxes_path;
 } app_print_options;
 
 #define APP_PRINT_REPORT_MAX_ELEVATIONS 64
@@ -65,9 +69,10 @@ typedef struct app_print_options {
 /* What was printed, for tests and the CLI's summary. */
 typedef struct app_print_report {
     int pages;
-    int plan_scale, elevation_scale; /* the 1:N used */
-    int elevation_pages;
-    int tiles_whole, tiles_cut; /* drawn on the elevations, summed over all walls */
+    int plan_scale, elevation_scale; /* the 1:N used (elevations: the smallest, 1:largest N) */
+    int elevation_pages;             /* pages holding elevations (one or two a page) */
+    int elevations;                  /* elevations drawn: walls, then pre-walls */
+    int tiles_whole, tiles_cut;      /* drawn on the elevations, summed over all walls */
     /* Per elevation (walls 0..n-1, then pre-wall fronts): the tiles of that face's own
      * layouts (a pre-wall's front seen on its wall's sheet is counted on its own sheet). */
     int elevation_whole[APP_PRINT_REPORT_MAX_ELEVATIONS];
