@@ -3,6 +3,8 @@
  * elements it changes, before and after. The project is not changed here. */
 #include "cmd_internal.h"
 
+#include "app/design/room_surfaces.h"
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -228,7 +230,7 @@ static app_result check_niche(const app_project *p, const app_niche *w, char *er
 /* "floor", "ceiling", "wall:I", "prewall:NAME:front|top|left|right" (app/design/room.h). */
 static int surface_exists(const app_project *p, const char *s)
 {
-    if (!strcmp(s, "floor") || !strcmp(s, "ceiling"))
+    if (!strcmp(s, "floor") || !strcmp(s, "ceiling") || app_room_reveal_find(&p->plan, s, NULL))
         return 1;
     if (!strncmp(s, "wall:", 5)) {
         char *end;
@@ -262,7 +264,7 @@ static app_result check_tiling(const app_project *p, const app_tiling *t, char *
     if (!surface_exists(p, t->surface))
         return fail(err, err_size, APP_ERR_NOT_FOUND,
                     "no surface \"%s\" (floor, ceiling, wall:0..%d, prewall:NAME:front|top|left|"
-                    "right)",
+                    "right, reveal:OPENING:FACE, niche:NAME:FACE)",
                     t->surface, p->plan.corner_count - 1);
     if (!t->product.manufacturer[0] || !t->product.article[0])
         return fail(err, err_size, APP_ERR_SCHEMA,

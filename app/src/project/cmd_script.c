@@ -803,12 +803,14 @@ static int do_tile(sctx *c)
             d.align = APP_ALIGN_CENTRED;
         else if (!strcmp(how, "corner"))
             d.align = APP_ALIGN_CORNER;
+        else if (!strcmp(how, "auto"))
+            d.align = APP_ALIGN_AUTO;
         else if (!strcmp(how, "line")) {
             d.align = APP_ALIGN_LINE;
             if (!number(c, 4, &d.origin_mm[0]) || !number(c, 5, &d.origin_mm[1]))
                 return 0;
         } else
-            return fail(c, "tile: start centred, corner or line S U, not \"%s\"", how);
+            return fail(c, "tile: start centred, corner, auto or line S U, not \"%s\"", how);
     } else if (!strcmp(what, "rotate")) {
         d.type = APP_CMD_SET_TILE_ROTATION;
         if (!number(c, 3, &d.rotation_deg))

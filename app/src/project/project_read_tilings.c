@@ -3,6 +3,8 @@
  * Surface names are checked against the plan, which is read first. */
 #include "project_internal.h"
 
+#include "app/design/room_surfaces.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -37,8 +39,15 @@ app_result pj_read_product_ref(pj_ctx *c, const cJSON *obj, const char *key, int
 static app_result check_surface(pj_ctx *c, const char *s)
 {
     const app_room_plan *plan = &c->p->plan;
-    if (!strcmp(s, "floor") || !strcmp(s, "ceiling"))
+    if (!strcmp(s, "floor") || !strcmp(s, "ceiling") || app_room_reveal_find(plan, s, NULL))
         return APP_OK;
+    if (!strncmp(s, "reveal:", 7) || !strncmp(s, "niche:", 6)) {
+        pj_path_key(c, "surface");
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "no face \"%.96s\" (reveal:OPENING:left|right|top|bottom, no bottom for a "
+                       "door; niche:NAME:left|right|top|bottom|back)",
+                       s);
+    }
     if (!strncmp(s, "wall:", 5)) {
         char *end = NULL;
         long i = strtol(s + 5, &end, 10);
@@ -72,8 +81,8 @@ static app_result check_surface(pj_ctx *c, const char *s)
     }
     pj_path_key(c, "surface");
     return pj_fail(c, APP_ERR_SCHEMA,
-                   "unknown surface \"%.96s\" (expected floor, ceiling, wall:I or "
-                   "prewall:NAME:front|top|left|right)",
+                   "unknown surface \"%.96s\" (expected floor, ceiling, wall:I, "
+                   "prewall:NAME:front|top|left|right, reveal:OPENING:FACE or niche:NAME:FACE)",
                    s);
 }
 
@@ -127,7 +136,8 @@ static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, void *out
         (r = pj_get_number(c, item, "to", 0, HEIGHT, &t->to_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "edge_joint", 0, GROUT, &t->edge_joint_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "min_cut", 0, HEIGHT, &t->min_cut_mm)) != APP_OK ||
-        (r = read_borders(c, item, t)) != APP_OK)
+        (r = read_borders(c, item, t)) != APP_OK ||
+        (r = pj_read_product_ref(c, item, "trim", 0, &t->trim)) != APP_OK)
         return r;
     t->pattern = (app_tile_pattern)pattern;
     t->align = (app_tile_align)align;
