@@ -494,6 +494,20 @@ static app_result build_tiling(const app_project *p, const app_command_desc *d, 
     return cmd_add_edit(c, CMD_T_TILING, CMD_OP_REPLACE, d->index, old, &t);
 }
 
+/* The tilings of the faces of an opening's reveals or a niche (KIND:NAME:FACE) go with it, from
+ * the last so the indices stay valid. */
+static app_result remove_face_tilings(cmd_command *c, const app_project *p, const char *kind,
+                                      const char *name)
+{
+    char prefix[96];
+    snprintf(prefix, sizeof prefix, "%s:%.64s:", kind, name);
+    app_result r = APP_OK;
+    for (int k = p->tiling_count - 1; k >= 0 && r == APP_OK; k--)
+        if (!strncmp(p->tilings[k].surface, prefix, strlen(prefix)))
+            r = cmd_add_edit(c, CMD_T_TILING, CMD_OP_REMOVE, k, &p->tilings[k], NULL);
+    return r;
+}
+
 static app_result build_plan(const app_project *p, const app_command_desc *d, cmd_command *c,
                              char *err, size_t err_size)
 {
@@ -508,7 +522,8 @@ static app_result build_plan(const app_project *p, const app_command_desc *d, cm
         return cmd_add_edit(c, CMD_T_OPENING, CMD_OP_INSERT,
                             insert_at(d->index, plan->opening_count), NULL, &d->opening);
     case APP_CMD_REMOVE_OPENING:
-        if ((r = need_index(d->index, plan->opening_count, "opening", err, err_size)) != APP_OK)
+        if ((r = need_index(d->index, plan->opening_count, "opening", err, err_size)) != APP_OK ||
+            (r = remove_face_tilings(c, p, "reveal", plan->openings[d->index].name)) != APP_OK)
             return r;
         snprintf(c->label, sizeof c->label, "remove \"%s\"", plan->openings[d->index].name);
         return cmd_add_edit(c, CMD_T_OPENING, CMD_OP_REMOVE, d->index, &plan->openings[d->index],
@@ -576,7 +591,8 @@ static app_result build_plan(const app_project *p, const app_command_desc *d, cm
         return cmd_add_edit(c, CMD_T_NICHE, CMD_OP_INSERT, insert_at(d->index, plan->niche_count),
                             NULL, &d->niche);
     default: /* APP_CMD_REMOVE_NICHE */
-        if ((r = need_index(d->index, plan->niche_count, "niche", err, err_size)) != APP_OK)
+        if ((r = need_index(d->index, plan->niche_count, "niche", err, err_size)) != APP_OK ||
+            (r = remove_face_tilings(c, p, "niche", plan->niches[d->index].name)) != APP_OK)
             return r;
         snprintf(c->label, sizeof c->label, "remove the niche \"%s\"", plan->niches[d->index].name);
         return cmd_add_edit(c, CMD_T_NICHE, CMD_OP_REMOVE, d->index, &plan->niches[d->index], NULL);
