@@ -815,6 +815,16 @@ static int do_tile(sctx *c)
         d.type = APP_CMD_SET_TILE_ROTATION;
         if (!number(c, 3, &d.rotation_deg))
             return 0;
+    } else if (!strcmp(what, "setout")) {
+        /* No command type of its own: the tiling replaced whole (one undo step). */
+        const char *how = NULL;
+        d.type = APP_CMD_SET_TILING;
+        d.tiling = *cur;
+        if (!word(c, 3, &how))
+            return 0;
+        if (strcmp(how, "room") && strcmp(how, "surface"))
+            return fail(c, "tile: setout room or surface, not \"%s\"", how);
+        d.tiling.setout_room = !strcmp(how, "room");
     } else if (!strcmp(what, "band") || !strcmp(what, "border")) {
         /* No command type of their own: the tiling replaced whole (one undo step). */
         d.type = APP_CMD_SET_TILING;
@@ -822,7 +832,8 @@ static int do_tile(sctx *c)
         if (!(!strcmp(what, "band") ? tile_band(c, &d.tiling) : tile_border(c, &d.tiling)))
             return 0;
     } else {
-        return fail(c, "tile: with, pattern, grout, start, rotate, band or border, not \"%s\"",
+        return fail(c,
+                    "tile: with, pattern, grout, start, setout, rotate, band or border, not \"%s\"",
                     what);
     }
     return all_used(c) && run(c, &d);

@@ -13,6 +13,9 @@ const char *const pj_pattern_names[6] = {"straight",       "half-offset", "third
                                          "vertical-stack", "diagonal",    "herringbone"};
 const char *const pj_align_names[4] = {"centred", "corner", "line", "auto"};
 
+/* "setout": each surface on its own, or with the room's other "room" tilings (room_setout.c) */
+static const char *const setout_names[2] = {"surface", "room"};
+
 static const pj_range HEIGHT = {0.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0};
 static const pj_range GROUT = {0.0, 100.0, 0, 0, 1};
 
@@ -120,7 +123,7 @@ static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, void *out
         return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(item));
     pj_default_tiling(t);
     snprintf(t->name, sizeof t->name, "tiling-%d", index);
-    int pattern = (int)t->pattern, align = (int)t->align;
+    int pattern = (int)t->pattern, align = (int)t->align, setout = 0;
     app_result r;
     if ((r = pj_get_string(c, item, "name", 0, 0, t->name, sizeof t->name)) != APP_OK ||
         (r = pj_get_string(c, item, "surface", 1, 0, t->surface, sizeof t->surface)) != APP_OK ||
@@ -137,8 +140,10 @@ static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, void *out
         (r = pj_get_number(c, item, "edge_joint", 0, GROUT, &t->edge_joint_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "min_cut", 0, HEIGHT, &t->min_cut_mm)) != APP_OK ||
         (r = read_borders(c, item, t)) != APP_OK ||
-        (r = pj_read_product_ref(c, item, "trim", 0, &t->trim)) != APP_OK)
+        (r = pj_read_product_ref(c, item, "trim", 0, &t->trim)) != APP_OK ||
+        (r = pj_get_enum(c, item, "setout", 0, setout_names, 2, &setout)) != APP_OK)
         return r;
+    t->setout_room = setout == 1;
     t->pattern = (app_tile_pattern)pattern;
     t->align = (app_tile_align)align;
     if (t->to_mm != 0 && t->to_mm <= t->from_mm) {

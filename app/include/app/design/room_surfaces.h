@@ -59,6 +59,14 @@ struct cat_db;
 app_result app_room_tile_layouts(const app_project *p, struct cat_db *db, app_tile_layout **out,
                                  int *count, char *err, size_t err_size);
 
+/* The room's set-out (room_setout.c, docs/tiling.md "Set-out of a room"): when tilings of p are
+ * marked "setout": "room", *out is a copy of p's tilings (malloc'ed; free it) in which those
+ * get the shared grid as a fixed start (align line); else *out is NULL and p's own tilings
+ * stand. fixtures cover surfaces as in app_room_surface_region. */
+app_result app_room_setout_tilings(const app_project *p, struct cat_db *db,
+                                   const app_fixture_box *fixtures, int fixture_count,
+                                   app_tiling **out, char *err, size_t err_size);
+
 /* A fixture covers a wall when its box is at most this far in front of the wall's face. */
 #define APP_FIXTURE_WALL_GAP_MM 50.0
 
