@@ -815,6 +815,18 @@ static int do_tile(sctx *c)
         d.type = APP_CMD_SET_TILE_ROTATION;
         if (!number(c, 3, &d.rotation_deg))
             return 0;
+    } else if (!strcmp(what, "trim")) {
+        /* The trim profile along the surface's outside edges (app/design/trims.h), or none. */
+        d.type = APP_CMD_SET_TILING;
+        d.tiling = *cur;
+        const char *none = NULL;
+        if (c->ntok == 4 && !strcmp(c->tok[3], "none") && word(c, 3, &none)) {
+            memset(&d.tiling.trim, 0, sizeof d.tiling.trim);
+        } else {
+            app_product_info info;
+            if (!product_ref(c, 3, c->ntok, &d.tiling.trim) || !lookup(c, &d.tiling.trim, &info))
+                return 0;
+        }
     } else if (!strcmp(what, "setout")) {
         /* No command type of its own: the tiling replaced whole (one undo step). */
         const char *how = NULL;
@@ -833,7 +845,8 @@ static int do_tile(sctx *c)
             return 0;
     } else {
         return fail(c,
-                    "tile: with, pattern, grout, start, setout, rotate, band or border, not \"%s\"",
+                    "tile: with, pattern, grout, start, setout, trim, rotate, band or border, not "
+                    "\"%s\"",
                     what);
     }
     return all_used(c) && run(c, &d);
