@@ -138,6 +138,11 @@ void gen_accessory(gen_ctx *c)
 {
     double w = c->req->width_mm, d = c->req->depth_mm, h = c->req->height_mm;
     int metal = gen_part(c, "body", GEN_MAT_FINISH);
+    if (gen_has(c, "tile trim")) { /* a profile length: the flange under the tile, the edge leg */
+        gen_box(c, metal, -w / 2, 0, 0, w / 2, d, 1.0);
+        gen_box(c, metal, -w / 2, 0, 0, w / 2, 1.5, h);
+        return;
+    }
     if (gen_has(c, "seat")) { /* a WC seat with its lid closed: an egg-shaped slab */
         gen_frame f = gen_frame_at(0, 0, 0);
         gen_ring g[] = {{0, 0, 0, {0, 0, 0, 0}, 0, d / 2},

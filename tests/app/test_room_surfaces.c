@@ -43,8 +43,10 @@ int main(void)
     app_surface_frame *frames = NULL;
     int count = 0;
     CHECK(app_room_surface_list(&p, &frames, &count, err, sizeof err) == APP_OK);
-    CHECK(count == 2 + 6 + 4);
-    if (count == 12) {
+    /* floor, ceiling, 6 walls, 4 pre-wall faces, then the window's 4 reveals, the door's 3 (no
+     * bottom: the floor runs through) and the niche's 5 faces */
+    CHECK(count == 2 + 6 + 4 + 4 + 3 + 5);
+    if (count == 24) {
         CHECK(!strcmp(frames[0].surface, "floor") && !strcmp(frames[1].surface, "ceiling"));
         CHECK(!strcmp(frames[3].surface, "wall:1"));
         CHECK(frames[3].origin_mm[0] == 3000 && frames[3].s_axis[1] == 1 &&
@@ -57,6 +59,37 @@ int main(void)
         app_surface_frame_point(&frames[8], 1000, 300, pt);
         CHECK(fabs(pt[0] - 200) < 1e-9 && fabs(pt[1] - 2000) < 1e-9 && pt[2] == 300);
         CHECK(frames[10].normal[1] == -1); /* left: at the larger s, facing along the wall */
+        CHECK(!strcmp(frames[12].surface, "reveal:window:left"));
+        CHECK(!strcmp(frames[18].surface, "reveal:door:top"));
+        CHECK(!strcmp(frames[19].surface, "niche:shower-niche:left"));
+        CHECK(!strcmp(frames[23].surface, "niche:shower-niche:back"));
+        /* wall 0 runs from (0, 0) along +x, its inward normal +y; the niche (s 2000..2600,
+         * t 1000..1400) is 80 deep, so its back lies at y = -80 */
+        app_surface_frame_point(&frames[23], 2000, 1000, pt);
+        CHECK(pt[0] == 2000 && pt[1] == -80 && pt[2] == 1000 && frames[23].normal[1] == 1);
+        /* its left face at x = 2600 faces -x into the niche; s runs from the wall's face in */
+        app_surface_frame_point(&frames[19], 80, 1400, pt);
+        CHECK(pt[0] == 2600 && pt[1] == -80 && pt[2] == 1400 && frames[19].normal[0] == -1);
+        /* the top (soffit) at 1400 faces down, the bottom (sill) at 1000 up */
+        CHECK(frames[21].normal[2] == -1 && frames[21].origin_mm[2] == 1400);
+        CHECK(frames[22].normal[2] == 1 && frames[22].origin_mm[2] == 1000);
+        /* the window on wall 1 (x = 3000, running +y, normal -x) goes through the 150 mm wall:
+         * its right reveal at y = 500 runs from x = 3150 (the back) to 3000 (the face) */
+        app_surface_frame_point(&frames[13], 0, 900, pt);
+        CHECK(fabs(pt[0] - 3150) < 1e-9 && fabs(pt[1] - 500) < 1e-9 && pt[2] == 900);
+        app_surface_frame_point(&frames[13], 150, 900, pt);
+        CHECK(fabs(pt[0] - 3000) < 1e-9 && frames[13].normal[1] == 1);
+        for (int k = 12; k < 24; k++) {
+            /* right-handed (s x t = normal) except the back, which keeps the wall's axes */
+            const double *a = frames[k].s_axis, *b = frames[k].t_axis, *n = frames[k].normal;
+            double c[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+                           a[0] * b[1] - a[1] * b[0]};
+            double sign = k == 23 ? -1 : 1;
+            CHECK_MSG(fabs(c[0] - sign * n[0]) + fabs(c[1] - sign * n[1]) +
+                              fabs(c[2] - sign * n[2]) <
+                          1e-9,
+                      "%s", frames[k].surface);
+        }
     }
     free(frames);
 
@@ -83,7 +116,32 @@ int main(void)
     AREA_IS(&p, "floor", &hung, 1, 7.56e6 - 1200 * 200);
     AREA_IS(&p, "wall:0", &hung, 1, 3000.0 * 1600 - 600 * 400 - 600 * 550);
 
+    /* Reveals and the niche (areas by hand): the window 800 x 1200 through the 150 mm wall, the
+     * door 800 x 2000 to its leaf at half the wall (75 mm), the niche 600 x 400, 80 deep. */
+    AREA_IS(&p, "reveal:window:left", NULL, 0, 150.0 * 1200);
+    AREA_IS(&p, "reveal:window:right", NULL, 0, 150.0 * 1200);
+    AREA_IS(&p, "reveal:window:top", NULL, 0, 800.0 * 150);
+    AREA_IS(&p, "reveal:window:bottom", NULL, 0, 800.0 * 150);
+    AREA_IS(&p, "reveal:door:left", NULL, 0, 75.0 * 2000);
+    AREA_IS(&p, "reveal:door:top", NULL, 0, 800.0 * 75);
+    AREA_IS(&p, "niche:shower-niche:back", NULL, 0, 600.0 * 400);
+    AREA_IS(&p, "niche:shower-niche:left", NULL, 0, 80.0 * 400);
+    AREA_IS(&p, "niche:shower-niche:bottom", NULL, 0, 600.0 * 80);
+    /* the niche's five faces: 0.24 + 2 x 0.032 + 2 x 0.048 = 0.40 m2 */
+    double niche = 0;
+    const char *faces[5] = {"left", "right", "top", "bottom", "back"};
+    for (int k = 0; k < 5; k++) {
+        char name[64];
+        snprintf(name, sizeof name, "niche:shower-niche:%s", faces[k]);
+        niche += region_area(&p, name, NULL, 0, NULL);
+    }
+    CHECK_NEAR(niche, 400000.0, 1e-6);
+
     app_surface_region r;
+    CHECK(app_room_surface_region(&p, "reveal:door:bottom", NULL, 0, &r, NULL, err, sizeof err) ==
+          APP_ERR_NOT_FOUND);
+    CHECK(app_room_surface_region(&p, "niche:window:back", NULL, 0, &r, NULL, err, sizeof err) ==
+          APP_ERR_NOT_FOUND);
     CHECK(app_room_surface_region(&p, "wall:6", NULL, 0, &r, NULL, err, sizeof err) ==
           APP_ERR_NOT_FOUND);
     CHECK(tu_contains(err, "no surface \"wall:6\""));

@@ -4,6 +4,7 @@
 #include "quantities_panel.h"
 
 #include "app/design/room_surfaces.h"
+#include "app/design/trims.h"
 #include "gui.h"
 
 #include <stdio.h>
@@ -52,7 +53,9 @@ int ui_quantities_refresh(ui_quantities_view *v, const app_project *p, cat_db *d
         r = app_quantities_compute(layouts, n, NULL, &v->q, v->error, sizeof v->error);
     if (r == APP_OK) {
         r = app_bom_build(db, p, &v->q, &v->bom, v->error, sizeof v->error);
-        /* Consumables and labour: the same positions as the quotation. */
+        /* Trims, consumables and labour: the same positions as the quotation. */
+        if (r == APP_OK)
+            r = app_bom_add_project_trims(db, p, &v->bom, v->error, sizeof v->error);
         app_consumables c;
         if (r == APP_OK)
             r = app_consumables_compute(p, db, layouts, n, NULL, &c, v->error, sizeof v->error);

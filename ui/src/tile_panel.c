@@ -17,7 +17,8 @@
 
 static const char *const pattern_names[6] = {"straight",       "half-offset", "third-offset",
                                              "vertical-stack", "diagonal",    "herringbone"};
-static const char *const align_names[3] = {"centred", "corner", "line through a point"};
+static const char *const align_names[4] = {"centred", "corner", "line through a point",
+                                           "auto (set-out)"};
 
 static void load_fields(ui_tiles *t, const app_tiling *g, int index)
 {
@@ -104,7 +105,7 @@ static void tiling_fields(planner *p, ui_tiles *t, int i)
     grout |= ui_gui_slider_commit("blue", &t->grout_rgb[2], 0.0f, 1.0f);
     if (grout)
         planner_tile_grout(p, i, t->grout_mm, t->grout_rgb);
-    if (ui_gui_combo("start", &t->align, align_names, 3))
+    if (ui_gui_combo("start", &t->align, align_names, 4))
         planner_tile_start(p, i, (app_tile_align)t->align, t->start[0], t->start[1]);
     if (t->align == APP_ALIGN_LINE) {
         int moved = ui_gui_input_double_enter("start s", &t->start[0]);

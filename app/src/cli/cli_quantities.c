@@ -12,6 +12,7 @@
 #include "app/output/quote.h"
 #include "cli_commands.h"
 #include "cli_quantities_json.h"
+#include "cli_quantities_trims.h"
 
 #include <errno.h>
 #include <math.h>
@@ -549,6 +550,12 @@ int cli_cmd_quantities(const cli_options *o)
         res = app_quantities_compute(layouts, n, &qo, &q, err, sizeof err);
     if (res == APP_OK)
         res = app_bom_build(db, &p, &q, &bom, err, sizeof err);
+    app_trim_quantity *trims = NULL;
+    int trim_count = 0;
+    if (res == APP_OK)
+        res = app_trim_quantities(&p, &trims, &trim_count, err, sizeof err);
+    if (res == APP_OK)
+        res = app_bom_add_trims(db, trims, trim_count, &bom, err, sizeof err);
     app_consumables cons;
     memset(&cons, 0, sizeof cons);
     if (res == APP_OK)
@@ -586,11 +593,13 @@ int cli_cmd_quantities(const cli_options *o)
             print_tiles(&q, &bom, o->csv_table);
         if (o->offcuts && p.tiling_count > 0)
             print_offcuts(&q, layouts, o->csv_table);
+        cli_print_trims(trims, trim_count, &bom, o->csv_table);
         print_consumables(&cons, o->csv_table);
         print_quote_head(&quote, o->csv_table);
         print_bom(&bom, o->csv_table);
     }
 done:
+    free(trims);
     app_bom_free(&bom);
     app_quantities_free(&q);
     app_tile_layouts_free(layouts, n);

@@ -10,6 +10,7 @@
 #include "app/project/project.h"
 #include "app/design/quantities.h"
 #include "app/design/room_surfaces.h"
+#include "app/design/trims.h"
 #include "app/output/share.h"
 #include "catalog/catalog.h"
 
@@ -99,7 +100,9 @@ static int part_list(const app_project *p, char ***cells, int *rows, char *total
         r = app_quantities_compute(layouts, n, NULL, &q, err, sizeof err);
     if (r == APP_OK)
         r = app_bom_build(db, p, &q, &bom, err, sizeof err);
-    app_consumables cons; /* consumables and labour, as on the quotation */
+    if (r == APP_OK) /* trims, consumables and labour, as on the quotation */
+        r = app_bom_add_project_trims(db, p, &bom, err, sizeof err);
+    app_consumables cons;
     if (r == APP_OK)
         r = app_consumables_compute(p, db, layouts, n, NULL, &cons, err, sizeof err);
     if (r == APP_OK)

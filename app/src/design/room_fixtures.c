@@ -85,8 +85,15 @@ app_result app_room_tile_layouts(const app_project *p, struct cat_db *db, app_ti
     if (r != APP_OK)
         return r;
     app_room_regions regions = {boxes, n};
-    r = app_project_tile_layouts(p, db, app_room_region_provider, &regions, out, count, err,
-                                 err_size);
+    app_tiling *room = NULL;
+    r = app_room_setout_tilings(p, db, boxes, n, &room, err, err_size);
+    app_project set_out = *p; /* shallow: only the tilings differ */
+    if (room)
+        set_out.tilings = room;
+    if (r == APP_OK)
+        r = app_project_tile_layouts(&set_out, db, app_room_region_provider, &regions, out, count,
+                                     err, err_size);
+    free(room);
     free(boxes);
     return r;
 }

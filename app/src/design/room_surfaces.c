@@ -100,7 +100,8 @@ app_result app_room_surface_list(const app_project *p, app_surface_frame **out, 
 {
     plan_view v;
     const app_room_plan *plan = plan_of(p, &v);
-    int n = 2 + plan->corner_count + 4 * plan->prewall_count;
+    int reveals = app_room_reveal_count(plan);
+    int n = 2 + plan->corner_count + 4 * plan->prewall_count + reveals;
     app_surface_frame *f = calloc((size_t)n, sizeof *f);
     *out = NULL;
     *count = 0;
@@ -125,6 +126,16 @@ app_result app_room_surface_list(const app_project *p, app_surface_frame **out, 
     for (int i = 0; i < plan->prewall_count; i++)
         for (int face = 0; face < 4; face++)
             prewall_frame(plan, &plan->prewalls[i], face, &f[k++]);
+    app_room_reveal *rv = reveals > 0 ? calloc((size_t)reveals, sizeof *rv) : NULL;
+    if (reveals > 0 && !rv) {
+        free(f);
+        snprintf(err, err_size, "room_surfaces: out of memory (%d reveals)", reveals);
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    int nr = app_room_reveals(plan, rv, reveals);
+    for (int i = 0; i < nr && i < reveals; i++)
+        f[k++] = rv[i].frame;
+    free(rv);
     *out = f;
     *count = k;
     return APP_OK;
@@ -321,6 +332,11 @@ app_result app_room_surface_region(const app_project *p, const char *surface,
         r = floor_region(plan, surface[0] == 'f', fixtures, fixture_count, region, err, err_size);
     } else if (!strncmp(surface, "wall:", 5)) {
         r = wall_region(plan, atoi(surface + 5), fixtures, fixture_count, region, err, err_size);
+    } else if (!strncmp(surface, "reveal:", 7) || !strncmp(surface, "niche:", 6)) {
+        app_room_reveal rv;
+        r = APP_ERR_NOT_FOUND;
+        if (app_room_reveal_find(plan, surface, &rv))
+            r = app_region_set_outer_rect(region, rv.s0, rv.t0, rv.s1, rv.t1, err, err_size);
     } else {
         /* prewall:NAME:FACE, found above, so the name and face exist */
         const char *colon = strrchr(surface, ':');

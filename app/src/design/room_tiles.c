@@ -199,8 +199,15 @@ void app_room_add_tiles(const app_project *p, const app_fixture_box *covers, int
     app_room_regions regions = {covers, cover_count};
     app_tile_layout *layouts = NULL;
     int count = 0;
-    app_result r = app_project_tile_layouts(p, db, app_room_region_provider, &regions, &layouts,
-                                            &count, err, sizeof err);
+    app_tiling *room = NULL;
+    app_result r = app_room_setout_tilings(p, db, covers, cover_count, &room, err, sizeof err);
+    app_project set_out = *p; /* shallow: the room's set-out as fixed starts */
+    if (room)
+        set_out.tilings = room;
+    if (r == APP_OK)
+        r = app_project_tile_layouts(&set_out, db, app_room_region_provider, &regions, &layouts,
+                                     &count, err, sizeof err);
+    free(room);
     if (r != APP_OK) {
         fprintf(stderr, "tessera: warning: %s: tiles not drawn: %s\n", p->path, err);
         return;

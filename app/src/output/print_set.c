@@ -5,6 +5,7 @@
 #include "print_internal.h"
 
 #include "app/design/room_surfaces.h"
+#include "app/design/trims.h"
 
 #include <cairo-pdf.h>
 #include <errno.h>
@@ -56,8 +57,10 @@ static void prepare_quantities(pr_doc *d)
         warn(d, "bill of materials", err);
         return;
     }
-    /* Consumables and labour (docs/tiling.md "Consumables and labour"): the quotation's
-     * positions after the products. */
+    /* Trim profiles, consumables and labour (docs/tiling.md "Trim profiles", "Consumables and
+     * labour"): the quotation's positions after the products. */
+    if (app_bom_add_project_trims(d->db, d->p, &d->bom, err, sizeof err) != APP_OK)
+        warn(d, "trim profiles", err);
     if (app_consumables_compute(d->p, d->db, d->layouts, d->layout_count, NULL, &d->cons, err,
                                 sizeof err) != APP_OK ||
         app_bom_add_consumables(d->db, &d->cons, NULL, &d->bom, err, sizeof err) != APP_OK)

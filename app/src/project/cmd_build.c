@@ -3,6 +3,8 @@
  * elements it changes, before and after. The project is not changed here. */
 #include "cmd_internal.h"
 
+#include "app/design/room_surfaces.h"
+
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -228,7 +230,7 @@ static app_result check_niche(const app_project *p, const app_niche *w, char *er
 /* "floor", "ceiling", "wall:I", "prewall:NAME:front|top|left|right" (app/design/room.h). */
 static int surface_exists(const app_project *p, const char *s)
 {
-    if (!strcmp(s, "floor") || !strcmp(s, "ceiling"))
+    if (!strcmp(s, "floor") || !strcmp(s, "ceiling") || app_room_reveal_find(&p->plan, s, NULL))
         return 1;
     if (!strncmp(s, "wall:", 5)) {
         char *end;
@@ -262,7 +264,7 @@ static app_result check_tiling(const app_project *p, const app_tiling *t, char *
     if (!surface_exists(p, t->surface))
         return fail(err, err_size, APP_ERR_NOT_FOUND,
                     "no surface \"%s\" (floor, ceiling, wall:0..%d, prewall:NAME:front|top|left|"
-                    "right)",
+                    "right, reveal:OPENING:FACE, niche:NAME:FACE)",
                     t->surface, p->plan.corner_count - 1);
     if (!t->product.manufacturer[0] || !t->product.article[0])
         return fail(err, err_size, APP_ERR_SCHEMA,
@@ -492,6 +494,20 @@ static app_result build_tiling(const app_project *p, const app_command_desc *d, 
     return cmd_add_edit(c, CMD_T_TILING, CMD_OP_REPLACE, d->index, old, &t);
 }
 
+/* The tilings of the faces of an opening's reveals or a niche (KIND:NAME:FACE) go with it, from
+ * the last so the indices stay valid. */
+static app_result remove_face_tilings(cmd_command *c, const app_project *p, const char *kind,
+                                      const char *name)
+{
+    char prefix[96];
+    snprintf(prefix, sizeof prefix, "%s:%.64s:", kind, name);
+    app_result r = APP_OK;
+    for (int k = p->tiling_count - 1; k >= 0 && r == APP_OK; k--)
+        if (!strncmp(p->tilings[k].surface, prefix, strlen(prefix)))
+            r = cmd_add_edit(c, CMD_T_TILING, CMD_OP_REMOVE, k, &p->tilings[k], NULL);
+    return r;
+}
+
 static app_result build_plan(const app_project *p, const app_command_desc *d, cmd_command *c,
                              char *err, size_t err_size)
 {
@@ -506,7 +522,8 @@ static app_result build_plan(const app_project *p, const app_command_desc *d, cm
         return cmd_add_edit(c, CMD_T_OPENING, CMD_OP_INSERT,
                             insert_at(d->index, plan->opening_count), NULL, &d->opening);
     case APP_CMD_REMOVE_OPENING:
-        if ((r = need_index(d->index, plan->opening_count, "opening", err, err_size)) != APP_OK)
+        if ((r = need_index(d->index, plan->opening_count, "opening", err, err_size)) != APP_OK ||
+            (r = remove_face_tilings(c, p, "reveal", plan->openings[d->index].name)) != APP_OK)
             return r;
         snprintf(c->label, sizeof c->label, "remove \"%s\"", plan->openings[d->index].name);
         return cmd_add_edit(c, CMD_T_OPENING, CMD_OP_REMOVE, d->index, &plan->openings[d->index],
@@ -574,7 +591,8 @@ static app_result build_plan(const app_project *p, const app_command_desc *d, cm
         return cmd_add_edit(c, CMD_T_NICHE, CMD_OP_INSERT, insert_at(d->index, plan->niche_count),
                             NULL, &d->niche);
     default: /* APP_CMD_REMOVE_NICHE */
-        if ((r = need_index(d->index, plan->niche_count, "niche", err, err_size)) != APP_OK)
+        if ((r = need_index(d->index, plan->niche_count, "niche", err, err_size)) != APP_OK ||
+            (r = remove_face_tilings(c, p, "niche", plan->niches[d->index].name)) != APP_OK)
             return r;
         snprintf(c->label, sizeof c->label, "remove the niche \"%s\"", plan->niches[d->index].name);
         return cmd_add_edit(c, CMD_T_NICHE, CMD_OP_REMOVE, d->index, &plan->niches[d->index], NULL);

@@ -803,16 +803,40 @@ static int do_tile(sctx *c)
             d.align = APP_ALIGN_CENTRED;
         else if (!strcmp(how, "corner"))
             d.align = APP_ALIGN_CORNER;
+        else if (!strcmp(how, "auto"))
+            d.align = APP_ALIGN_AUTO;
         else if (!strcmp(how, "line")) {
             d.align = APP_ALIGN_LINE;
             if (!number(c, 4, &d.origin_mm[0]) || !number(c, 5, &d.origin_mm[1]))
                 return 0;
         } else
-            return fail(c, "tile: start centred, corner or line S U, not \"%s\"", how);
+            return fail(c, "tile: start centred, corner, auto or line S U, not \"%s\"", how);
     } else if (!strcmp(what, "rotate")) {
         d.type = APP_CMD_SET_TILE_ROTATION;
         if (!number(c, 3, &d.rotation_deg))
             return 0;
+    } else if (!strcmp(what, "trim")) {
+        /* The trim profile along the surface's outside edges (app/design/trims.h), or none. */
+        d.type = APP_CMD_SET_TILING;
+        d.tiling = *cur;
+        const char *none = NULL;
+        if (c->ntok == 4 && !strcmp(c->tok[3], "none") && word(c, 3, &none)) {
+            memset(&d.tiling.trim, 0, sizeof d.tiling.trim);
+        } else {
+            app_product_info info;
+            if (!product_ref(c, 3, c->ntok, &d.tiling.trim) || !lookup(c, &d.tiling.trim, &info))
+                return 0;
+        }
+    } else if (!strcmp(what, "setout")) {
+        /* No command type of its own: the tiling replaced whole (one undo step). */
+        const char *how = NULL;
+        d.type = APP_CMD_SET_TILING;
+        d.tiling = *cur;
+        if (!word(c, 3, &how))
+            return 0;
+        if (strcmp(how, "room") && strcmp(how, "surface"))
+            return fail(c, "tile: setout room or surface, not \"%s\"", how);
+        d.tiling.setout_room = !strcmp(how, "room");
     } else if (!strcmp(what, "band") || !strcmp(what, "border")) {
         /* No command type of their own: the tiling replaced whole (one undo step). */
         d.type = APP_CMD_SET_TILING;
@@ -820,7 +844,9 @@ static int do_tile(sctx *c)
         if (!(!strcmp(what, "band") ? tile_band(c, &d.tiling) : tile_border(c, &d.tiling)))
             return 0;
     } else {
-        return fail(c, "tile: with, pattern, grout, start, rotate, band or border, not \"%s\"",
+        return fail(c,
+                    "tile: with, pattern, grout, start, setout, trim, rotate, band or border, not "
+                    "\"%s\"",
                     what);
     }
     return all_used(c) && run(c, &d);

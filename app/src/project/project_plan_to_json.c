@@ -318,6 +318,10 @@ static void put_tiling(pb *b, cJSON *list, const app_tiling *t)
         num(b, e, "edge_joint", t->edge_joint_mm);
     if (t->min_cut_mm > 0)
         num(b, e, "min_cut", t->min_cut_mm);
+    if (t->trim.article[0])
+        product(b, e, "trim", &t->trim);
+    if (t->setout_room)
+        str(b, e, "setout", "room", 5);
     if (b->r != APP_OK || t->border_count == 0)
         return;
     if (t->border_count < 0 || t->border_count > APP_TILING_MAX_BORDERS) {

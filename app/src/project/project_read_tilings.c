@@ -3,6 +3,8 @@
  * Surface names are checked against the plan, which is read first. */
 #include "project_internal.h"
 
+#include "app/design/room_surfaces.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +12,9 @@
 const char *const pj_pattern_names[6] = {"straight",       "half-offset", "third-offset",
                                          "vertical-stack", "diagonal",    "herringbone"};
 const char *const pj_align_names[4] = {"centred", "corner", "line", "auto"};
+
+/* "setout": each surface on its own, or with the room's other "room" tilings (room_setout.c) */
+static const char *const setout_names[2] = {"surface", "room"};
 
 static const pj_range HEIGHT = {0.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0};
 static const pj_range GROUT = {0.0, 100.0, 0, 0, 1};
@@ -37,8 +42,15 @@ app_result pj_read_product_ref(pj_ctx *c, const cJSON *obj, const char *key, int
 static app_result check_surface(pj_ctx *c, const char *s)
 {
     const app_room_plan *plan = &c->p->plan;
-    if (!strcmp(s, "floor") || !strcmp(s, "ceiling"))
+    if (!strcmp(s, "floor") || !strcmp(s, "ceiling") || app_room_reveal_find(plan, s, NULL))
         return APP_OK;
+    if (!strncmp(s, "reveal:", 7) || !strncmp(s, "niche:", 6)) {
+        pj_path_key(c, "surface");
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "no face \"%.96s\" (reveal:OPENING:left|right|top|bottom, no bottom for a "
+                       "door; niche:NAME:left|right|top|bottom|back)",
+                       s);
+    }
     if (!strncmp(s, "wall:", 5)) {
         char *end = NULL;
         long i = strtol(s + 5, &end, 10);
@@ -72,8 +84,8 @@ static app_result check_surface(pj_ctx *c, const char *s)
     }
     pj_path_key(c, "surface");
     return pj_fail(c, APP_ERR_SCHEMA,
-                   "unknown surface \"%.96s\" (expected floor, ceiling, wall:I or "
-                   "prewall:NAME:front|top|left|right)",
+                   "unknown surface \"%.96s\" (expected floor, ceiling, wall:I, "
+                   "prewall:NAME:front|top|left|right, reveal:OPENING:FACE or niche:NAME:FACE)",
                    s);
 }
 
@@ -111,7 +123,7 @@ static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, void *out
         return pj_fail(c, APP_ERR_SCHEMA, "expected an object, got %s", pj_type_name(item));
     pj_default_tiling(t);
     snprintf(t->name, sizeof t->name, "tiling-%d", index);
-    int pattern = (int)t->pattern, align = (int)t->align;
+    int pattern = (int)t->pattern, align = (int)t->align, setout = 0;
     app_result r;
     if ((r = pj_get_string(c, item, "name", 0, 0, t->name, sizeof t->name)) != APP_OK ||
         (r = pj_get_string(c, item, "surface", 1, 0, t->surface, sizeof t->surface)) != APP_OK ||
@@ -127,8 +139,11 @@ static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, void *out
         (r = pj_get_number(c, item, "to", 0, HEIGHT, &t->to_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "edge_joint", 0, GROUT, &t->edge_joint_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "min_cut", 0, HEIGHT, &t->min_cut_mm)) != APP_OK ||
-        (r = read_borders(c, item, t)) != APP_OK)
+        (r = read_borders(c, item, t)) != APP_OK ||
+        (r = pj_read_product_ref(c, item, "trim", 0, &t->trim)) != APP_OK ||
+        (r = pj_get_enum(c, item, "setout", 0, setout_names, 2, &setout)) != APP_OK)
         return r;
+    t->setout_room = setout == 1;
     t->pattern = (app_tile_pattern)pattern;
     t->align = (app_tile_align)align;
     if (t->to_mm != 0 && t->to_mm <= t->from_mm) {

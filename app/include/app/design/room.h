@@ -150,6 +150,12 @@ typedef struct app_tiling {
                              joint width (a project file's default), 0 = none */
     double min_cut_mm;    /* the smallest cut piece allowed: 0 = a third of the tile's short
                              side, never under 50 mm (docs/tiling.md "Set-out") */
+    int setout_room;      /* 1 ("setout": "room"): the grid is set out with the room's other such
+                             tilings, rows and joints running on round the corners and from
+                             the floor to the walls (docs/tiling.md "Set-out of a room") */
+    app_product_ref trim; /* the profile along the surface's outside edges (a reveal's edge on
+                             the wall, a pre-wall's corners); article "" = none
+                             (app/design/trims.h) */
 } app_tiling;
 
 #ifdef __cplusplus

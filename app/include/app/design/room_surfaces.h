@@ -10,6 +10,9 @@
  * up; normal the wall's inward normal. The outline follows a sloped ceiling.
  *  - "floor": s = plan x, t = plan y, z = 0, normal +Z. "ceiling": the same plan coordinates at
  *    the flat ceiling height, normal -Z (a sloped section is included, projected onto the plan).
+ *  - "reveal:OPENING:left|right|top|bottom" (doors: no bottom) and
+ *    "niche:NAME:left|right|top|bottom|back": the faces inside the wall's thickness
+ *    (app_room_reveal below).
  *  - "prewall:NAME:front": the wall's s and t (so its joints can line up with the wall's),
  *    in the plane depth mm in front of the wall; "top": s along the wall, t from the wall into
  *    the room, at the pre-wall's height; "left" / "right" (seen from the room, facing the
@@ -56,6 +59,14 @@ struct cat_db;
 app_result app_room_tile_layouts(const app_project *p, struct cat_db *db, app_tile_layout **out,
                                  int *count, char *err, size_t err_size);
 
+/* The room's set-out (room_setout.c, docs/tiling.md "Set-out of a room"): when tilings of p are
+ * marked "setout": "room", *out is a copy of p's tilings (malloc'ed; free it) in which those
+ * get the shared grid as a fixed start (align line); else *out is NULL and p's own tilings
+ * stand. fixtures cover surfaces as in app_room_surface_region. */
+app_result app_room_setout_tilings(const app_project *p, struct cat_db *db,
+                                   const app_fixture_box *fixtures, int fixture_count,
+                                   app_tiling **out, char *err, size_t err_size);
+
 /* A fixture covers a wall when its box is at most this far in front of the wall's face. */
 #define APP_FIXTURE_WALL_GAP_MM 50.0
 
@@ -80,6 +91,29 @@ typedef struct app_room_regions {
 } app_room_regions;
 app_result app_room_region_provider(void *user, const app_project *p, const char *surface,
                                     app_surface_region *out, char *err, size_t err_size);
+
+/* A face inside the wall's thickness: a reveal of an opening (left, right, top, bottom; seen
+ * from the room, left is at the larger s of the wall, as for pre-walls) or a niche's face
+ * (the same and its back). Its region is the rectangle s0..s1 x t0..t1 of its frame: the sides
+ * are depth x the opening's height (t the height above the floor, so a band applies), top and
+ * bottom the opening's width x depth, a niche's back the wall's own s and t. The depth: a
+ * window's reveal the wall thickness, a door's half of it (to the leaf), a niche's its depth.
+ * The edge on the wall's face (an outside corner, where a trim profile goes) is the line
+ * s = edge_at (edge_axis 0) or t = edge_at (edge_axis 1); a niche's back has none (-1). */
+typedef struct app_room_reveal {
+    app_surface_frame frame; /* frame.surface is the surface name */
+    const char *face;        /* "left", "right", "top", "bottom", "back" */
+    double s0, s1, t0, t1;
+    int edge_axis;
+    double edge_at;
+} app_room_reveal;
+
+/* The number of reveal and niche faces of plan. */
+int app_room_reveal_count(const app_room_plan *plan);
+/* Fills up to max faces (openings in their order, then niches); returns how many there are. */
+int app_room_reveals(const app_room_plan *plan, app_room_reveal *out, int max);
+/* 1 and *out (may be NULL) when surface names a reveal or niche face of plan, else 0. */
+int app_room_reveal_find(const app_room_plan *plan, const char *surface, app_room_reveal *out);
 
 /* The world point (mm) of surface coordinates (s, t). */
 void app_surface_frame_point(const app_surface_frame *f, double s, double t, double out_mm[3]);
