@@ -15,6 +15,7 @@
  *   and "Fliese" (or, through the synonyms, "floor" and "tile"). */
 #include "db_internal.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -231,4 +232,35 @@ int catdb_compound_split_query(cat_db *db, const char *word, size_t n, catdb_wor
         if (!((forms[0].text[i] >= 'a' && forms[0].text[i] <= 'z')))
             return 0; /* letters only: "600x600" or "nk-5124" is no compound */
     return split_with(in_catalog, db, forms[0].text, forms[0].len, head, tail);
+}
+
+/* ---- keeping the index in step with the lexicon ------------------------------------------- */
+
+cat_db_result catdb_words_check(sqlite3 *sql, const char *path, char *err, size_t err_size)
+{
+    char want[32], have[32];
+    snprintf(want, sizeof want, "%016llx",
+             (unsigned long long)catdb_synonyms_hash(CATDB_HASH64_INIT));
+    cat_db_result r = catdb_meta_get(sql, path, "index_words", have, sizeof have, err, err_size);
+    if (r != CAT_DB_OK || !strcmp(have, want))
+        return r;
+    /* FTS5 removes a row by tokenizing its old text again: a row indexed with another lexicon
+     * would leave its compound parts behind, so the whole index is made again, once. */
+    r = catdb_exec(sql, path, "cannot start rebuilding the search index", "BEGIN IMMEDIATE", err,
+                   err_size);
+    if (r != CAT_DB_OK)
+        return r;
+    r = catdb_meta_get(sql, path, "index_words", have, sizeof have, err, err_size);
+    if (r == CAT_DB_OK && strcmp(have, want) != 0) {
+        r = catdb_exec(sql, path, "cannot rebuild the search index",
+                       "INSERT INTO product_fts (product_fts) VALUES ('rebuild')", err, err_size);
+        if (r == CAT_DB_OK)
+            r = catdb_meta_set(sql, path, "index_words", want, err, err_size);
+    }
+    if (r == CAT_DB_OK)
+        r = catdb_exec(sql, path, "cannot commit the rebuilt search index", "COMMIT", err,
+                       err_size);
+    if (r != CAT_DB_OK)
+        sqlite3_exec(sql, "ROLLBACK", NULL, NULL, NULL);
+    return r;
 }

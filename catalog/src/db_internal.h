@@ -111,6 +111,11 @@ int catdb_compound_split(const catdb_compounds *c, const char *word, size_t n,
 int catdb_compound_split_query(cat_db *db, const char *word, size_t n, catdb_word_form *head,
                                catdb_word_form *tail);
 
+/* The index's compound parts depend on the synonym list (the lexicon): a catalog whose index was
+ * made with another list (meta "index_words", the list's hash) has it rebuilt, in one
+ * transaction. */
+cat_db_result catdb_words_check(sqlite3 *sql, const char *path, char *err, size_t err_size);
+
 /* The shipped synonym list's text (db_synonyms.inc). */
 const char *catdb_synonym_list(void);
 
@@ -124,6 +129,13 @@ uint64_t catdb_synonyms_hash(uint64_t h);
  * fail too when memory runs out). Every public call on a cat_db starts with it: no call leaves a
  * transaction open on purpose, so one that is open is such a leftover. */
 void catdb_recover(cat_db *db);
+
+/* Closes the handle's connection and opens a new one on the same file, keeping the old one if
+ * that fails. Called after a failed write: in WAL mode a transaction that ran out of memory and
+ * was rolled back can leave the connection's cached full-text index structure out of step with
+ * the file (the file itself is intact; catalog.db_faults finds it), and a new connection reads
+ * the file afresh. */
+void catdb_reconnect(cat_db *db);
 
 /* Runs SQL without results; on failure a message naming path and what. */
 cat_db_result catdb_exec(sqlite3 *sql, const char *path, const char *what, const char *text,

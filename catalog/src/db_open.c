@@ -70,7 +70,7 @@ static cat_db_result build_new(const char *path, const catdb_source *src, char *
     return r;
 }
 
-/* A WAL catalog in the old journal mode (made by an older Tessera) is switched over; one that
+/* A catalog in the rollback journal mode (made by an older Tessera) is switched to WAL; one that
  * cannot be (a read-only folder has no room for the -wal file) still works, with readers
  * waiting for writers up to the busy timeout. */
 static void use_wal(sqlite3 *sql)
@@ -136,6 +136,8 @@ cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db 
             r = catdb_sync_shipped(sql, path, &src, err, err_size);
     }
     catdb_source_free(&src);
+    if (r == CAT_DB_OK)
+        r = catdb_words_check(sql, path, err, err_size);
 
     cat_db *db = NULL;
     if (r == CAT_DB_OK) {
