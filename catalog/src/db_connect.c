@@ -54,6 +54,33 @@ cat_db_result catdb_exec(sqlite3 *sql, const char *path, const char *what, const
     return CAT_DB_OK;
 }
 
+/* The handle's cached statements and query tokenizer belong to its connection. */
+static void forget_statements(cat_db *db)
+{
+    sqlite3_stmt **cached[] = {&db->search_fts,    &db->search_fts_filtered, &db->search_exact,
+                               &db->search_all,    &db->search_synonyms,     &db->search_any,
+                               &db->known_synonym, &db->known_word};
+    for (size_t i = 0; i < sizeof cached / sizeof cached[0]; i++) {
+        sqlite3_finalize(*cached[i]);
+        *cached[i] = NULL;
+    }
+    catdb_query_words_free(db->words);
+    db->words = NULL;
+}
+
+void catdb_reconnect(cat_db *db)
+{
+    if (!db || !db->sql)
+        return;
+    sqlite3 *fresh = NULL;
+    if (catdb_connect(db->path, SQLITE_OPEN_READWRITE, &fresh, NULL, 0) != CAT_DB_OK)
+        return;
+    forget_statements(db);
+    sqlite3_exec(db->sql, "ROLLBACK", NULL, NULL, NULL);
+    sqlite3_close(db->sql);
+    db->sql = fresh;
+}
+
 void catdb_recover(cat_db *db)
 {
     if (db && db->sql && !sqlite3_get_autocommit(db->sql))

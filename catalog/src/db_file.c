@@ -109,12 +109,21 @@ void catdb_temp_name(const char *path, char *buf, size_t size)
     snprintf(buf, size, "%s.tmp-%ld-%u", path, (long)getpid(), counter++);
 }
 
+static void sync_folder(const char *path);
+
 cat_db_result catdb_rename_into_place(const char *tmp, const char *path, char *err, size_t err_size)
 {
     if (rename(tmp, path) != 0)
         return catdb_fail(err, err_size, CAT_DB_ERR_IO, "%s: cannot rename %s into place: %s", path,
                           tmp, strerror(errno));
-    /* Sync the folder: without it a crash can lose the rename although the data is on disk. */
+    sync_folder(path);
+    return CAT_DB_OK;
+}
+
+/* Syncs the folder that holds path: without it a crash can lose a rename or a link although the
+ * data is on disk. */
+static void sync_folder(const char *path)
+{
     char dir[4096];
     snprintf(dir, sizeof dir, "%s", path);
     char *slash = strrchr(dir, '/');
@@ -127,7 +136,23 @@ cat_db_result catdb_rename_into_place(const char *tmp, const char *path, char *e
         fsync(fd);
         close(fd);
     }
-    return CAT_DB_OK;
+}
+
+cat_db_result catdb_link_into_place(const char *tmp, const char *path, char *err, size_t err_size)
+{
+    if (link(tmp, path) == 0 || errno == EEXIST) {
+        sync_folder(path);
+        return CAT_DB_OK;
+    }
+    if (errno != EPERM && errno != ENOSYS && errno != EOPNOTSUPP && errno != EXDEV)
+        return catdb_fail(err, err_size, CAT_DB_ERR_IO, "%s: cannot link %s into place: %s", path,
+                          tmp, strerror(errno));
+    /* A file system without hard links: rename, unless a catalog appeared meanwhile (the small
+     * window between the check and the rename is the price of such a file system). */
+    struct stat st;
+    if (stat(path, &st) == 0)
+        return CAT_DB_OK;
+    return catdb_rename_into_place(tmp, path, err, err_size);
 }
 
 void catdb_remove_db_file(const char *path)

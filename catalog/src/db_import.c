@@ -421,8 +421,12 @@ cat_db_result cat_import_csv_buffer(cat_db *db, const char *name, const void *da
         return catdb_fail(err, err_size, CAT_DB_ERR_INVALID, "%s: no catalog or no data",
                           name ? name : "(import)");
     catdb_recover(db);
-    return catdb_import_buffer(db->sql, db->path, CATDB_ORIGIN_IMPORT, name ? name : "(import)",
-                               data ? data : "", size, desc, report, err, err_size);
+    cat_db_result r =
+        catdb_import_buffer(db->sql, db->path, CATDB_ORIGIN_IMPORT, name ? name : "(import)",
+                            data ? data : "", size, desc, report, err, err_size);
+    if (r != CAT_DB_OK)
+        catdb_reconnect(db);
+    return r;
 }
 
 cat_db_result cat_import_csv(cat_db *db, const char *path, const cat_import_desc *desc,
@@ -441,5 +445,7 @@ cat_db_result cat_import_csv(cat_db *db, const char *path, const cat_import_desc
     r = catdb_import_buffer(db->sql, db->path, CATDB_ORIGIN_IMPORT, path, data, size, desc, report,
                             err, err_size);
     free(data);
+    if (r != CAT_DB_OK)
+        catdb_reconnect(db);
     return r;
 }

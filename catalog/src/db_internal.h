@@ -26,8 +26,9 @@ struct cat_db {
     char *path;
     sqlite3_stmt *search_fts, *search_fts_filtered, *search_exact, *search_all; /* reused */
     sqlite3_stmt *search_synonyms, *search_any;                                 /* reused */
-    catdb_query_words *words; /* made on first use */
-    char *match;              /* the FTS5 query, made on first use */
+    sqlite3_stmt *known_synonym, *known_word; /* compound splitting (db_compound.c) */
+    catdb_query_words *words;                 /* made on first use */
+    char *match;                              /* the FTS5 query, made on first use */
 };
 
 /* 'TESS': PRAGMA application_id of a Tessera catalog. */
@@ -62,8 +63,9 @@ int catdb_register_rank(sqlite3 *sql);
 
 /* ---- words (db_words.c) --------------------------------------------------------------------- */
 
-#define CATDB_WORD_BYTES 64 /* longer tokens are indexed as they are, neither folded nor stemmed   \
-                             */
+#define CATDB_WORD_BYTES                                                                           \
+    64 /* longer tokens are indexed as they are, neither folded nor stemmed                        \
+        */
 
 /* Folds a lower-cased, diacritic-free word (unicode61's output): "ß" to "ss", "ae", "oe", "ue"
  * to "a", "o", "u". Returns the folded length; out is terminated. */
@@ -92,6 +94,31 @@ int catdb_query_forms(sqlite3 *sql, catdb_query_words **words, const char *word,
                       catdb_word_form *forms, int max);
 void catdb_query_words_free(catdb_query_words *words);
 
+/* ---- compound words (db_compound.c) ---------------------------------------------------------- */
+
+/* The fixed lexicon of the index side: the synonym list's single words, folded. */
+typedef struct catdb_compounds catdb_compounds;
+catdb_compounds *catdb_compounds_new(void); /* NULL when out of memory */
+void catdb_compounds_free(catdb_compounds *c);
+
+/* Splits a folded word of letters into two words of the lexicon (head with its linking element
+ * resolved, tail without a plural ending). Returns 1 when it is such a compound. */
+int catdb_compound_split(const catdb_compounds *c, const char *word, size_t n,
+                         catdb_word_form *head, catdb_word_form *tail);
+
+/* The same for a query word (any case, unfolded) against the synonym table and the words in the
+ * catalog's index. */
+int catdb_compound_split_query(cat_db *db, const char *word, size_t n, catdb_word_form *head,
+                               catdb_word_form *tail);
+
+/* The index's compound parts depend on the synonym list (the lexicon): a catalog whose index was
+ * made with another list (meta "index_words", the list's hash) has it rebuilt, in one
+ * transaction. */
+cat_db_result catdb_words_check(sqlite3 *sql, const char *path, char *err, size_t err_size);
+
+/* The shipped synonym list's text (db_synonyms.inc). */
+const char *catdb_synonym_list(void);
+
 /* Fills search_synonyms from the shipped synonym list (db_synonyms.c), replacing its rows. */
 cat_db_result catdb_synonyms_load(sqlite3 *sql, const char *path, char *err, size_t err_size);
 
@@ -102,6 +129,13 @@ uint64_t catdb_synonyms_hash(uint64_t h);
  * fail too when memory runs out). Every public call on a cat_db starts with it: no call leaves a
  * transaction open on purpose, so one that is open is such a leftover. */
 void catdb_recover(cat_db *db);
+
+/* Closes the handle's connection and opens a new one on the same file, keeping the old one if
+ * that fails. Called after a failed write: in WAL mode a transaction that ran out of memory and
+ * was rolled back can leave the connection's cached full-text index structure out of step with
+ * the file (the file itself is intact; catalog.db_faults finds it), and a new connection reads
+ * the file afresh. */
+void catdb_reconnect(cat_db *db);
 
 /* Runs SQL without results; on failure a message naming path and what. */
 cat_db_result catdb_exec(sqlite3 *sql, const char *path, const char *what, const char *text,
@@ -159,6 +193,10 @@ void catdb_temp_name(const char *path, char *buf, size_t size);
 /* Renames tmp to path and syncs the folder so that the rename survives a crash. */
 cat_db_result catdb_rename_into_place(const char *tmp, const char *path, char *err,
                                       size_t err_size);
+
+/* Puts tmp at path unless a file is there already (another process built it first: that one
+ * stays, and may be open in WAL mode), and syncs the folder; tmp itself stays. */
+cat_db_result catdb_link_into_place(const char *tmp, const char *path, char *err, size_t err_size);
 
 /* Removes an SQLite file and its journal, ignoring errors. */
 void catdb_remove_db_file(const char *path);

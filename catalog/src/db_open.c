@@ -1,6 +1,15 @@
 /* Opening the catalog: the default place, building a new file from the shipped data into a
- * temporary file renamed into place, migrating an old file, and bringing a file whose shipped
- * data changed up to date (again in a copy renamed over it). */
+ * temporary file linked into place, migrating an old file, and bringing a file whose shipped
+ * data changed up to date (in place, in one transaction).
+ *
+ * The catalog is in WAL mode, so a search in one process goes on while another imports: a
+ * reader keeps the snapshot its transaction started with and never waits for the writer
+ * (https://sqlite.org/wal.html, "Concurrency"). That is also why a finished file is never renamed
+ * over a catalog that exists: the -wal and -shm files beside a path belong to whichever database
+ * was there, and a connection that opens the new file would read the old file's WAL frames as its
+ * own pages, and the old file's last connection would delete the new one's WAL on close
+ * (https://sqlite.org/howtocorrupt.html, section 2.4 "Unlinking or renaming a database file
+ * while in use"). */
 #include "db_internal.h"
 
 #include <errno.h>
@@ -40,6 +49,10 @@ static cat_db_result build_into(const char *tmp, const char *path, const catdb_s
         r = catdb_migrate(sql, path, 0, err, err_size);
     if (r == CAT_DB_OK && src)
         r = catdb_sync_shipped(sql, path, src, err, err_size);
+    /* Written into the file's header, so the first connection on the finished file is in WAL. */
+    if (r == CAT_DB_OK)
+        r = catdb_exec(sql, path, "cannot set up the new catalog", "PRAGMA journal_mode = WAL", err,
+                       err_size);
     if (sqlite3_close(sql) != SQLITE_OK && r == CAT_DB_OK)
         r = catdb_fail(err, err_size, CAT_DB_ERR_IO, "%s: cannot close the new catalog", path);
     return r;
@@ -52,50 +65,17 @@ static cat_db_result build_new(const char *path, const catdb_source *src, char *
     catdb_temp_name(path, tmp, sizeof tmp);
     cat_db_result r = build_into(tmp, path, src, err, err_size);
     if (r == CAT_DB_OK)
-        r = catdb_rename_into_place(tmp, path, err, err_size);
-    if (r != CAT_DB_OK)
-        catdb_remove_db_file(tmp);
+        r = catdb_link_into_place(tmp, path, err, err_size);
+    catdb_remove_db_file(tmp); /* linked, or failed: the temporary name goes either way */
     return r;
 }
 
-/* The open catalog *sql, whose shipped data is stale, copied, brought up to date and renamed
- * over path; *sql is closed and reopened on the new file. */
-static cat_db_result refresh(sqlite3 **sql, const char *path, const catdb_source *src, char *err,
-                             size_t err_size)
+/* A catalog in the rollback journal mode (made by an older Tessera) is switched to WAL; one that
+ * cannot be (a read-only folder has no room for the -wal file) still works, with readers
+ * waiting for writers up to the busy timeout. */
+static void use_wal(sqlite3 *sql)
 {
-    char tmp[4200];
-    catdb_temp_name(path, tmp, sizeof tmp);
-    sqlite3_stmt *st = NULL;
-    int rc = sqlite3_prepare_v2(*sql, "VACUUM INTO ?1", -1, &st, NULL);
-    if (rc == SQLITE_OK) {
-        sqlite3_bind_text(st, 1, tmp, -1, SQLITE_STATIC);
-        rc = sqlite3_step(st);
-    }
-    sqlite3_finalize(st);
-    cat_db_result r = CAT_DB_OK;
-    if (rc != SQLITE_DONE)
-        r = catdb_sql_fail(*sql, path, err, err_size, "cannot copy the catalog to update it");
-    sqlite3 *copy = NULL;
-    if (r == CAT_DB_OK)
-        r = catdb_connect(tmp, SQLITE_OPEN_READWRITE, &copy, err, err_size);
-    if (r == CAT_DB_OK)
-        r = catdb_exec(copy, path, "cannot set up the copy", "PRAGMA journal_mode = MEMORY", err,
-                       err_size);
-    if (r == CAT_DB_OK)
-        r = catdb_sync_shipped(copy, path, src, err, err_size);
-    if (copy && sqlite3_close(copy) != SQLITE_OK && r == CAT_DB_OK)
-        r = catdb_fail(err, err_size, CAT_DB_ERR_IO, "%s: cannot close the updated copy", path);
-    if (r == CAT_DB_OK) {
-        sqlite3_close(*sql);
-        *sql = NULL;
-        r = catdb_rename_into_place(tmp, path, err, err_size);
-        cat_db_result r2 = catdb_connect(path, SQLITE_OPEN_READWRITE, sql, err, err_size);
-        if (r == CAT_DB_OK)
-            r = r2;
-    }
-    if (r != CAT_DB_OK)
-        catdb_remove_db_file(tmp);
-    return r;
+    sqlite3_exec(sql, "PRAGMA journal_mode = WAL", NULL, NULL, NULL);
 }
 
 cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db **out, char *err,
@@ -142,6 +122,8 @@ cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db 
     sqlite3 *sql = NULL;
     if (r == CAT_DB_OK)
         r = catdb_connect(path, SQLITE_OPEN_READWRITE, &sql, err, err_size);
+    if (r == CAT_DB_OK)
+        use_wal(sql);
     int version = 0;
     if (r == CAT_DB_OK)
         r = catdb_schema_check(sql, path, &version, err, err_size);
@@ -151,9 +133,11 @@ cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db 
         char stored[64];
         r = catdb_meta_get(sql, path, "source_hash", stored, sizeof stored, err, err_size);
         if (r == CAT_DB_OK && strcmp(stored, src.hash) != 0)
-            r = refresh(&sql, path, &src, err, err_size);
+            r = catdb_sync_shipped(sql, path, &src, err, err_size);
     }
     catdb_source_free(&src);
+    if (r == CAT_DB_OK)
+        r = catdb_words_check(sql, path, err, err_size);
 
     cat_db *db = NULL;
     if (r == CAT_DB_OK) {
@@ -185,6 +169,8 @@ void cat_db_close(cat_db *db)
     sqlite3_finalize(db->search_all);
     sqlite3_finalize(db->search_synonyms);
     sqlite3_finalize(db->search_any);
+    sqlite3_finalize(db->known_synonym);
+    sqlite3_finalize(db->known_word);
     catdb_query_words_free(db->words);
     free(db->match);
     sqlite3_close(db->sql);

@@ -184,6 +184,94 @@ static const char schema_v4[] =
     ") WITHOUT ROWID;\n"
     "CREATE INDEX search_synonyms_by_group ON search_synonyms (group_id);\n";
 
+/* Version 5: colour words match finishes. A product's variant names ("White matt", "Antracite,
+ * matt") are kept in products.finishes by triggers on variants and indexed as an eighth column,
+ * so "Waschtisch weiss matt" finds a basin whose name says no colour but which comes in white
+ * matt. The index is made again (the tokenizer now also indexes the parts of compound words,
+ * db_words.c), so every trigger that feeds it is made again with the new column (IF EXISTS: a
+ * trigger lost to a hand edit is made again too). */
+#define FTS5_COLUMNS FTS_COLUMNS ", finishes"
+#define FTS5_DELETE(p, series, manufacturer)                                                       \
+    "INSERT INTO product_fts (product_fts, rowid, " FTS5_COLUMNS ") VALUES ('delete', " p         \
+    ".id, " p ".name, " series ", " manufacturer ", " p ".article, " COMPACT(p ".article")         \
+    ", " p ".short_text, " CATEGORY_WORDS(p ".category") ", " p ".finishes);\n"
+#define FTS5_INSERT(where)                                                                         \
+    "INSERT INTO product_fts (rowid, " FTS5_COLUMNS ") SELECT id, " FTS5_COLUMNS                   \
+    " FROM product_search WHERE " where ";\n"
+#define FINISHES_OF(id)                                                                            \
+    "coalesce((SELECT group_concat(name, ' ') FROM (SELECT name FROM variants WHERE product_id = " \
+    id " ORDER BY id)), '')"
+#define SET_FINISHES(id)                                                                           \
+    "UPDATE products SET finishes = " FINISHES_OF(id) " WHERE id = " id ";\n"
+
+static const char schema_v5[] =
+    "DROP TRIGGER IF EXISTS products_fts_insert;\n"
+    "DROP TRIGGER IF EXISTS products_fts_delete;\n"
+    "DROP TRIGGER IF EXISTS products_fts_update;\n"
+    "DROP TRIGGER IF EXISTS manufacturers_fts_rename;\n"
+    "DROP TRIGGER IF EXISTS series_fts_rename;\n"
+    "DROP TABLE product_fts;\n"
+    "DROP VIEW IF EXISTS product_search;\n"
+    "ALTER TABLE products ADD COLUMN finishes TEXT NOT NULL DEFAULT '';\n"
+    "UPDATE products SET finishes = " FINISHES_OF("products.id") ";\n"
+    "CREATE TRIGGER variants_finishes_insert AFTER INSERT ON variants BEGIN\n"
+    SET_FINISHES("new.product_id")
+    "END;\n"
+    "CREATE TRIGGER variants_finishes_delete AFTER DELETE ON variants BEGIN\n"
+    SET_FINISHES("old.product_id")
+    "END;\n"
+    "CREATE TRIGGER variants_finishes_update AFTER UPDATE OF name, product_id ON variants BEGIN\n"
+    SET_FINISHES("old.product_id")
+    SET_FINISHES("new.product_id")
+    "END;\n"
+    "CREATE VIEW product_search AS\n"
+    "    SELECT p.id AS id, p.name AS name, coalesce(s.name, '') AS series,\n"
+    "           m.name AS manufacturer, p.article AS article,\n"
+    "           " COMPACT("p.article") " AS article_compact,\n"
+    "           p.short_text AS short_text, " CATEGORY_WORDS("p.category") " AS category,\n"
+    "           p.finishes AS finishes\n"
+    "    FROM products p JOIN manufacturers m ON m.id = p.manufacturer_id\n"
+    "    LEFT JOIN series s ON s.id = p.series_id;\n"
+    "CREATE VIRTUAL TABLE product_fts USING fts5 (" FTS5_COLUMNS ",\n"
+    "    content = 'product_search', content_rowid = 'id',\n"
+    "    tokenize = 'tessera', prefix = '2 3');\n"
+    "CREATE TRIGGER products_fts_insert AFTER INSERT ON products WHEN " LIVE " BEGIN\n"
+    FTS5_INSERT("id = new.id")
+    "END;\n"
+    "CREATE TRIGGER products_fts_delete AFTER DELETE ON products WHEN " LIVE " BEGIN\n"
+    FTS5_DELETE("old", OLD_SERIES, OLD_MANUFACTURER)
+    "END;\n"
+    "CREATE TRIGGER products_fts_update AFTER UPDATE OF name, series_id, manufacturer_id, "
+    "article, short_text, category, finishes ON products\n"
+    "WHEN (old.name IS NOT new.name OR old.series_id IS NOT new.series_id\n"
+    "  OR old.manufacturer_id IS NOT new.manufacturer_id OR old.article IS NOT new.article\n"
+    "  OR old.short_text IS NOT new.short_text OR old.category IS NOT new.category\n"
+    "  OR old.finishes IS NOT new.finishes)\n"
+    "  AND " LIVE " BEGIN\n"
+    FTS5_DELETE("old", OLD_SERIES, OLD_MANUFACTURER)
+    FTS5_INSERT("id = new.id")
+    "END;\n"
+    "CREATE TRIGGER manufacturers_fts_rename AFTER UPDATE OF name ON manufacturers\n"
+    "WHEN " LIVE " BEGIN\n"
+    "INSERT INTO product_fts (product_fts, rowid, " FTS5_COLUMNS ")\n"
+    "    SELECT 'delete', p.id, p.name, coalesce(s.name, ''), old.name, p.article,\n"
+    "           " COMPACT("p.article") ", p.short_text, " CATEGORY_WORDS("p.category") ",\n"
+    "           p.finishes\n"
+    "    FROM products p LEFT JOIN series s ON s.id = p.series_id\n"
+    "    WHERE p.manufacturer_id = old.id;\n"
+    FTS5_INSERT("id IN (SELECT id FROM products WHERE manufacturer_id = new.id)")
+    "END;\n"
+    "CREATE TRIGGER series_fts_rename AFTER UPDATE OF name ON series WHEN " LIVE " BEGIN\n"
+    "INSERT INTO product_fts (product_fts, rowid, " FTS5_COLUMNS ")\n"
+    "    SELECT 'delete', p.id, p.name, old.name, m.name, p.article,\n"
+    "           " COMPACT("p.article") ", p.short_text, " CATEGORY_WORDS("p.category") ",\n"
+    "           p.finishes\n"
+    "    FROM products p JOIN manufacturers m ON m.id = p.manufacturer_id\n"
+    "    WHERE p.series_id = old.id;\n"
+    FTS5_INSERT("id IN (SELECT id FROM products WHERE series_id = new.id)")
+    "END;\n"
+    "INSERT INTO product_fts (product_fts) VALUES ('rebuild');\n";
+
 /* clang-format on */
 
 typedef cat_db_result (*migration_fn)(sqlite3 *sql, const char *path, char *err, size_t err_size);
@@ -214,8 +302,17 @@ static cat_db_result migrate_3_to_4(sqlite3 *sql, const char *path, char *err, s
     return r;
 }
 
-static const migration_fn migrations[CAT_DB_SCHEMA_VERSION] = {migrate_0_to_1, migrate_1_to_2,
-                                                               migrate_2_to_3, migrate_3_to_4};
+static cat_db_result migrate_4_to_5(sqlite3 *sql, const char *path, char *err, size_t err_size)
+{
+    cat_db_result r = catdb_exec(sql, path, "cannot migrate the schema from version 4 to 5",
+                                 schema_v5, err, err_size);
+    if (r == CAT_DB_OK)
+        r = catdb_synonyms_load(sql, path, err, err_size); /* the list gained groups */
+    return r;
+}
+
+static const migration_fn migrations[CAT_DB_SCHEMA_VERSION] = {
+    migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4, migrate_4_to_5};
 
 static cat_db_result pragma_int(sqlite3 *sql, const char *path, const char *pragma, int *out,
                                 char *err, size_t err_size)

@@ -29,11 +29,11 @@
 /* Room for an FTS5 query: every word with its synonyms, and the filters. */
 #define MATCH_BYTES 32768
 
-/* Column weights: name, series, manufacturer, article, article_compact, short_text, category
- * (db_rank.c). A word in the name counts most; the short text only breaks ties. The ranking
- * runs over row ids alone (the category filter is part of the FTS5 query); products are read
- * for a width or manufacturer filter, and for the few hits at the end. */
-#define RANK "catdb_rank(product_fts, 10.0, 5.0, 3.0, 8.0, 8.0, 1.0, 2.0)"
+/* Column weights: name, series, manufacturer, article, article_compact, short_text, category,
+ * finishes (db_rank.c). A word in the name counts most; the short text only breaks ties. The
+ * ranking runs over row ids alone (the category filter is part of the FTS5 query); products are
+ * read for a width or manufacturer filter, and for the few hits at the end. */
+#define RANK "catdb_rank(product_fts, 10.0, 5.0, 3.0, 8.0, 8.0, 1.0, 2.0, 2.0)"
 #define RANKED_HITS(candidates)                                                                    \
     "SELECT " HIT_COLUMNS ", h.score FROM"                                                         \
     " (SELECT id, score FROM (" candidates ") ORDER BY score, id LIMIT ?5) h"                      \
@@ -149,6 +149,21 @@ static int put_synonyms(cat_db *db, const char *word, size_t n, char *out, size_
     return ok;
 }
 
+/* A compound word's parts (db_compound.c), both required, appended as one more alternative:
+ * "Bodenfliese" also matches "boden" AND ("fliese" OR "tile" ...). The last part, which says
+ * what the thing is, brings its synonyms; the first only says what kind, and through its
+ * synonyms would match far too much ("Duschwanne" is no "shower" AND "bath" mixer). Returns 0
+ * when there is no room. */
+static int put_compound(cat_db *db, const char *word, size_t n, char *out, size_t size, size_t *o)
+{
+    catdb_word_form head, tail;
+    if (!catdb_compound_split_query(db, word, n, &head, &tail))
+        return 1;
+    return put_raw(out, size, o, " OR (") && put_string(out, size, o, head.text, head.len) &&
+           put_raw(out, size, o, " AND (") && put_string(out, size, o, tail.text, tail.len) &&
+           put_synonyms(db, tail.text, tail.len, out, size, o) && put_raw(out, size, o, "))");
+}
+
 /* Builds the FTS5 query: every word of text must match (AND), each as itself or any term of its
  * synonym groups (OR): "(\"tile\" OR \"fliese\" ...) (\"grey\"* OR \"grau\" ...)". The word
  * itself is a prefix when it has two or more bytes (MATCH_TYPING: only the last word, as one
@@ -182,7 +197,8 @@ static int build_match(cat_db *db, const char *text, int mode, int only, const f
             continue;
         if ((terms && !put_raw(out, size, &o, " AND ")) || !put_raw(out, size, &o, "(") ||
             !put_string(out, size, &o, start, n) || (prefix && !put_raw(out, size, &o, "*")) ||
-            !put_synonyms(db, start, n, out, size, &o) || !put_raw(out, size, &o, ")"))
+            !put_synonyms(db, start, n, out, size, &o) ||
+            !put_compound(db, start, n, out, size, &o) || !put_raw(out, size, &o, ")"))
             return 0;
         terms++;
     }
@@ -292,8 +308,35 @@ static char *query_buffer(cat_db *db)
     return db->match;
 }
 
+static cat_db_result search_in_snapshot(cat_db *db, const char *text,
+                                        const cat_search_filter *filter, int limit,
+                                        cat_search_hit *hits, int *count, char *err,
+                                        size_t err_size);
+
+/* One read transaction around the search's statements (the exact match, one or two ranked
+ * queries): in WAL mode they all read the same snapshot, so a search while another process
+ * imports finds the catalog from before the import or after it, never a mix. */
 cat_db_result cat_search(cat_db *db, const char *text, const cat_search_filter *filter, int limit,
                          cat_search_hit *hits, int *count, char *err, size_t err_size)
+{
+    if (count)
+        *count = 0;
+    if (!db || !hits || !count)
+        return catdb_fail(err, err_size, CAT_DB_ERR_INVALID, "cat_search: no catalog or no hits");
+    catdb_recover(db);
+    if (sqlite3_exec(db->sql, "BEGIN", NULL, NULL, NULL) != SQLITE_OK)
+        return catdb_sql_fail(db->sql, db->path, err, err_size, "cannot start the search");
+    cat_db_result r = search_in_snapshot(db, text, filter, limit, hits, count, err, err_size);
+    /* A read transaction has nothing to write: COMMIT only ends it; if it cannot, the next call's
+     * catdb_recover rolls it back. */
+    sqlite3_exec(db->sql, "COMMIT", NULL, NULL, NULL);
+    return r;
+}
+
+static cat_db_result search_in_snapshot(cat_db *db, const char *text,
+                                        const cat_search_filter *filter, int limit,
+                                        cat_search_hit *hits, int *count, char *err,
+                                        size_t err_size)
 {
     if (count)
         *count = 0;

@@ -11,6 +11,11 @@ static const char synonym_list[] =
 #include "db_synonyms.inc"
     ;
 
+const char *catdb_synonym_list(void)
+{
+    return synonym_list;
+}
+
 uint64_t catdb_synonyms_hash(uint64_t h)
 {
     return catdb_hash64(h, synonym_list, sizeof synonym_list);

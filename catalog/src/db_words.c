@@ -111,6 +111,7 @@ typedef struct words_tokenizer {
     fts5_tokenizer base; /* unicode61's methods */
     Fts5Tokenizer *base_instance;
     catdb_stemmers *stemmers;
+    catdb_compounds *compounds;
 } words_tokenizer;
 
 typedef struct words_call {
@@ -138,6 +139,19 @@ static int words_token(void *p, int tflags, const char *token, int n, int start,
     int rc = c->emit(c->ctx, tflags, forms[0].text, (int)forms[0].len, start, end);
     for (int k = 1; k < count && rc == SQLITE_OK; k++)
         rc = c->emit(c->ctx, FTS5_TOKEN_COLOCATED, forms[k].text, (int)forms[k].len, start, end);
+    /* A compound in a document is also indexed under its last part, with that part's stems, at
+     * its own place: "Eckbadewanne" is found by "Badewanne". Only the last part: German compounds
+     * are right-headed, a "Waschtischmischer" is a mixer, not a Waschtisch. Queries are not
+     * split here: a query compound needs its parts ANDed, which db_search.c does. */
+    catdb_word_form parts[2];
+    if (rc == SQLITE_OK && (c->flags & FTS5_TOKENIZE_DOCUMENT) &&
+        catdb_compound_split(c->tok->compounds, forms[0].text, forms[0].len, &parts[0],
+                             &parts[1])) {
+        catdb_word_form tail[3];
+        int tc = catdb_word_forms(c->tok->stemmers, parts[1].text, parts[1].len, tail);
+        for (int k = 0; k < tc && rc == SQLITE_OK; k++)
+            rc = c->emit(c->ctx, FTS5_TOKEN_COLOCATED, tail[k].text, (int)tail[k].len, start, end);
+    }
     return rc;
 }
 
@@ -157,6 +171,7 @@ static void words_delete(Fts5Tokenizer *t)
     if (tok->base_instance)
         tok->base.xDelete(tok->base_instance);
     catdb_stemmers_free(tok->stemmers);
+    catdb_compounds_free(tok->compounds);
     free(tok);
 }
 
@@ -175,6 +190,8 @@ static int words_create(void *api_ptr, const char **args, int n_args, Fts5Tokeni
     if (rc == SQLITE_OK)
         rc = tok->base.xCreate(base_ctx, base_args, 2, &tok->base_instance);
     if (rc == SQLITE_OK && !(tok->stemmers = catdb_stemmers_new()))
+        rc = SQLITE_NOMEM;
+    if (rc == SQLITE_OK && !(tok->compounds = catdb_compounds_new()))
         rc = SQLITE_NOMEM;
     if (rc != SQLITE_OK) {
         words_delete((Fts5Tokenizer *)tok);

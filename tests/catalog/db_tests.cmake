@@ -14,6 +14,25 @@ foreach(name test_db_schema test_db_import test_db_hostile test_db_search test_d
   set_tests_properties(catalog.${test_name} PROPERTIES LABELS unit)
 endforeach()
 
+# Colour words against finishes; German compound words (one executable, one test each).
+add_executable(test_db_search_finishes ${CMAKE_CURRENT_LIST_DIR}/test_db_search_finishes.c)
+target_link_libraries(test_db_search_finishes PRIVATE tessera_catalog)
+target_include_directories(test_db_search_finishes PRIVATE ${CMAKE_SOURCE_DIR}/tests/common
+                                                           ${CMAKE_CURRENT_LIST_DIR})
+target_compile_definitions(test_db_search_finishes PRIVATE TESSERA_CATALOG_SOURCE="${CAT_DB_SOURCE}")
+add_test(NAME catalog.db_search_finishes COMMAND test_db_search_finishes finishes)
+add_test(NAME catalog.db_search_compounds COMMAND test_db_search_finishes compounds)
+set_tests_properties(catalog.db_search_finishes catalog.db_search_compounds
+                     PROPERTIES LABELS "catalog;unit" TIMEOUT 60)
+
+# A search in this process while `tessera catalog import` runs in another; racing builds.
+add_executable(test_db_concurrent ${CMAKE_CURRENT_LIST_DIR}/test_db_concurrent.c)
+target_link_libraries(test_db_concurrent PRIVATE tessera_catalog)
+target_include_directories(test_db_concurrent PRIVATE ${CMAKE_SOURCE_DIR}/tests/common)
+target_compile_definitions(test_db_concurrent PRIVATE TESSERA_CATALOG_SOURCE="${CAT_DB_SOURCE}")
+add_test(NAME catalog.db_concurrent COMMAND test_db_concurrent $<TARGET_FILE:tessera>)
+set_tests_properties(catalog.db_concurrent PROPERTIES LABELS "catalog;unit" TIMEOUT 120)
+
 # The command line, each test on a catalog file of its own (built on first use).
 set(CAT_DB_CLI ${CMAKE_CURRENT_BINARY_DIR}/db-cli)
 file(MAKE_DIRECTORY ${CAT_DB_CLI})

@@ -278,7 +278,9 @@ static void test_refresh(void)
 
     CHECK(open_with_source("sync.sqlite", &db, err, sizeof err) == CAT_DB_OK);
     stat(tmp_path("sync.sqlite"), &b);
-    CHECK(a.st_ino != b.st_ino); /* a new file, renamed into place */
+    /* Updated in place, in one transaction: a file renamed over a catalog in WAL mode would
+     * leave the readers of the old one on a stranded -wal (docs/catalog.md). */
+    CHECK(a.st_ino == b.st_ino);
     cat_db_get_stats(db, &s, NULL, 0);
     CHECK_MSG(s.products == shipped + 1 - 1, "%lld products, was %lld", s.products, shipped);
     CHECK(price_of(db, dropped) == -1);

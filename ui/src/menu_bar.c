@@ -65,7 +65,7 @@ static void file_menu(planner *p)
     if (ui_gui_menu_item("Open...", planner_action_shortcut("open"), -1, 1))
         planner_action_open_dialog(p);
     recent_menu(p);
-    if (ui_gui_menu_item("Save", planner_action_shortcut("save"), -1, 1))
+    if (ui_gui_menu_item("Save", planner_action_shortcut("save"), -1, !p->read_only))
         planner_action_save(p);
     if (ui_gui_menu_item("Save as...", planner_action_shortcut("save-as"), -1, 1))
         planner_action_save_as(p);

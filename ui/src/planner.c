@@ -264,7 +264,7 @@ int ui_run(const ui_options *o)
     p.plan_o.hover_corner = p.plan_o.drag_corner = p.plan_o.drag_object = -1;
     if (open_project(&p, o) || planner_doc_open(&p))
         goto done;
-    p.recovery_offered = planner_recovery_available(&p);
+    p.recovery_offered = !p.read_only && planner_recovery_available(&p);
     p.objects_at_open = p.project.object_count;
     ui_catalog_browser_open(&p.browser);
     int qi = 1;

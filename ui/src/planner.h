@@ -6,6 +6,7 @@
 
 #include "app/design/placement.h"
 #include "app/project/project.h"
+#include "app/project/project_lock.h"
 #include "app/scene/quality.h"
 #include "app/scene/scene_build.h"
 #include "catalog_browser.h"
@@ -88,6 +89,10 @@ typedef struct planner {
      * fixtures could not be built or placed. */
     app_free_area *free_areas;
     int dirty;
+    /* The project's lock file (app/project/project_lock.h): held while this window edits the
+     * file; read_only when another window holds it (saving refused, save as allowed). */
+    app_project_lock lock;
+    int read_only;
     double last_autosave;
     char status[320];
     int objects_at_open;  /* for scripts: objects added since the window opened */
@@ -225,6 +230,14 @@ int planner_undo(planner *p, int redo);
 void planner_doc_changed(planner *p);
 int planner_rebuild_scene(planner *p);
 int planner_save(planner *p, const char *path);
+/* planner_lock.c: takes the lock of the document's file (a shipped project under the source
+ * tree's assets/ is not locked), releasing the one held before; sets read_only and says so in the
+ * status when another window has the file. */
+void planner_lock_document(planner *p);
+/* Takes the lock of path for a save as (the old one is kept until the save succeeds): 0 ok, 1
+ * another window has that file (the status says so). */
+int planner_lock_for_save_as(planner *p, const char *path, app_project_lock *out);
+void planner_unlock_document(planner *p);
 void planner_autosave_tick(planner *p, double now);
 int planner_recovery_available(const planner *p);
 int planner_recover(planner *p, int accept);

@@ -102,6 +102,7 @@ int planner_doc_open(planner *p)
     }
     refresh_findings(p);
     p->quantities.stale = 1;
+    planner_lock_document(p);
     /* A project the user opened (not the shipped demo) is a recent file. */
     if (p->project.path[0] && strncmp(p->project.path, TESSERA_SOURCE_DIR "/assets/",
                                       strlen(TESSERA_SOURCE_DIR "/assets/")))
@@ -127,6 +128,7 @@ void planner_doc_close(planner *p)
     p->free_areas = NULL;
     app_findings_free(&p->findings);
     app_placement_lazy_close(&p->catalog);
+    planner_unlock_document(p);
 }
 
 int planner_edit(planner *p, const char *line)
@@ -185,12 +187,25 @@ int planner_save(planner *p, const char *path)
         planner_status(p, "save: the project has no file yet (save as)");
         return 1;
     }
+    int same_file = !strcmp(target, p->project.path);
+    if (same_file && p->read_only) {
+        planner_status(p, "save: %s is open in another window; use Save As", target);
+        return 1;
+    }
+    app_project_lock new_lock = {0}; /* a save as owns its new file before writing it */
+    if (!same_file && planner_lock_for_save_as(p, target, &new_lock))
+        return 1;
     char old_autosave[1100]; /* saved as another file: the old name's autosave goes too */
-    if (autosave_path(p, old_autosave, sizeof old_autosave))
-        old_autosave[0] = 0;
+    if (autosave_path(p, old_autosave, sizeof old_autosave) || p->read_only)
+        old_autosave[0] = 0; /* a read-only window's autosave name is the owner's */
     if (app_project_write(target, &p->project, err, sizeof err) != APP_OK) {
+        app_project_lock_release(&new_lock);
         planner_status(p, "%s", err);
         return 1;
+    }
+    if (!same_file) {
+        planner_unlock_document(p);
+        p->lock = new_lock;
     }
     if (target != p->project.path) {
         snprintf(p->project.path, sizeof p->project.path, "%s", target);
@@ -211,7 +226,8 @@ int planner_save(planner *p, const char *path)
 
 void planner_autosave_tick(planner *p, double now)
 {
-    if (!p->dirty || now - p->last_autosave < AUTOSAVE_S)
+    /* A read-only window's autosave would take the owner's autosave file. */
+    if (!p->dirty || p->read_only || now - p->last_autosave < AUTOSAVE_S)
         return;
     p->last_autosave = now;
     char a[1100], err[1024];
@@ -313,6 +329,9 @@ int planner_file_open(planner *p, const char *path)
     p->recovery_offered = planner_recovery_available(p);
     planner_status(p, "opened %s%s", path,
                    p->recovery_offered ? " (it has newer autosaved changes)" : "");
+    planner_lock_document(p); /* after the message: a read-only one replaces it */
+    if (p->read_only)
+        p->recovery_offered = 0; /* the autosave is the other window's */
     return 0;
 }
 
@@ -331,6 +350,7 @@ int planner_file_new(planner *p)
     next.path[0] = 0; /* untitled: "save as" gives it a file */
     snprintf(next.name, sizeof next.name, "New bathroom");
     adopt(p, &next);
+    planner_unlock_document(p);
     p->file_path[0] = 0;
     planner_status(p, "new project (an empty room; save as to keep it)");
     return 0;

@@ -86,6 +86,13 @@ int planner_files_script(planner *p, const ui_action *a)
                                p->recovery_offered ? "showing" : "not showing");
         return 0;
     }
+    if (!strcmp(verb, "expect-read-only")) {
+        if (p->read_only != !strcmp(arg, "yes"))
+            return script_fail(a, "the project is %s", p->read_only ? "read-only" : "writable");
+        return 0;
+    }
+    if (!strcmp(verb, "expect-save-refused"))
+        return planner_save(p, NULL) == 0 ? script_fail(a, "the save %s", "went through") : 0;
     if (!strcmp(verb, "recover")) {
         int rc = planner_recover(p, !strcmp(arg, "yes"));
         p->recovery_offered = 0;

@@ -78,6 +78,8 @@ static const struct {
     {"job-cancel", UI_ACT_FILES, 0, 4},
     {"autosave-now", UI_ACT_FILES, 0, 4},
     {"expect-recovery", UI_ACT_FILES, 0, 3},
+    {"expect-read-only", UI_ACT_FILES, 0, 3},
+    {"expect-save-refused", UI_ACT_FILES, 0, 4},
     {"recover", UI_ACT_FILES, 0, 3},
     {"expect-recent", UI_ACT_FILES, 0, 3},
     {"open-recent", UI_ACT_FILES, 0, 3},
@@ -136,8 +138,9 @@ static int parse_line(char *line, ui_action *a, char *why, size_t why_size)
             return 0;
         }
         snprintf(a->text, sizeof a->text, "%s%s%s", verb, t ? " " : "", t ? t : "");
-        if ((!strcmp(verb, "expect-recovery") || !strcmp(verb, "recover")) && strcmp(t, "yes") &&
-            strcmp(t, "no")) {
+        if ((!strcmp(verb, "expect-recovery") || !strcmp(verb, "recover") ||
+             !strcmp(verb, "expect-read-only")) &&
+            strcmp(t, "yes") && strcmp(t, "no")) {
             snprintf(why, why_size, "%s is yes or no, not \"%s\"", verb, t);
             return 0;
         }

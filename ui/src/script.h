@@ -77,6 +77,8 @@
  *   autosave-now           autosave now (the window does every 30 s while there are changes)
  *   expect-recovery yes|no fail unless the recovery offer is (not) showing
  *   recover yes|no         answer the recovery offer
+ *   expect-read-only yes|no fail unless another window has the project (save refused)
+ *   expect-save-refused    save over the project; fail unless the save is refused
  *   expect-recent FILE     fail unless FILE is the newest of the recent files
  *   open-recent N          open the N-th recent file (from 1)
  *   dialog open|save-as|print-pdf|export-glb  the native file dialog; the script waits until

@@ -105,10 +105,13 @@ void planner_status_bar(planner *p, double now)
                  ms > 0 ? 1000.0f / ms : 0.0f);
         if (r->w < 1100) /* a narrow window keeps the hint and the speed only */
             snprintf(right, sizeof right, "%.0f fps", ms > 0 ? 1000.0f / ms : 0.0f);
+        /* Said on every frame: a read-only window must not look like one that saves. */
+        const char *ro = p->read_only ? "READ-ONLY (open in another window)  |  " : "";
         if (now < p->mode_message_until)
-            snprintf(left, sizeof left, "[%s] %s", mode_name(current_mode(p)), p->mode_message);
+            snprintf(left, sizeof left, "%s[%s] %s", ro, mode_name(current_mode(p)),
+                     p->mode_message);
         else
-            snprintf(left, sizeof left, "[%s] %s%s%s", mode_name(current_mode(p)),
+            snprintf(left, sizeof left, "%s[%s] %s%s%s", ro, mode_name(current_mode(p)),
                      planner_tool_hint(p), p->status[0] ? "  |  " : "", p->status);
         float x = r->w - ui_gui_text_width(right) - 8.0f;
         /* The left part ends before the right one starts: cut, with an ellipsis. */

@@ -22,7 +22,7 @@ extern "C" {
 
 /* The schema version this build writes (PRAGMA user_version). Older files are migrated on
  * open, one step at a time; newer ones are refused with CAT_DB_ERR_VERSION. */
-#define CAT_DB_SCHEMA_VERSION 4
+#define CAT_DB_SCHEMA_VERSION 5
 
 typedef enum cat_db_result {
     CAT_DB_OK = 0,
