@@ -12,7 +12,9 @@ const char *const pj_opening_type_names[2] = {"door", "window"};
 const char *const pj_swing_names[5] = {"in-left", "in-right", "out-left", "out-right", "sliding"};
 
 static const pj_range COORD = {-APP_PROJECT_MAX_ROOM_MM, APP_PROJECT_MAX_ROOM_MM, 0, 0, 1};
-static const pj_range LENGTH = {0.0, APP_PROJECT_MAX_ROOM_MM, 1, 0, 0};   /* (0, 1e7] */
+/* Sizes of walls, openings, pre-walls and niches: at least a millimetre, the trade's unit; a
+ * thinner one is a typing mistake and leaves the tile layout a hole without area. */
+static const pj_range LENGTH = {1.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0};   /* [1, 1e7] */
 static const pj_range DISTANCE = {0.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0}; /* [0, 1e7] */
 
 app_result pj_get_enum(pj_ctx *c, const cJSON *obj, const char *key, int required,
