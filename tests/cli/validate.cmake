@@ -15,7 +15,7 @@ set(hostile_cases
     "object_scale|$.objects[0].scale[0]: must be in [-1000, 1000]"
     "utf8_object_name|$.objects[0].name: not valid UTF-8 text"
     "utf8_material_name|$.materials: the name of member 3 is not valid UTF-8 text"
-    "render_size_pixels|$.render.size: 16384x16384 is 268435456 pixels")
+    "render_size_pixels|$.render.size: 16384x16384: 268435456 pixels")
 foreach(case IN LISTS hostile_cases)
   string(FIND "${case}" "|" bar)
   string(SUBSTRING "${case}" 0 ${bar} name)

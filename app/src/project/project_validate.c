@@ -62,7 +62,7 @@ static app_result check_render_size(pj_ctx *c, const app_project *p)
         return APP_OK;
     size_t mark = pj_path_key(c, "render");
     pj_path_key(c, "size");
-    app_result r = pj_fail(c, APP_ERR_SCHEMA, "%s", why);
+    app_result r = pj_fail(c, APP_ERR_SCHEMA, "%dx%d: %s", p->render.width, p->render.height, why);
     pj_path_restore(c, mark);
     return r;
 }

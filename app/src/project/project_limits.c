@@ -1,4 +1,5 @@
-/* The size limits of every job (app/project/job_limits.h, docs/limits.md). */
+/* The size limits of every job (app/project/job_limits.h, docs/limits.md); named project_*
+ * so that the project tests, which compile app/src/project/project_*.c, have it too. */
 #include "app/project/job_limits.h"
 
 #include "render/image_io.h"
@@ -90,13 +91,13 @@ int app_image_size_fits(long width, long height, char *err, size_t err_size)
     const app_limit *side = &table[APP_LIMIT_IMAGE_SIDE], *pixels = &table[APP_LIMIT_IMAGE_PIXELS];
     if (width < 1 || height < 1 || width > side->value || height > side->value) {
         if (err && err_size)
-            snprintf(err, err_size, "%ldx%ld: each side must be 1 to %.0f pixels (%s)", width,
-                     height, side->value, side->why);
+            snprintf(err, err_size, "each side must be 1 to %.0f pixels (%s)", side->value,
+                     side->why);
         return 0;
     }
     if ((double)width * (double)height > pixels->value) {
         if (err && err_size)
-            snprintf(err, err_size, "%ldx%ld is %.0f pixels; the limit is %.0f (%s)", width, height,
+            snprintf(err, err_size, "%.0f pixels; the limit is %.0f (%s)",
                      (double)width * (double)height, pixels->value, pixels->why);
         return 0;
     }
