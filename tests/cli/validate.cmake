@@ -36,3 +36,29 @@ foreach(case IN LISTS hostile_cases)
                      LABELS cli ENV TESSERA_GL=osmesa TIMEOUT 60)
   endforeach()
 endforeach()
+
+# The limits table (docs/limits.md): each job outside it is refused before the scene is loaded,
+# with the limit in the message. Before, `render --size 16384x16384` rendered for 60 s in
+# 2.5 GB and failed at the image writer, and `panorama` had no cap at all.
+set(MINIMAL ${CMAKE_SOURCE_DIR}/tests/data/projects/minimal.json)
+tessera_add_test(NAME cli.limits.render_pixels
+                 COMMAND tessera render ${MINIMAL} --size 16384x16384 -o ${OUT}/limits-big.png
+                 EXPECT_RC 2 EXPECT_STDERR "a 16384x16384 image: 268435456 pixels" "134217728"
+                 LABELS cli ENV TESSERA_GL=osmesa TIMEOUT 30)
+tessera_add_test(NAME cli.limits.panorama_pixels
+                 COMMAND tessera panorama ${MINIMAL} --size 40000x20000 -o ${OUT}/limits-pano.jpg
+                 EXPECT_RC 2 EXPECT_STDERR "--size 40000x20000: a panorama of 800000000 pixels"
+                 LABELS cli ENV TESSERA_GL=osmesa TIMEOUT 30)
+tessera_add_test(NAME cli.limits.video_frames
+                 COMMAND tessera video ${MINIMAL} --seconds 3600 --fps 240 -o ${OUT}/limits-v.mp4
+                 EXPECT_RC 2 EXPECT_STDERR "864000 frames" "the limit is 90000"
+                 LABELS cli ENV TESSERA_GL=osmesa TIMEOUT 30)
+tessera_add_test(NAME cli.limits.reference_samples
+                 COMMAND tessera reference ${MINIMAL} --size 64x48 --samples 100000
+                         -o ${OUT}/limits-ref.exr
+                 EXPECT_RC 2 EXPECT_STDERR "100000 samples a pixel" "the limit is 65536"
+                 LABELS cli TIMEOUT 30)
+tessera_add_test(NAME cli.limits.memory
+                 COMMAND tessera render ${MINIMAL} --size 4096x4096 -o ${OUT}/limits-mem.png
+                 EXPECT_RC 2 EXPECT_STDERR "needs about 640 MB of memory, more than the 300 MB"
+                 LABELS cli ENV TESSERA_GL=osmesa TESSERA_MEMORY_LIMIT_MB=300 TIMEOUT 30)
