@@ -13,6 +13,7 @@
 #   KIND export-glb: export-glb -o DIR/room.glb over a good room.glb
 #   KIND quantities-csv: quantities --csv > DIR/q.csv (standard output: no file to keep, the
 #                    exit code and the message are the test)
+#   KIND bench-csv:  bench --csv DIR/bench.csv over a good bench.csv
 #   KIND share:      share -o DIR/share over a good share folder, the limit between the
 #                    panorama and its copy in panorama.js: every file is the old one or a
 #                    complete new one no larger than the limit
@@ -67,6 +68,13 @@ export-glb)
 quantities-csv)
     out=
     "$limit" 16 "$tessera" quantities "$project" --csv > "$dir/q.csv"
+    rc=$?
+    ;;
+bench-csv)
+    out=$dir/bench.csv
+    "$tessera" bench "$project" --frames 3 --warmup 1 --size 64x48 --csv "$out" >/dev/null 2>&1 || fail "the good bench failed"
+    cp "$out" "$dir/good" || fail "cannot copy"
+    "$limit" 100 "$tessera" bench "$project" --frames 3 --warmup 1 --size 64x48 --csv "$out"
     rc=$?
     ;;
 share)

@@ -15,7 +15,7 @@ set(hostile_cases
     "object_scale|$.objects[0].scale[0]: must be in [-1000, 1000]"
     "utf8_object_name|$.objects[0].name: not valid UTF-8 text"
     "utf8_material_name|$.materials: the name of member 3 is not valid UTF-8 text"
-    "render_size_pixels|$.render.size: 16384x16384: 268435456 pixels")
+    "render_size_pixels|$.render.size: 16384x16384: too large: 268435456 pixels")
 foreach(case IN LISTS hostile_cases)
   string(FIND "${case}" "|" bar)
   string(SUBSTRING "${case}" 0 ${bar} name)
@@ -43,22 +43,22 @@ endforeach()
 set(MINIMAL ${CMAKE_SOURCE_DIR}/tests/data/projects/minimal.json)
 tessera_add_test(NAME cli.limits.render_pixels
                  COMMAND tessera render ${MINIMAL} --size 16384x16384 -o ${OUT}/limits-big.png
-                 EXPECT_RC 2 EXPECT_STDERR "a 16384x16384 image: 268435456 pixels" "134217728"
+                 EXPECT_RC 2 EXPECT_STDERR "a 16384x16384 image: too large: 268435456 pixels" "134217728"
                  LABELS cli ENV TESSERA_GL=osmesa TIMEOUT 30)
 tessera_add_test(NAME cli.limits.panorama_pixels
                  COMMAND tessera panorama ${MINIMAL} --size 40000x20000 -o ${OUT}/limits-pano.jpg
-                 EXPECT_RC 2 EXPECT_STDERR "--size 40000x20000: a panorama of 800000000 pixels"
+                 EXPECT_RC 2 EXPECT_STDERR "--size 40000x20000: too large: a panorama of 800000000 pixels"
                  LABELS cli ENV TESSERA_GL=osmesa TIMEOUT 30)
 tessera_add_test(NAME cli.limits.video_frames
                  COMMAND tessera video ${MINIMAL} --seconds 3600 --fps 240 -o ${OUT}/limits-v.mp4
-                 EXPECT_RC 2 EXPECT_STDERR "864000 frames" "the limit is 90000"
+                 EXPECT_RC 2 EXPECT_STDERR "too long: 864000 frames" "the limit is 90000"
                  LABELS cli ENV TESSERA_GL=osmesa TIMEOUT 30)
 tessera_add_test(NAME cli.limits.reference_samples
                  COMMAND tessera reference ${MINIMAL} --size 64x48 --samples 100000
                          -o ${OUT}/limits-ref.exr
-                 EXPECT_RC 2 EXPECT_STDERR "100000 samples a pixel" "the limit is 65536"
+                 EXPECT_RC 2 EXPECT_STDERR "too many samples: 100000 a pixel" "the limit is 65536"
                  LABELS cli TIMEOUT 30)
 tessera_add_test(NAME cli.limits.memory
                  COMMAND tessera render ${MINIMAL} --size 4096x4096 -o ${OUT}/limits-mem.png
-                 EXPECT_RC 2 EXPECT_STDERR "needs about 640 MB of memory, more than the 300 MB"
+                 EXPECT_RC 2 EXPECT_STDERR "too large: needs about 640 MB of memory, more than the 300 MB"
                  LABELS cli ENV TESSERA_GL=osmesa TESSERA_MEMORY_LIMIT_MB=300 TIMEOUT 30)

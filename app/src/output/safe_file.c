@@ -112,7 +112,7 @@ cairo_status_t app_safe_file_cairo_write(void *closure, const unsigned char *dat
 app_result app_safe_file_commit(app_safe_file *f, char *err, size_t err_size)
 {
     int e = f->error;
-    if (!e && fsync(f->fd) != 0)
+    if (!e && f->fd >= 0 && fsync(f->fd) != 0)
         e = errno;
     if (f->fd >= 0 && close(f->fd) != 0 && !e)
         e = errno;
@@ -137,4 +137,37 @@ void app_safe_file_discard(app_safe_file *f)
     if (f->temp)
         unlink(f->temp);
     release(f);
+}
+
+FILE *app_safe_stream_open(app_safe_stream *s, const char *path, char *err, size_t err_size)
+{
+    s->f = NULL;
+    if (app_safe_file_open(&s->file, path, err, err_size) != APP_OK)
+        return NULL;
+    s->f = fdopen(s->file.fd, "w");
+    if (!s->f) {
+        snprintf(err, err_size, "%s: cannot write: %s", path, strerror(errno));
+        app_safe_file_discard(&s->file);
+    }
+    return s->f;
+}
+
+app_result app_safe_stream_commit(app_safe_stream *s, char *err, size_t err_size)
+{
+    if (!s->f)
+        return APP_ERR_IO;
+    /* The flush first: after a failed write it tries again and leaves the reason in errno. */
+    errno = 0;
+    int e = 0;
+    if (fflush(s->f) != 0 || ferror(s->f))
+        e = errno ? errno : EIO;
+    if (!e && fsync(fileno(s->f)) != 0)
+        e = errno;
+    if (fclose(s->f) != 0 && !e)
+        e = errno;
+    s->f = NULL;
+    s->file.fd = -1; /* closed with the stream */
+    if (e && !s->file.error)
+        s->file.error = e;
+    return app_safe_file_commit(&s->file, err, err_size);
 }

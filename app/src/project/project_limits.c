@@ -89,15 +89,20 @@ static app_result fail(char *err, size_t err_size, const char *what, const char 
 int app_image_size_fits(long width, long height, char *err, size_t err_size)
 {
     const app_limit *side = &table[APP_LIMIT_IMAGE_SIDE], *pixels = &table[APP_LIMIT_IMAGE_PIXELS];
-    if (width < 1 || height < 1 || width > side->value || height > side->value) {
+    if (width < 1 || height < 1) {
         if (err && err_size)
-            snprintf(err, err_size, "each side must be 1 to %.0f pixels (%s)", side->value,
-                     side->why);
+            snprintf(err, err_size, "each side must be at least 1 pixel");
+        return 0;
+    }
+    if (width > side->value || height > side->value) {
+        if (err && err_size)
+            snprintf(err, err_size, "too large: each side must be at most %.0f pixels (%s)",
+                     side->value, side->why);
         return 0;
     }
     if ((double)width * (double)height > pixels->value) {
         if (err && err_size)
-            snprintf(err, err_size, "%.0f pixels; the limit is %.0f (%s)",
+            snprintf(err, err_size, "too large: %.0f pixels; the limit is %.0f (%s)",
                      (double)width * (double)height, pixels->value, pixels->why);
         return 0;
     }
@@ -111,7 +116,8 @@ app_result app_job_check(const app_job *j, const char *what, char *err, size_t e
         const app_limit *pano = &table[APP_LIMIT_PANORAMA_PIXELS];
         double pixels = (double)j->width * (double)j->height;
         if (pixels > pano->value)
-            return fail(err, err_size, what, "a panorama of %.0f pixels; the limit is %.0f", pixels,
+            return fail(err, err_size, what,
+                        "too large: a panorama of %.0f pixels; the limit is %.0f", pixels,
                         pano->value);
     }
     if (!app_image_size_fits(j->width, j->height, size_err, sizeof size_err)) {
@@ -120,16 +126,17 @@ app_result app_job_check(const app_job *j, const char *what, char *err, size_t e
         return APP_ERR_SCHEMA;
     }
     if (j->kind == APP_JOB_VIDEO && j->frames > table[APP_LIMIT_VIDEO_FRAMES].value)
-        return fail(err, err_size, what, "%.0f frames; the limit is %.0f (one hour at 25 fps)",
+        return fail(err, err_size, what,
+                    "too long: %.0f frames; the limit is %.0f (one hour at 25 fps)",
                     (double)j->frames, table[APP_LIMIT_VIDEO_FRAMES].value);
     if (j->kind == APP_JOB_REFERENCE && j->samples > table[APP_LIMIT_SAMPLES].value)
-        return fail(err, err_size, what, "%.0f samples a pixel; the limit is %.0f",
+        return fail(err, err_size, what, "too many samples: %.0f a pixel; the limit is %.0f",
                     (double)j->samples, table[APP_LIMIT_SAMPLES].value);
     double need = app_job_memory_bytes(j), have = app_memory_available_bytes();
     if (need > have)
         return fail(err, err_size, what,
-                    "needs about %.0f MB of memory, more than the %.0f MB available (physical "
-                    "memory, ulimit -v/-d or TESSERA_MEMORY_LIMIT_MB)",
+                    "too large: needs about %.0f MB of memory, more than the %.0f MB available "
+                    "(physical memory, ulimit -v/-d or TESSERA_MEMORY_LIMIT_MB)",
                     need / (1024.0 * 1024.0), have / (1024.0 * 1024.0));
     return APP_OK;
 }

@@ -10,6 +10,7 @@
 #include "app/project/project.h"
 
 #include <cairo.h>
+#include <stdio.h>
 
 #include <stddef.h>
 
@@ -43,6 +44,19 @@ app_result app_safe_file_commit(app_safe_file *f, char *err, size_t err_size);
 
 /* Removes the temporary file and frees what *f owns (after another failure). */
 void app_safe_file_discard(app_safe_file *f);
+
+/* The same through stdio, for tables written with fprintf (the benchmarks' CSV and Markdown). */
+typedef struct app_safe_stream {
+    app_safe_file file;
+    FILE *f; /* write to this; NULL when the open failed */
+} app_safe_stream;
+
+/* Opens the temporary file as a stream; NULL with err set on failure. */
+FILE *app_safe_stream_open(app_safe_stream *s, const char *path, char *err, size_t err_size);
+
+/* Flushes and checks the stream, then app_safe_file_commit. Safe on a stream whose open
+ * failed (returns APP_ERR_IO without touching err). */
+app_result app_safe_stream_commit(app_safe_stream *s, char *err, size_t err_size);
 
 #ifdef __cplusplus
 }
