@@ -370,7 +370,7 @@ static void test_invalid_project_is_not_written(void)
     a.cameras[0].fov_deg = 50;
 
     a.plan.height_mm = -1;
-    expect_write_failure(path, &a, APP_ERR_SCHEMA, "$.plan.height: ", "must be >= 1, got -1");
+    expect_write_failure(path, &a, APP_ERR_SCHEMA, "$.plan.height: ", "must be > 0, got -1");
     a.plan.height_mm = 2500;
 
     int cameras = a.camera_count;
