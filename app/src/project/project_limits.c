@@ -36,7 +36,7 @@ const app_limit *app_limits(void)
 #define IMAGE_BYTES_PER_PIXEL 24.0     /* render to PNG/JPEG/TIFF */
 #define FLOAT_BYTES_PER_PIXEL 72.0     /* render to EXR: the linear float copy and its writer */
 #define PANORAMA_BYTES_PER_PIXEL 12.0  /* the equirectangular image and six faces of width/4 */
-#define REFERENCE_BYTES_PER_PIXEL 64.0 /* float accumulation, sample counts and the 8-bit copy */
+#define REFERENCE_BYTES_PER_PIXEL 32.0 /* float accumulation, sample counts and the image */
 
 double app_job_memory_bytes(const app_job *j)
 {
