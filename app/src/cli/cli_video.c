@@ -118,14 +118,18 @@ int cli_cmd_video(const cli_options *args)
     int frames = (int)(seconds * fps + 0.5);
     if (frames < 1)
         frames = 1;
-    /* The frame size (the project's unless --size), the frames and the memory from the limits
-     * table (app/project/job_limits.h), before the first frame. */
+    /* --size, the frames and the memory from the limits table (app/project/job_limits.h),
+     * before the first frame; the project's own size is checked by its reader. */
     app_job job = {.kind = APP_JOB_VIDEO,
                    .width = o.width ? o.width : 1,
                    .height = o.height ? o.height : 1,
                    .frames = frames};
     char what[96], limit_err[1024];
-    snprintf(what, sizeof what, "%.1f s at %d fps", seconds, fps);
+    if (o.width && o.height)
+        snprintf(what, sizeof what, "--size %dx%d, %.1f s at %d fps", o.width, o.height, seconds,
+                 fps);
+    else
+        snprintf(what, sizeof what, "%.1f s at %d fps", seconds, fps);
     if (app_job_check(&job, what, limit_err, sizeof limit_err) != APP_OK) {
         fprintf(stderr, "tessera video: %s\n", limit_err);
         return CLI_USAGE;
