@@ -50,6 +50,11 @@ void rd_image_convert_channels_f32(const float *src, int src_ch, float *dst, int
  * IEND; 0 with a message in detail when the PNG is truncated or its chunk list is corrupt. */
 int rd_image_png_chunks_complete(FILE *f, long long file_size, char *detail, size_t detail_size);
 
+/* 1 when f does not start with the OpenEXR magic, or when every header attribute fits in the
+ * file and the data window is within the image limits (image_exr_check.c); 0 with a message
+ * in detail otherwise, before OpenEXR allocates what a corrupt header claims. */
+int rd_image_exr_header_sane(FILE *f, long long file_size, char *detail, size_t detail_size);
+
 /* Copies the JPEG stream data[0..size) into *out (malloc'd) with an XMP APP1 segment holding
  * the packet xmp inserted after the JFIF header (image_xmp.c). 1 on success, 0 with a message
  * in detail when the packet is too large, data is no JPEG or memory runs out. */

@@ -71,7 +71,8 @@ rd_image_result rd_image_read(const char *path, rd_image *out, int *nonfinite_re
         return RD_IMAGE_ERR_IO;
     }
     int complete =
-        rd_image_png_chunks_complete(probe, (long long)st.st_size, detail, sizeof detail);
+        rd_image_png_chunks_complete(probe, (long long)st.st_size, detail, sizeof detail) &&
+        rd_image_exr_header_sane(probe, (long long)st.st_size, detail, sizeof detail);
     fclose(probe);
     if (!complete) {
         rd_image_set_error(err, err_size, "%s: not a readable image: %s", path, detail);

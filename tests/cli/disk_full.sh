@@ -7,6 +7,16 @@
 #   KIND render-EXT: render -o DIR/out.EXT over a good out.EXT, files capped at 4 KiB
 #   KIND panorama:   panorama -o DIR/pano.jpg over a good pano.jpg
 #   KIND video:      video -o DIR/clip.mp4; frames go to DIR/clip_frames
+#   KIND print-pdf:  print -o DIR/plan.pdf over a good plan.pdf
+#   KIND print-svg:  print --svg DIR/svg over good SVG pages (the PDF goes elsewhere, uncapped
+#                    by being small: only the SVG pages pass the limit)
+#   KIND export-glb: export-glb -o DIR/room.glb over a good room.glb
+#   KIND quantities-csv: quantities --csv > DIR/q.csv (standard output: no file to keep, the
+#                    exit code and the message are the test)
+#   KIND bench-csv:  bench --csv DIR/bench.csv over a good bench.csv
+#   KIND share:      share -o DIR/share over a good share folder, the limit between the
+#                    panorama and its copy in panorama.js: every file is the old one or a
+#                    complete new one no larger than the limit
 tessera=$1 limit=$2 dir=$3 kind=$4 project=$5
 fail() { echo "disk_full.sh: $*" >&2; exit 99; }
 rm -rf "$dir" && mkdir -p "$dir" || fail "cannot make $dir"
@@ -31,6 +41,56 @@ video)
     "$limit" $cap "$tessera" video "$project" --size 320x240 --seconds 0.2 --fps 10 -o "$dir/clip.mp4"
     rc=$?
     [ ! -e "$dir/clip.mp4" ] || fail "a video was made from failed frames"
+    ;;
+print-pdf)
+    out=$dir/plan.pdf
+    "$tessera" print "$project" -o "$out" --renders none --date today >/dev/null 2>&1 || fail "the good print failed"
+    cp "$out" "$dir/good" || fail "cannot copy"
+    "$limit" $cap "$tessera" print "$project" -o "$out" --renders none --date tomorrow
+    rc=$?
+    ;;
+print-svg)
+    out=$dir/svg/page-01.svg
+    "$tessera" print "$project" -o "$dir/plan.pdf" --svg "$dir/svg" --renders none --date today >/dev/null 2>&1 || fail "the good print failed"
+    cp "$out" "$dir/good" || fail "cannot copy"
+    cap=$(($(wc -c < "$dir/plan.pdf") + 1024))
+    [ "$(wc -c < "$out")" -gt "$cap" ] || fail "the SVG page is not larger than the PDF: no test"
+    "$limit" $cap "$tessera" print "$project" -o "$dir/plan.pdf" --svg "$dir/svg" --renders none --date tomorrow
+    rc=$?
+    ;;
+export-glb)
+    out=$dir/room.glb
+    "$tessera" export-glb "$project" -o "$out" >/dev/null 2>&1 || fail "the good export failed"
+    cp "$out" "$dir/good" || fail "cannot copy"
+    "$limit" 1024 "$tessera" export-glb "$project" -o "$out"
+    rc=$?
+    ;;
+quantities-csv)
+    out=
+    "$limit" 16 "$tessera" quantities "$project" --csv > "$dir/q.csv"
+    rc=$?
+    ;;
+bench-csv)
+    out=$dir/bench.csv
+    "$tessera" bench "$project" --frames 3 --warmup 1 --size 64x48 --csv "$out" >/dev/null 2>&1 || fail "the good bench failed"
+    cp "$out" "$dir/good" || fail "cannot copy"
+    "$limit" 100 "$tessera" bench "$project" --frames 3 --warmup 1 --size 64x48 --csv "$out"
+    rc=$?
+    ;;
+share)
+    out=
+    "$tessera" share "$project" -o "$dir/share" --size 64x48 --panorama-size 1024x512 >/dev/null 2>&1 || fail "the good share failed"
+    cp -r "$dir/share" "$dir/good-share" || fail "cannot copy"
+    # Room for the panorama JPEG but not for its base64 copy in panorama.js (4/3 of it): the
+    # share page's own writer meets the full disk.
+    cap=$(($(wc -c < "$dir/share/panorama.jpg") + 512))
+    "$limit" $cap "$tessera" share "$project" -o "$dir/share" --size 64x48 --panorama-size 1024x512
+    rc=$?
+    for f in $(cd "$dir/share" && find . -type f); do
+        [ -e "$dir/good-share/$f" ] || fail "share/$f is new: a partial file?"
+        size=$(wc -c < "$dir/share/$f")
+        [ "$size" -le $cap ] || cmp -s "$dir/share/$f" "$dir/good-share/$f" || fail "share/$f is neither the old file nor a complete new one"
+    done
     ;;
 *) fail "unknown kind $kind" ;;
 esac

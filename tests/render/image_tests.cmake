@@ -13,3 +13,13 @@ target_compile_definitions(
 add_test(NAME render.test_golden_compare COMMAND test_golden_compare)
 
 set_tests_properties(render.test_image_io render.test_golden_compare PROPERTIES LABELS unit)
+
+# The OpenEXR header check: the fuzzer's gigabyte-claiming headers refused in under a second.
+add_executable(test_image_exr_header ${CMAKE_CURRENT_LIST_DIR}/test_image_exr_header.c)
+target_link_libraries(test_image_exr_header PRIVATE tessera_testcommon tessera_render m)
+target_compile_definitions(
+  test_image_exr_header
+  PRIVATE TEST_CORPUS_DIR="${CMAKE_SOURCE_DIR}/tests/fuzz/corpus/image"
+          TEST_OUT_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+add_test(NAME render.test_image_exr_header COMMAND test_image_exr_header)
+set_tests_properties(render.test_image_exr_header PROPERTIES LABELS unit TIMEOUT 60)

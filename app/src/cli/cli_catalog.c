@@ -2,6 +2,7 @@
  * line. Every sub-command takes --db PATH (default: $TESSERA_CATALOG, else the user's cache
  * folder); the catalog is built from the shipped CSV files on first use. */
 #include "catalog/catalog.h"
+#include "app/output/safe_file.h"
 #include "cli_commands.h"
 
 #include <errno.h>
@@ -489,11 +490,12 @@ int cli_cmd_catalog_bench(const cli_options *o)
             break;
     }
     FILE *csv = NULL;
+    app_safe_stream csv_out = {.f = NULL};
+    char csv_err[4200];
     if (r == CAT_DB_OK && o->csv) {
-        csv = fopen(o->csv, "w");
+        csv = app_safe_stream_open(&csv_out, o->csv, csv_err, sizeof csv_err);
         if (!csv)
-            fprintf(stderr, "tessera catalog bench: cannot write %s: %s\n", o->csv,
-                    strerror(errno));
+            fprintf(stderr, "tessera catalog bench: %s\n", csv_err);
         else
             fprintf(csv, "kind,queries,median_ms,p90_ms,p95_ms,max_ms\n");
     }
@@ -527,12 +529,14 @@ int cli_cmd_catalog_bench(const cli_options *o)
                     p90, p95, cpu_n, cmed, cp90, cp95, cmax);
         free(all);
     }
-    if (csv && fclose(csv) != 0)
-        fprintf(stderr, "tessera catalog bench: cannot write %s\n", o->csv);
+    int csv_failed = (o->csv && !csv && r == CAT_DB_OK) ||
+                     (csv && app_safe_stream_commit(&csv_out, csv_err, sizeof csv_err) != APP_OK);
+    if (csv && csv_failed)
+        fprintf(stderr, "tessera catalog bench: %s\n", csv_err);
     for (int k = 0; k < Q_KINDS; k++)
         free(ms[k]);
     free(cpu);
     free(hits);
     cat_db_close(db);
-    return exit_code(r);
+    return csv_failed && r == CAT_DB_OK ? CLI_FAILED : exit_code(r);
 }

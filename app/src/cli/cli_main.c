@@ -6,6 +6,8 @@
 #include "cli_commands.h"
 #include "cli_table.h"
 
+#include <errno.h>
+#include <stdio.h>
 #include <string.h>
 
 static void print_overview(FILE *f)
@@ -55,6 +57,19 @@ static int run_subcommand(const cli_command *c, int argc, char **argv, int first
     return run(s, argc, argv, first + 1, open_window);
 }
 
+/* What a command printed to standard output (a table, CSV, JSON) must have arrived: a
+ * redirect to a full disk is a failure with the system's reason, not a silent exit 0. */
+static int check_stdout(int rc)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        fprintf(stderr, "tessera: standard output: cannot write: %s\n",
+                strerror(errno ? errno : EIO));
+        return rc == CLI_OK ? CLI_FAILED : rc;
+    }
+    return rc;
+}
+
 static int run(const cli_command *c, int argc, char **argv, int first, app_open_fn open_window)
 {
     if (c->subcommands)
@@ -68,7 +83,7 @@ static int run(const cli_command *c, int argc, char **argv, int first, app_open_
         cli_print_usage(c, stdout);
         return CLI_OK;
     }
-    return rc == CLI_OK ? c->run(&o) : rc;
+    return check_stdout(rc == CLI_OK ? c->run(&o) : rc);
 }
 
 /* tessera help [COMMAND [SUB-COMMAND]], tessera help --list */

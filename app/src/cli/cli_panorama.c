@@ -4,6 +4,7 @@
  * gets the GPano XMP that panorama viewers read (app/output/panorama.h, docs/rendering.md). */
 #include "app/cli/cli.h"
 #include "app/output/panorama.h"
+#include "app/project/job_limits.h"
 #include "cli_commands.h"
 #include "cli_print_render.h"
 #include "render/image_io.h"
@@ -118,6 +119,15 @@ int cli_cmd_panorama(const cli_options *args)
                 "tessera panorama: --size %dx%d: an equirectangular image is twice as "
                 "wide as it is high (e.g. 4096x2048)\n",
                 w, h);
+        return CLI_USAGE;
+    }
+    /* The size and the memory from the limits table (app/project/job_limits.h), before any
+     * face is rendered. */
+    app_job job = {.kind = APP_JOB_PANORAMA, .width = w, .height = h};
+    char what[64], err[1024];
+    snprintf(what, sizeof what, "--size %dx%d", w, h);
+    if (app_job_check(&job, what, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera panorama: %s\n", err);
         return CLI_USAGE;
     }
     rc = cli_check_output_path(o.output);

@@ -2,6 +2,7 @@
 #include "cli_print_render.h"
 #include "cli_black_pixels.h"
 
+#include "app/project/job_limits.h"
 #include "render/image_io.h"
 
 #include <stdio.h>
@@ -52,16 +53,29 @@ int cli_render_pixels(cli_session *s, const rd_view *view, int tile_max, uint8_t
     return CLI_OK;
 }
 
+int cli_check_image_job(const char *command, int width, int height, const char *path)
+{
+    /* Every limit from one table (app/project/job_limits.h), before any work: beyond them an
+     * image is an input mistake, not a job to try for a minute and fail at the writer. */
+    app_job job = {.kind = APP_JOB_IMAGE,
+                   .width = width,
+                   .height = height,
+                   .float_copy = path && rd_image_format_is_float(path) == 1};
+    char what[64], err[1024];
+    snprintf(what, sizeof what, "a %dx%d image", width, height);
+    if (app_job_check(&job, what, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera %s: %s\n", command, err);
+        return CLI_USAGE;
+    }
+    return CLI_OK;
+}
+
 int cli_render_large(cli_session *s, const rd_view *view, const char *path, int dpi, int tile_max)
 {
     double t0 = cli_now_ms();
-    /* The project file's own limit (app/project/project.h): beyond it an image is an input mistake,
-     * not a job to try (100000 x 100000 would be 40 GB). */
-    if (view->width > APP_PROJECT_MAX_IMAGE_SIDE || view->height > APP_PROJECT_MAX_IMAGE_SIDE) {
-        fprintf(stderr, "tessera: a %dx%d image is too large: at most %d pixels a side\n",
-                view->width, view->height, APP_PROJECT_MAX_IMAGE_SIDE);
-        return CLI_USAGE;
-    }
+    int rc = cli_check_image_job("render", view->width, view->height, path);
+    if (rc != CLI_OK)
+        return rc;
     size_t count = (size_t)view->width * (size_t)view->height * 4;
     int is_float = rd_image_format_is_float(path) == 1;
     uint8_t *rgba = malloc(count);
@@ -74,7 +88,7 @@ int cli_render_large(cli_session *s, const rd_view *view, const char *path, int 
     }
     cli_progress bar;
     cli_progress_init(&bar, "rendering");
-    int rc = cli_render_pixels(s, view, tile_max, rgba, linear, &bar);
+    rc = cli_render_pixels(s, view, tile_max, rgba, linear, &bar);
     if (rc == CLI_OK) {
         s->black_fraction = cli_black_fraction(rgba, view->width, view->height);
         double write_start = cli_now_ms();

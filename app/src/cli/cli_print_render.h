@@ -22,6 +22,11 @@ void cli_progress_update(cli_progress *p, int done, int total);
 int cli_render_pixels(cli_session *s, const rd_view *view, int tile_max, uint8_t *rgba,
                       float *linear, cli_progress *progress);
 
+/* Checks a width x height image written to path (EXR keeps a float copy) against the limits
+ * table and the memory (app/project/job_limits.h); prints "tessera COMMAND: ..." and returns
+ * CLI_USAGE when it does not fit. */
+int cli_check_image_job(const char *command, int width, int height, const char *path);
+
 /* Renders `view` and writes it to path (8-bit sRGB with dpi if > 0, or EXR linear). */
 int cli_render_large(cli_session *s, const rd_view *view, const char *path, int dpi, int tile_max);
 

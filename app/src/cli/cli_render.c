@@ -52,6 +52,12 @@ int cli_cmd_render(const cli_options *o)
         if (rc != CLI_OK)
             return rc;
     }
+    /* --size before the scene is loaded; the project's own size is checked by its reader. */
+    if (o->width && o->height) {
+        rc = cli_check_image_job("render", o->width, o->height, o->all_views ? NULL : o->output);
+        if (rc != CLI_OK)
+            return rc;
+    }
     cli_session s;
     rc = cli_session_open(o, &s);
     if (rc != CLI_OK)

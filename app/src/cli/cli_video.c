@@ -3,6 +3,7 @@
  * written as PNG into OUT_frames/ and encoded to H.264 MP4 with ffmpeg when it is installed. */
 #include "app/output/camera_path.h"
 #include "app/cli/cli.h"
+#include "app/project/job_limits.h"
 #include "cli_commands.h"
 #include "cli_print_render.h"
 #include "render/image_io.h"
@@ -117,6 +118,22 @@ int cli_cmd_video(const cli_options *args)
     int frames = (int)(seconds * fps + 0.5);
     if (frames < 1)
         frames = 1;
+    /* --size, the frames and the memory from the limits table (app/project/job_limits.h),
+     * before the first frame; the project's own size is checked by its reader. */
+    app_job job = {.kind = APP_JOB_VIDEO,
+                   .width = o.width ? o.width : 1,
+                   .height = o.height ? o.height : 1,
+                   .frames = frames};
+    char what[96], limit_err[1024];
+    if (o.width && o.height)
+        snprintf(what, sizeof what, "--size %dx%d, %.1f s at %d fps", o.width, o.height, seconds,
+                 fps);
+    else
+        snprintf(what, sizeof what, "%.1f s at %d fps", seconds, fps);
+    if (app_job_check(&job, what, limit_err, sizeof limit_err) != APP_OK) {
+        fprintf(stderr, "tessera video: %s\n", limit_err);
+        return CLI_USAGE;
+    }
     char dir[4096];
     snprintf(dir, sizeof dir, "%s", o.output);
     char *dot = strrchr(dir, '.'), *slash = strrchr(dir, '/');

@@ -2,6 +2,7 @@
  * timed region, against a "floor" (one full-screen pass of the same lighting program at the
  * same size). Frames and floors are interleaved so drift in the machine's speed hits both. */
 #include "app/cli/cli.h"
+#include "app/output/safe_file.h"
 #include "app/measure/stats.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_stats.h"
@@ -60,16 +61,22 @@ static void print_row(const char *what, const app_stats *s)
 static int write_csv(const char *path, const double *frame, const double *floor_ms,
                      const double *cpu, const rd_frame_stats *stats, int n)
 {
-    FILE *f = fopen(path, "w");
+    app_safe_stream out;
+    char err[4200];
+    FILE *f = app_safe_stream_open(&out, path, err, sizeof err);
     if (!f) {
-        perror(path);
+        fprintf(stderr, "tessera: %s\n", err);
         return CLI_FAILED;
     }
     fprintf(f, "index,frame_ms,floor_ms,probes,faces_captured,prefiltered,frame_cpu_ms\n");
     for (int i = 0; i < n; i++)
         fprintf(f, "%d,%.4f,%.4f,%d,%d,%d,%.4f\n", i, frame[i], floor_ms[i], stats[i].probes,
                 stats[i].faces_captured, stats[i].prefiltered, cpu[i]);
-    return fclose(f) == 0 ? CLI_OK : CLI_FAILED;
+    if (app_safe_stream_commit(&out, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return CLI_FAILED;
+    }
+    return CLI_OK;
 }
 
 void cli_defaults_bench(cli_options *o)

@@ -7,6 +7,7 @@
  * stay finite once written as the half floats of an .exr. Prints a Markdown table; exit 1 if a
  * pixel is not finite. */
 #include "app/cli/cli.h"
+#include "app/output/safe_file.h"
 #include "app/measure/image_compare.h"
 #include "app/scene/quality.h"
 #include "app/scene/ref_scene_build.h"
@@ -171,7 +172,11 @@ int cli_cmd_extremes(const cli_options *args)
         fprintf(stderr, "tessera extremes: %s\n", rd_last_error());
         return CLI_FAILED;
     }
-    FILE *md = o.markdown ? fopen(o.markdown, "w") : NULL;
+    app_safe_stream md_out = {.f = NULL};
+    char md_err[4200];
+    FILE *md = o.markdown ? app_safe_stream_open(&md_out, o.markdown, md_err, sizeof md_err) : NULL;
+    if (o.markdown && !md)
+        fprintf(stderr, "tessera: %s\n", md_err);
     const char *head = "| case | GPU non-finite | reference non-finite | PSNR all (dB) | "
                        "PSNR reflective (dB) | self-traced non-finite | self-traced PSNR "
                        "reflective (dB) | path-traced non-finite |\n"
@@ -251,7 +256,10 @@ int cli_cmd_extremes(const cli_options *args)
     if (md) {
         fprintf(md, "\n-1: the render itself failed. Every case must show 0 (or off) in every "
                     "non-finite column.\n");
-        fclose(md);
+        if (app_safe_stream_commit(&md_out, md_err, sizeof md_err) != APP_OK) {
+            fprintf(stderr, "tessera: %s\n", md_err);
+            rc = CLI_FAILED;
+        }
     }
     free(gpu);
     free(traced);

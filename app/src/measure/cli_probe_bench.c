@@ -3,6 +3,7 @@
  * resolution goes 16 ... 512 (capture, and the prefilter of a glossy probe), and how the
  * frame time grows with the number of reflective objects and does not with plain ones. */
 #include "app/cli/cli.h"
+#include "app/output/safe_file.h"
 #include "app/measure/stats.h"
 #include "cli/cli_commands.h"
 
@@ -127,9 +128,11 @@ int cli_cmd_probe_bench(const cli_options *args)
         fprintf(stderr, "tessera: cannot open an OpenGL context: %s\n", rd_last_error());
         return CLI_FAILED;
     }
-    FILE *csv = o.csv ? fopen(o.csv, "w") : NULL;
+    app_safe_stream csv_out = {.f = NULL};
+    char csv_err[4200];
+    FILE *csv = o.csv ? app_safe_stream_open(&csv_out, o.csv, csv_err, sizeof csv_err) : NULL;
     if (o.csv && !csv) {
-        perror(o.csv);
+        fprintf(stderr, "tessera: %s\n", csv_err);
         rd_context_destroy(ctx);
         return CLI_FAILED;
     }
@@ -203,8 +206,10 @@ int cli_cmd_probe_bench(const cli_options *args)
         fprintf(stderr, "\r%d of 16 objects done", n);
     }
     fprintf(stderr, "\n");
-    if (csv)
-        fclose(csv);
+    if (csv && app_safe_stream_commit(&csv_out, csv_err, sizeof csv_err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", csv_err);
+        rc = CLI_FAILED;
+    }
     rd_context_destroy(ctx);
     return rc;
 }

@@ -1,6 +1,7 @@
 /* tessera reference PROJECT -o OUT [--camera NAME] [--size WxH] [--supersample N] [--samples N]
  *                   [--bounces N] [--threads N] [--seed N] [--png OUT.png] [--mask MASK.png]
  * The ground-truth image of a project view (RENDERING.md section 10, docs/reference.md). */
+#include "app/project/job_limits.h"
 #include "app/scene/quality.h"
 #include "app/scene/ref_scene_build.h"
 #include "cli/cli_commands.h"
@@ -123,6 +124,19 @@ int cli_cmd_reference(const cli_options *o)
         shadows.mode = (rd_shadow_mode)(o->shadows - 1);
     ref_scene_set_shadows(scene, &shadows);
     int samples = o->samples ? o->samples : o->bounces > 0 ? REFERENCE_PATHS : 0;
+    /* The size, the samples and the memory from the limits table (app/project/job_limits.h),
+     * before the tracing. */
+    app_job job = {
+        .kind = APP_JOB_REFERENCE, .width = view.width, .height = view.height, .samples = samples};
+    char what[96];
+    snprintf(what, sizeof what, "a %dx%d reference with %d samples", view.width, view.height,
+             samples);
+    if (app_job_check(&job, what, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera reference: %s\n", err);
+        ref_scene_destroy(scene);
+        app_project_free(&p);
+        return CLI_USAGE;
+    }
     ref_result rr = ref_scene_commit(scene);
     double build_ms = cli_now_ms() - t0;
     ref_image img = {0};

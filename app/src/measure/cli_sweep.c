@@ -3,6 +3,7 @@
  * GPU work finished) and compared with the ground-truth tracer (render/ref) over all pixels
  * and over the reflective ones: a table, a CSV and a plot. */
 #include "app/cli/cli.h"
+#include "app/output/safe_file.h"
 #include "app/measure/image_compare.h"
 #include "app/scene/quality.h"
 #include "app/scene/ref_scene_build.h"
@@ -241,9 +242,11 @@ typedef struct sweep_row {
 /* The table as Markdown, the front in bold (beside the CSV and the plot). */
 static int write_markdown(const char *path, const app_sweep_point *p, const sweep_row *r, int n)
 {
-    FILE *f = fopen(path, "w");
+    app_safe_stream out;
+    char err[4200];
+    FILE *f = app_safe_stream_open(&out, path, err, sizeof err);
     if (!f) {
-        perror(path);
+        fprintf(stderr, "tessera: %s\n", err);
         return -1;
     }
     fprintf(f, "| factor | setting | ms mean | ms median | PSNR all (dB) | PSNR reflective (dB) "
@@ -254,7 +257,11 @@ static int write_markdown(const char *path, const app_sweep_point *p, const swee
                 r[i].ms_median, r[i].psnr_all, p[i].on_front ? "**" : "", r[i].psnr_reflective,
                 p[i].on_front ? "**" : "", r[i].rmse_reflective);
     fprintf(f, "\nBold: the Pareto front (no other setting is both faster and more accurate).\n");
-    return fclose(f) == 0 ? 0 : -1;
+    if (app_safe_stream_commit(&out, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return -1;
+    }
+    return 0;
 }
 
 void cli_defaults_sweep(cli_options *o)
@@ -309,9 +316,13 @@ int cli_cmd_sweep(const cli_options *args)
     }
     if (rc == CLI_OK)
         memcpy(rest, s.project.objects[moving].position_mm, sizeof rest);
-    FILE *csv = rc == CLI_OK && o.csv ? fopen(o.csv, "w") : NULL;
+    app_safe_stream csv_out = {.f = NULL};
+    char csv_err[4200];
+    FILE *csv = rc == CLI_OK && o.csv
+                    ? app_safe_stream_open(&csv_out, o.csv, csv_err, sizeof csv_err)
+                    : NULL;
     if (rc == CLI_OK && o.csv && !csv) {
-        perror(o.csv);
+        fprintf(stderr, "tessera: %s\n", csv_err);
         rc = CLI_FAILED;
     }
     if (csv)
@@ -415,8 +426,10 @@ int cli_cmd_sweep(const cli_options *args)
                     median, all.rmse, all.psnr, refl.rmse, refl.psnr, refl.pixels);
         fflush(stdout);
     }
-    if (csv)
-        fclose(csv);
+    if (csv && app_safe_stream_commit(&csv_out, csv_err, sizeof csv_err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", csv_err);
+        rc = CLI_FAILED;
+    }
     if (rc == CLI_OK) {
         app_sweep_mark_front(points, count);
         if (o.markdown && write_markdown(o.markdown, points, rows, count) != 0)

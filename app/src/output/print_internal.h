@@ -6,6 +6,7 @@
 
 #include "app/output/print.h"
 #include "app/output/quote.h"
+#include "app/output/safe_file.h"
 #include "app/project/project.h"
 #include "app/design/quantities.h"
 #include "app/design/tile_layout.h"
@@ -133,6 +134,7 @@ typedef struct pr_doc {
     cairo_surface_t *surface; /* PDF: one for all pages; SVG: the current page's */
     cairo_t *cr;
     const char *svg_dir;
+    app_safe_file svg_file; /* SVG: the current page's file, renamed into place at its end */
     const char *pdf_path;
     int page; /* 0-based index of the page being drawn */
     double page_w, page_h;

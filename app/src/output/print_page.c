@@ -134,13 +134,19 @@ app_result pr_page_begin(pr_doc *d, const char *title, int scale)
     if (d->svg_dir) {
         char path[4096];
         snprintf(path, sizeof path, "%s/page-%02d.svg", d->svg_dir, d->page + 1);
+        /* Each page whole or not at all (app/output/safe_file.h). */
+        app_result r = app_safe_file_open(&d->svg_file, path, d->err, d->err_size);
+        if (r != APP_OK)
+            return r;
         d->surface =
-            cairo_svg_surface_create(path, d->page_w * 72.0 / 25.4, d->page_h * 72.0 / 25.4);
+            cairo_svg_surface_create_for_stream(app_safe_file_cairo_write, &d->svg_file,
+                                                d->page_w * 72.0 / 25.4, d->page_h * 72.0 / 25.4);
         if (cairo_surface_status(d->surface) != CAIRO_STATUS_SUCCESS) {
             snprintf(d->err, d->err_size, "%s: cannot write: %s", path,
                      cairo_status_to_string(cairo_surface_status(d->surface)));
             cairo_surface_destroy(d->surface);
             d->surface = NULL;
+            app_safe_file_discard(&d->svg_file);
             return APP_ERR_IO;
         }
         cairo_svg_surface_restrict_to_version(d->surface, CAIRO_SVG_VERSION_1_1);
@@ -178,6 +184,13 @@ app_result pr_page_end(pr_doc *d)
             st = cairo_surface_status(d->surface);
         cairo_surface_destroy(d->surface);
         d->surface = NULL;
+        if (st == CAIRO_STATUS_SUCCESS || d->svg_file.error) {
+            /* A failed write shows as a cairo error: the file's own reason says more. */
+            if (app_safe_file_commit(&d->svg_file, d->err, d->err_size) != APP_OK)
+                return APP_ERR_IO;
+        } else {
+            app_safe_file_discard(&d->svg_file);
+        }
     }
     if (st != CAIRO_STATUS_SUCCESS) {
         snprintf(d->err, d->err_size, "%s: page %d: %s", d->svg_dir ? d->svg_dir : d->pdf_path,

@@ -4,6 +4,8 @@
  * or one SVG per page. */
 #include "print_internal.h"
 
+#include "app/output/safe_file.h"
+
 #include "app/design/room_surfaces.h"
 #include "app/design/trims.h"
 
@@ -182,6 +184,8 @@ static void release(pr_doc *d)
         cairo_destroy(d->cr);
     if (d->surface)
         cairo_surface_destroy(d->surface);
+    if (d->svg_file.temp) /* a page left unfinished by a failure */
+        app_safe_file_discard(&d->svg_file);
     memset(d, 0, sizeof *d);
 }
 
@@ -232,18 +236,18 @@ app_result app_print_pdf(const app_project *p, const app_print_options *o, const
     app_result r = check_args(p, o, pdf_path, err, err_size);
     if (r != APP_OK)
         return r;
-    /* Written beside the target and renamed over it when complete, so a failure never leaves
-     * a half-written PDF (or destroys the previous one). */
-    char tmp[4200];
-    if ((size_t)snprintf(tmp, sizeof tmp, "%s.part-%ld", pdf_path, (long)getpid()) >= sizeof tmp) {
-        snprintf(err, err_size, "%s: path too long", pdf_path);
-        return APP_ERR_IO;
-    }
+    /* Written beside the target and renamed over it when complete, every write checked, so
+     * a failure never leaves a half-written PDF (or destroys the previous one) and its
+     * message keeps the system's reason (app/output/safe_file.h). */
     pr_doc d;
     r = prepare(&d, p, o, report, err, err_size);
+    app_safe_file out;
+    if (r == APP_OK)
+        r = app_safe_file_open(&out, pdf_path, err, err_size);
     if (r == APP_OK) {
         d.pdf_path = pdf_path;
-        d.surface = cairo_pdf_surface_create(tmp, d.page_w * 72.0 / 25.4, d.page_h * 72.0 / 25.4);
+        d.surface = cairo_pdf_surface_create_for_stream(
+            app_safe_file_cairo_write, &out, d.page_w * 72.0 / 25.4, d.page_h * 72.0 / 25.4);
         if (cairo_surface_status(d.surface) != CAIRO_STATUS_SUCCESS) {
             snprintf(err, err_size, "%s: cannot write: %s", pdf_path,
                      cairo_status_to_string(cairo_surface_status(d.surface)));
@@ -257,7 +261,8 @@ app_result app_print_pdf(const app_project *p, const app_print_options *o, const
             cairo_destroy(d.cr);
             d.cr = NULL;
             cairo_surface_finish(d.surface);
-            if (r == APP_OK && cairo_surface_status(d.surface) != CAIRO_STATUS_SUCCESS) {
+            if (r == APP_OK && !out.error &&
+                cairo_surface_status(d.surface) != CAIRO_STATUS_SUCCESS) {
                 snprintf(err, err_size, "%s: cannot write: %s", pdf_path,
                          cairo_status_to_string(cairo_surface_status(d.surface)));
                 r = APP_ERR_IO;
@@ -265,12 +270,14 @@ app_result app_print_pdf(const app_project *p, const app_print_options *o, const
         }
         if (r == APP_OK && o->xlsx && d.have_bom)
             r = app_quote_write_xlsx(o->xlsx, p, &d.quote, &d.bom, err, err_size);
-        if (r == APP_OK && rename(tmp, pdf_path) != 0) {
-            snprintf(err, err_size, "%s: cannot write: %s", pdf_path, strerror(errno));
-            r = APP_ERR_IO;
+        if (r == APP_OK || out.error) {
+            /* A failed write shows as a cairo error on a page: the file's reason says more. */
+            app_result w = app_safe_file_commit(&out, err, err_size);
+            if (r == APP_OK || w != APP_OK)
+                r = w;
+        } else {
+            app_safe_file_discard(&out);
         }
-        if (r != APP_OK)
-            unlink(tmp);
     }
     release(&d);
     return r;

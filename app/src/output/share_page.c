@@ -150,7 +150,8 @@ static app_result close_temp(FILE *f, const char *tmp, const char *dir, const ch
     /* A stream's write error may show only at the flush, the fsync or the close; each keeps
      * its errno ("No space left on device") for the message. */
     errno = EIO;
-    int bad = ferror(f) || fflush(f) != 0 || fsync(fileno(f)) != 0;
+    /* The flush first: after a failed write it tries again and leaves the reason in errno. */
+    int bad = fflush(f) != 0 || ferror(f) || fsync(fileno(f)) != 0;
     int saved = errno;
     if (fclose(f) != 0 && !bad) {
         bad = 1;

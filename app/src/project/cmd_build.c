@@ -310,10 +310,11 @@ static app_result check_object(const app_project *p, const app_object *o, int se
         return fail(err, err_size, APP_ERR_SCHEMA, "object \"%s\": unknown shape", o->name);
     for (int k = 0; k < 3; k++) {
         if (!finite_in(o->position_mm[k], -MAX_COORD_MM, MAX_COORD_MM) ||
-            !finite_in(o->rotation_deg[k], -1e6, 1e6) || !finite_in(o->scale[k], -1e6, 1e6) ||
+            !finite_in(o->rotation_deg[k], -1e6, 1e6) || !finite_in(o->scale[k], -1000, 1000) ||
             !finite_in(o->size_mm[k], 0, MAX_COORD_MM))
             return fail(err, err_size, APP_ERR_SCHEMA,
-                        "object \"%s\": position, rotation, scale and size must be finite",
+                        "object \"%s\": position, rotation, scale (-1000..1000) and size must be "
+                        "finite",
                         o->name);
     }
     /* The reader's rules for the object's kind (app/src/project/project_read_objects.c). */

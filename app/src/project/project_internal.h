@@ -172,6 +172,16 @@ app_result pj_read_material_fields(pj_ctx *c, const cJSON *item, app_material *m
 app_result pj_parse_text(const char *text, size_t len, const char *path, int check_files,
                          app_project *out, char *err, size_t err_size);
 
+/* ---- validation (project_validate_text.c, project_validate.c) ------------------------------ */
+
+/* Byte offset of the first byte of s that breaks UTF-8 (RFC 3629), -1 when s is valid. */
+long pj_utf8_invalid_at(const char *s);
+/* Every string and member name in the tree is valid UTF-8. */
+app_result pj_check_text(pj_ctx *c, const cJSON *root);
+/* The rules across sections, after all are read: lights with the windows' daylight within
+ * the renderer's, $.render.size within the image writer's (app/project/job_limits.h). */
+app_result pj_validate_project(pj_ctx *c, const app_project *p);
+
 /* ---- versions (project_migrate.c) ---------------------------------------------------------- */
 
 /* Checks $.version and upgrades the tree in place to APP_PROJECT_VERSION. */

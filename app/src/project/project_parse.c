@@ -150,7 +150,11 @@ app_result pj_parse_text(const char *json_text, size_t len,
     app_project p;
     memset(&p, 0, sizeof p);
     c.p = &p;
-    r = read_root(&c, root, &p);
+    r = pj_check_text(&c, root);
+    if (r == APP_OK)
+        r = read_root(&c, root, &p);
+    if (r == APP_OK)
+        r = pj_validate_project(&c, &p);
     cJSON_Delete(root);
     pj_ctx_release(&c);
     if (r != APP_OK) {

@@ -41,7 +41,9 @@ static app_result read_size(pj_ctx *c, const cJSON *item, app_object *o)
     double v[3] = {0, 0, 0};
     for (int i = 0; i < count; i++) {
         size_t e_mark = pj_path_index(c, i);
-        pj_range range = (plane && i == 2) ? (pj_range){0.0, HUGE_VAL, 0, 0, 0} : PJ_POSITIVE;
+        /* Within the room limit: a larger primitive overflows the renderer's float transform. */
+        pj_range range = (plane && i == 2) ? (pj_range){0.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0}
+                                           : (pj_range){0.0, APP_PROJECT_MAX_ROOM_MM, 1, 0, 0};
         if ((r = pj_check_number(c, cJSON_GetArrayItem(size, i), range, &v[i])) != APP_OK)
             return r;
         pj_path_restore(c, e_mark);
@@ -59,7 +61,10 @@ static app_result read_size(pj_ctx *c, const cJSON *item, app_object *o)
 
 static app_result read_scale(pj_ctx *c, const cJSON *item, app_object *o)
 {
-    app_result r = pj_get_vec(c, item, "scale", 0, 3, PJ_ANY, o->scale);
+    /* A thousandfold is far beyond any real fixture; 1e300 overflows the float transform the
+     * renderer and the path tracer build. */
+    static const pj_range SCALE = {-1000.0, 1000.0, 0, 0, 1};
+    app_result r = pj_get_vec(c, item, "scale", 0, 3, SCALE, o->scale);
     if (r != APP_OK)
         return r;
     for (int i = 0; i < 3; i++) {

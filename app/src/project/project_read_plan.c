@@ -12,7 +12,11 @@ const char *const pj_opening_type_names[2] = {"door", "window"};
 const char *const pj_swing_names[5] = {"in-left", "in-right", "out-left", "out-right", "sliding"};
 
 static const pj_range COORD = {-APP_PROJECT_MAX_ROOM_MM, APP_PROJECT_MAX_ROOM_MM, 0, 0, 1};
-static const pj_range LENGTH = {0.0, APP_PROJECT_MAX_ROOM_MM, 1, 0, 0};   /* (0, 1e7] */
+static const pj_range LENGTH = {0.0, APP_PROJECT_MAX_ROOM_MM, 1, 0, 0}; /* (0, 1e7] */
+/* Openings, pre-walls and niches: at least a millimetre, the trade's unit. A thinner one is a
+ * typing mistake and leaves the tile layout a hole without area. (The room itself may be
+ * smaller: `tessera extremes` renders a scene of 1 mm.) */
+static const pj_range PART = {1.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0};     /* [1, 1e7] */
 static const pj_range DISTANCE = {0.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0}; /* [0, 1e7] */
 
 app_result pj_get_enum(pj_ctx *c, const cJSON *obj, const char *key, int required,
@@ -108,8 +112,8 @@ static app_result read_opening(pj_ctx *c, const cJSON *item, int index, app_open
     if ((r = pj_get_string(c, item, "name", 0, 0, o->name, sizeof o->name)) != APP_OK ||
         (r = pj_get_int(c, item, "wall", 1, 0, APP_ROOM_MAX_CORNERS - 1, &o->wall)) != APP_OK ||
         (r = pj_get_number(c, item, "offset", 1, DISTANCE, &o->offset_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "width", 1, LENGTH, &o->width_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "height", 1, LENGTH, &o->height_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "width", 1, PART, &o->width_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "height", 1, PART, &o->height_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "sill", 0, DISTANCE, &o->sill_mm)) != APP_OK ||
         (r = pj_get_enum(c, item, "swing", 0, pj_swing_names, 5, &swing)) != APP_OK ||
         (r = pj_get_color(c, item, "light", 0, o->light)) != APP_OK)
@@ -128,9 +132,9 @@ static app_result read_prewall(pj_ctx *c, const cJSON *item, int index, app_prew
     if ((r = pj_get_string(c, item, "name", 0, 0, w->name, sizeof w->name)) != APP_OK ||
         (r = pj_get_int(c, item, "wall", 1, 0, APP_ROOM_MAX_CORNERS - 1, &w->wall)) != APP_OK ||
         (r = pj_get_number(c, item, "offset", 1, DISTANCE, &w->offset_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "width", 1, LENGTH, &w->width_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "depth", 1, LENGTH, &w->depth_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "height", 1, LENGTH, &w->height_mm)) != APP_OK)
+        (r = pj_get_number(c, item, "width", 1, PART, &w->width_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "depth", 1, PART, &w->depth_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "height", 1, PART, &w->height_mm)) != APP_OK)
         return r;
     if (strchr(w->name, ':')) {
         pj_path_key(c, "name");
@@ -150,10 +154,10 @@ static app_result read_niche(pj_ctx *c, const cJSON *item, int index, app_niche 
     if ((r = pj_get_string(c, item, "name", 0, 0, n->name, sizeof n->name)) != APP_OK ||
         (r = pj_get_int(c, item, "wall", 1, 0, APP_ROOM_MAX_CORNERS - 1, &n->wall)) != APP_OK ||
         (r = pj_get_number(c, item, "offset", 1, DISTANCE, &n->offset_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "width", 1, LENGTH, &n->width_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "width", 1, PART, &n->width_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "sill", 1, DISTANCE, &n->sill_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "height", 1, LENGTH, &n->height_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "depth", 1, LENGTH, &n->depth_mm)) != APP_OK)
+        (r = pj_get_number(c, item, "height", 1, PART, &n->height_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "depth", 1, PART, &n->depth_mm)) != APP_OK)
         return r;
     return APP_OK;
 }

@@ -18,6 +18,11 @@ static const char *const setout_names[2] = {"surface", "room"};
 
 static const pj_range HEIGHT = {0.0, APP_PROJECT_MAX_ROOM_MM, 0, 0, 0};
 static const pj_range GROUT = {0.0, 100.0, 0, 0, 1};
+/* A pattern turned by more than a full turn is a typing mistake; huge angles also lose every
+ * digit of precision in sin and cos. */
+static const pj_range ROTATION = {-360.0, 360.0, 0, 0, 1};
+/* The set-out point lies near the room: within the room limit of either side of it. */
+static const pj_range ORIGIN = {-APP_PROJECT_MAX_ROOM_MM, APP_PROJECT_MAX_ROOM_MM, 0, 0, 1};
 
 app_result pj_read_product_ref(pj_ctx *c, const cJSON *obj, const char *key, int required,
                                app_product_ref *out)
@@ -54,7 +59,10 @@ static app_result check_surface(pj_ctx *c, const char *s)
     if (!strncmp(s, "wall:", 5)) {
         char *end = NULL;
         long i = strtol(s + 5, &end, 10);
-        if (s[5] >= '0' && s[5] <= '9' && end && *end == '\0') {
+        /* Digits only, without leading zeros: the room names its walls "wall:1", so "wall:01"
+         * would name no surface. */
+        int canonical = s[5] >= '0' && s[5] <= '9' && (s[5] != '0' || s[6] == '\0');
+        if (canonical && end && *end == '\0') {
             if (i < plan->corner_count)
                 return APP_OK;
             pj_path_key(c, "surface");
@@ -83,6 +91,11 @@ static app_result check_surface(pj_ctx *c, const char *s)
         }
     }
     pj_path_key(c, "surface");
+    if (!strncmp(s, "wall:0", 6) && s[6] >= '0' && s[6] <= '9')
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "unknown surface \"%.96s\": a wall number has no leading zeros "
+                       "(\"wall:%ld\")",
+                       s, strtol(s + 5, NULL, 10));
     return pj_fail(c, APP_ERR_SCHEMA,
                    "unknown surface \"%.96s\" (expected floor, ceiling, wall:I, "
                    "prewall:NAME:front|top|left|right, reveal:OPENING:FACE or niche:NAME:FACE)",
@@ -133,8 +146,8 @@ static app_result read_tiling(pj_ctx *c, const cJSON *item, int index, void *out
         (r = pj_get_number(c, item, "grout", 0, GROUT, &t->grout_mm)) != APP_OK ||
         (r = pj_get_color(c, item, "grout_color", 0, t->grout_color)) != APP_OK ||
         (r = pj_get_enum(c, item, "align", 0, pj_align_names, 4, &align)) != APP_OK ||
-        (r = pj_get_vec(c, item, "origin", 0, 2, PJ_ANY, t->origin_mm)) != APP_OK ||
-        (r = pj_get_number(c, item, "rotation", 0, PJ_ANY, &t->rotation_deg)) != APP_OK ||
+        (r = pj_get_vec(c, item, "origin", 0, 2, ORIGIN, t->origin_mm)) != APP_OK ||
+        (r = pj_get_number(c, item, "rotation", 0, ROTATION, &t->rotation_deg)) != APP_OK ||
         (r = pj_get_number(c, item, "from", 0, HEIGHT, &t->from_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "to", 0, HEIGHT, &t->to_mm)) != APP_OK ||
         (r = pj_get_number(c, item, "edge_joint", 0, GROUT, &t->edge_joint_mm)) != APP_OK ||
