@@ -409,7 +409,9 @@ void main()
 
     // eq. 1; with SH9 the ambient intensity is the irradiance over pi (a Lambertian surface)
 #if defined(BAKED_LIGHT)
-    vec3 lit = c_a * (u_bake_from_lightmap != 0 ? texture(u_lightmap, v_lightmap_uv).rgb : v_baked.rgb);
+    // The glossy lobe reflects about C_s of the smooth bounced light too (ref_bake_gather.c).
+    vec3 lit = (c_a + u_mat_specular) *
+               (u_bake_from_lightmap != 0 ? texture(u_lightmap, v_lightmap_uv).rgb : v_baked.rgb);
 #elif defined(SH9_AMBIENT)
     vec3 lit = c_a * max(sh9_irradiance(N), vec3(0.0)) / 3.14159265;
 #else

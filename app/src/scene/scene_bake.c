@@ -36,7 +36,7 @@ const app_bake_stats *app_bake_last_stats(void)
 }
 
 /* Bump when the bake's meaning or the file's layout changes: old files are then ignored. */
-#define BAKE_FORMAT 1
+#define BAKE_FORMAT 2
 static const char MAGIC[8] = "TSBAKE2";
 
 /* FNV-1a, 64 bits (Fowler, Noll and Vo). */
@@ -75,7 +75,7 @@ static uint64_t item_hash(const app_render_list *l, int i, uint64_t base)
     h = fnv(h, mat->diffuse, sizeof mat->diffuse);
     h = fnv(h, mat->emissive, sizeof mat->emissive);
     h = fnv(h, &mat->transparency, sizeof mat->transparency);
-    int flags[3] = {it->double_sided, it->background, it->object < 0};
+    int flags[4] = {it->double_sided, it->background, it->object < 0, it->light_stand_in};
     h = fnv(h, flags, sizeof flags);
     if (it->texture >= 0)
         h = fnv(h, l->textures[it->texture].path, strlen(l->textures[it->texture].path));

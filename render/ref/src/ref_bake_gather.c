@@ -210,10 +210,17 @@ static void hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh,
         for (int k = 0; k < 3; k++)
             direct[k] += factor * l->diffuse[k] * ndl;
     }
+    /* The light arriving at the hit leaves it by the diffuse lobe and by the glossy one, as in
+     * the path tracer (ref_path.c): the normalised Blinn-Phong lobe reflects about C_s of a
+     * smooth field (its directional albedo is near 1 away from grazing), and a reflective
+     * surface sends k_r of it on as a mirror would; I stands for that field's radiance. Direct
+     * light keeps section 1's terms without the highlight, which is far narrower than a texel. */
     const rd_material *mat = &m->material;
+    float kr = m->reflective ? fminf(fmaxf(mat->reflectivity, 0.0f), 1.0f) : 0.0f;
     for (int k = 0; k < 3; k++) {
-        float lit = albedo[k] * (mat->diffuse[k] * direct[k] + mat->ambient[k] * prev[k]);
-        out[k] = fmaxf(mat->emissive[k], lit);
+        float bounce = albedo[k] * mat->ambient[k] + fmaxf(mat->specular[k], 0.0f);
+        float lit = albedo[k] * mat->diffuse[k] * direct[k] + bounce * prev[k];
+        out[k] = fmaxf(mat->emissive[k], (1.0f - kr) * lit + kr * prev[k]);
     }
 }
 
