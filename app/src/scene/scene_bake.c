@@ -53,7 +53,7 @@ static uint64_t fnv(uint64_t h, const void *data, size_t n)
 
 static uint64_t settings_hash(const app_bake_settings *s, const app_render_list *l)
 {
-    int v[2] = {BAKE_FORMAT, s->samples};
+    int v[3] = {BAKE_FORMAT, s->samples, s->bounces > 0 ? s->bounces : REF_DEFAULT_BOUNCES};
     uint64_t h = fnv(FNV_START, v, sizeof v);
     for (int i = 0; i < l->light_count; i++)
         h = fnv(h, &l->lights[i].light, sizeof l->lights[i].light);
@@ -366,6 +366,7 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
     float(*boxes)[6] = NULL;
     int box_count = 0;
     ref_bake_desc d = {.samples = s->samples,
+                       .passes = s->bounces,
                        .progress = s->progress,
                        .lightmapped = lightmapped,
                        .reach_m = APP_BAKE_REACH_M};
