@@ -6,7 +6,9 @@
  * image G = T + b, E[(G - REF0)^2] = b^2 + s^2. The GPU's own error is therefore
  * b^2 = MSE(G, REF0) - MSE(REF0, REF1) / 2, reported as a PSNR (linear RGB, peak 1, as
  * `tessera compare`). Exit 0 when that PSNR is at least MIN_DB and the reference is quiet
- * enough to tell (its noise, s, lies below the bar too); 1 otherwise; 2 on bad input. */
+ * enough to tell: its noise s^2 at most 4 times the bar's squared error (6 dB below it), so
+ * that the subtraction, whose MSEs over n values carry a relative error of about sqrt(2 / n)
+ * (1 % at 96 x 54 x 3), moves the result by a fraction of a dB; 1 otherwise; 2 on bad input. */
 #include "render/image_io.h"
 
 #include <math.h>
@@ -73,7 +75,7 @@ int main(int argc, char **argv)
            "noise %.2f dB; bar %.2f dB\n",
            psnr(m_g), noise_db, bias_db, min_db);
     int ok = 1;
-    if (!(noise_db >= min_db)) {
+    if (!(noise_db >= min_db - 6.0)) {
         fprintf(stderr,
                 "check_noise_agreement: the reference's noise (%.2f dB) hides the bar of "
                 "%.2f dB: trace more paths\n",

@@ -332,9 +332,13 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
     uint64_t scene = fnv(base, "scene", 5), room = fnv(base, "room", 4);
     for (int i = 0; i < l->item_count; i++) {
         keys[i] = item_hash(l, i, base);
-        lightmapped[i] = l->items[i].object < 0;
+        /* Planar meshes get texels: the room's surfaces, and boxes and planes among the
+         * objects (a bath panel, a vanity, a block), whose few vertices would stretch one
+         * value over a whole face and lose the light bounced from the floor near its foot. */
+        rd_shape shape = l->items[i].shape;
+        lightmapped[i] = l->items[i].object < 0 || shape == RD_SHAPE_BOX || shape == RD_SHAPE_PLANE;
         scene = fnv(scene, &keys[i], 8);
-        if (lightmapped[i])
+        if (l->items[i].object < 0)
             room = fnv(room, &keys[i], 8);
     }
     char dir[900];
