@@ -409,7 +409,10 @@ void main()
 
     // eq. 1; with SH9 the ambient intensity is the irradiance over pi (a Lambertian surface)
 #if defined(BAKED_LIGHT)
-    vec3 lit = c_a * (u_bake_from_lightmap != 0 ? texture(u_lightmap, v_lightmap_uv).rgb : v_baked.rgb);
+    // The glossy lobe reflects C_s (N.V)^2 of the smooth bounced light too (ref_bake_gather.c).
+    float n_dot_v = clamp(dot(N, V), 0.0, 1.0);
+    vec3 lit = (c_a + u_mat_specular * (n_dot_v * n_dot_v)) *
+               (u_bake_from_lightmap != 0 ? texture(u_lightmap, v_lightmap_uv).rgb : v_baked.rgb);
 #elif defined(SH9_AMBIENT)
     vec3 lit = c_a * max(sh9_irradiance(N), vec3(0.0)) / 3.14159265;
 #else

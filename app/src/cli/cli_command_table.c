@@ -7,7 +7,7 @@
 /* The options every command that renders through the GPU renderer takes. */
 #define RENDER_SETTINGS                                                                            \
     "quality adaptive planar-mirrors room-probe exact-lamps self-reflections probe-resolution "    \
-    "shadows probes blur ambient backend bake tone exposure white-balance sky time "
+    "shadows probes blur ambient backend bake bake-bounces tone exposure white-balance sky time "
 
 static const cli_command catalog_commands[] = {
     {.name = "search",
@@ -100,7 +100,7 @@ const cli_command cli_commands[] = {
      .synopsis = "PROJECT",
      .min_args = 1,
      .max_args = 1,
-     .options = "stats",
+     .options = "stats bake-bounces",
      .summary = "bakes the indirect light and occlusion into the cache (docs/rendering.md)",
      .help = "  render, demo, print, panorama, video, share and bench bake on their own (cached);\n"
              "  this runs it alone and says what it did. --stats FILE.json writes the counts.\n"},

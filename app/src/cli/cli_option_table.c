@@ -220,6 +220,8 @@ static const cli_option_spec options[] = {
     SWITCH("room-probe", room_probe, "\"depth\" lookups also search the room probe"),
     SWITCH("exact-lamps", exact_lamps, "lamps in sharp reflections intersected exactly"),
     SWITCH("bake", bake, "baked indirect light, cached (default on; TESSERA_BAKE=off)"),
+    INT("bake-bounces", bake_bounces, 1, 64, "N",
+        "bounces of the baked light (default 4, as `reference --bounces`)"),
     CUSTOM("self-reflections", parse_self_reflections, "on|off|N", "on, off or 1 to 16",
            "fixtures trace their own reflections (N lobe directions a sample)"),
     INT("probe-resolution", probe_resolution, 16, 2048, "N", "probe texels a face side"),

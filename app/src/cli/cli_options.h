@@ -36,8 +36,9 @@ typedef struct cli_options {
     int pano_width, pano_height;     /* --panorama-size WxH */
     int render_width, render_height; /* --render-size WxH (print) */
     int supersample;
-    int samples; /* --samples: Monte-Carlo rays per glossy lookup (reference) */
-    int bounces; /* --bounces: indirect bounces of the reference (0 = direct light only) */
+    int samples;      /* --samples: Monte-Carlo rays per glossy lookup (reference) */
+    int bounces;      /* --bounces: indirect bounces of the reference (0 = direct light only) */
+    int bake_bounces; /* --bake-bounces: passes of the bake (0 = REF_DEFAULT_BOUNCES) */
     const struct app_quality *quality; /* --quality: a preset (app/scene/quality.h) */
     rd_switch adaptive, planar_mirrors, room_probe, exact_lamps, self_reflections;
     rd_switch bake;       /* --bake: baked indirect light (default on unless TESSERA_BAKE=off) */

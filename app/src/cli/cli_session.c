@@ -57,7 +57,8 @@ int cli_bake_wanted(const cli_options *o)
 
 void cli_bake_configure(const cli_options *o)
 {
-    app_bake_settings b = {.on = cli_bake_wanted(o), .progress = isatty(2)};
+    app_bake_settings b = {
+        .on = cli_bake_wanted(o), .progress = isatty(2), .bounces = o->bake_bounces};
     app_bake_configure(&b);
 }
 

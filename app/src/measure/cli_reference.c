@@ -20,7 +20,7 @@
 
 void cli_defaults_reference(cli_options *o)
 {
-    o->bounces = 4;
+    o->bounces = REF_DEFAULT_BOUNCES;
 }
 
 /* An extra output (--png, --mask) must be an 8-bit format in a writable folder. */

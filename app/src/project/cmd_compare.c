@@ -116,6 +116,8 @@ static int light_eq(cmp *c, const app_light *x, const app_light *y)
     VEC(attenuation, 3);
     NUM(inner_deg);
     NUM(outer_deg);
+    STR(emitter);
+    NUM(emitter_named);
     return 1;
 }
 

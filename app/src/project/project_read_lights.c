@@ -84,6 +84,15 @@ static app_result read_rect(pj_ctx *c, const cJSON *item, app_light *l)
     return APP_OK;
 }
 
+/* Objects are read before lights (project_parse.c), so an emitter can be checked here. */
+static int emitter_exists(const app_project *p, const char *name)
+{
+    for (int i = 0; i < p->object_count; i++)
+        if (!strcmp(p->objects[i].name, name))
+            return 1;
+    return 0;
+}
+
 static app_result read_light(pj_ctx *c, const cJSON *item, int index, void *out)
 {
     app_light *l = out;
@@ -112,6 +121,17 @@ static app_result read_light(pj_ctx *c, const cJSON *item, int index, void *out)
     if (l->attenuation[0] == 0 && l->attenuation[1] == 0 && l->attenuation[2] == 0) {
         pj_path_key(c, "attenuation");
         return pj_fail(c, APP_ERR_SCHEMA, "at least one coefficient must be > 0");
+    }
+    if (cJSON_GetObjectItemCaseSensitive(item, "emitter")) {
+        l->emitter_named = 1;
+        if ((r = pj_get_string(c, item, "emitter", 0, 1, l->emitter, sizeof l->emitter)) != APP_OK)
+            return r;
+        if (l->emitter[0] && !emitter_exists(c->p, l->emitter)) {
+            pj_path_key(c, "emitter");
+            return pj_fail(c, APP_ERR_SCHEMA,
+                           "\"%s\" names no object (the lamp showing light \"%s\")", l->emitter,
+                           l->name);
+        }
     }
     if (l->type == APP_LIGHT_SPOT) {
         if ((r = pj_get_float(c, item, "inner", 0, SPOT_ANGLE, &l->inner_deg)) != APP_OK ||

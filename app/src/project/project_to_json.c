@@ -292,6 +292,8 @@ static void put_light(jb *b, cJSON *list, const app_light *l)
         put_num(b, o, "inner", l->inner_deg, 1);
         put_num(b, o, "outer", l->outer_deg, 1);
     }
+    if (l->emitter_named)
+        put_str(b, o, "emitter", l->emitter, sizeof l->emitter);
 }
 
 static void put_camera(jb *b, cJSON *list, const app_camera *cam)

@@ -200,6 +200,8 @@ static app_result build(app_list_builder *b, const app_project *p, char *err, si
         r = app_list_add_objects(b, p, err, err_size);
     if (r == APP_OK)
         r = add_lights(l, p);
+    if (r == APP_OK)
+        app_list_mark_lamp_glows(l, p);
     return r;
 }
 

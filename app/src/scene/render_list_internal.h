@@ -41,5 +41,8 @@ app_render_item *app_list_add_item(app_list_builder *b, int mesh, const char *la
 /* The project's objects, in order (render_list_objects.c). */
 app_result app_list_add_objects(app_list_builder *b, const app_project *p, char *err,
                                 size_t err_size);
+/* Marks the glowing parts of each project light's lamp as stand-ins: they show the light, the
+ * light lights (render_list_glow.c). */
+void app_list_mark_lamp_glows(app_render_list *list, const app_project *p);
 
 #endif

@@ -36,7 +36,7 @@ const app_bake_stats *app_bake_last_stats(void)
 }
 
 /* Bump when the bake's meaning or the file's layout changes: old files are then ignored. */
-#define BAKE_FORMAT 1
+#define BAKE_FORMAT 3
 static const char MAGIC[8] = "TSBAKE2";
 
 /* FNV-1a, 64 bits (Fowler, Noll and Vo). */
@@ -53,7 +53,7 @@ static uint64_t fnv(uint64_t h, const void *data, size_t n)
 
 static uint64_t settings_hash(const app_bake_settings *s, const app_render_list *l)
 {
-    int v[2] = {BAKE_FORMAT, s->samples};
+    int v[3] = {BAKE_FORMAT, s->samples, s->bounces > 0 ? s->bounces : REF_DEFAULT_BOUNCES};
     uint64_t h = fnv(FNV_START, v, sizeof v);
     for (int i = 0; i < l->light_count; i++)
         h = fnv(h, &l->lights[i].light, sizeof l->lights[i].light);
@@ -75,7 +75,7 @@ static uint64_t item_hash(const app_render_list *l, int i, uint64_t base)
     h = fnv(h, mat->diffuse, sizeof mat->diffuse);
     h = fnv(h, mat->emissive, sizeof mat->emissive);
     h = fnv(h, &mat->transparency, sizeof mat->transparency);
-    int flags[3] = {it->double_sided, it->background, it->object < 0};
+    int flags[4] = {it->double_sided, it->background, it->object < 0, it->light_stand_in};
     h = fnv(h, flags, sizeof flags);
     if (it->texture >= 0)
         h = fnv(h, l->textures[it->texture].path, strlen(l->textures[it->texture].path));
@@ -332,9 +332,13 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
     uint64_t scene = fnv(base, "scene", 5), room = fnv(base, "room", 4);
     for (int i = 0; i < l->item_count; i++) {
         keys[i] = item_hash(l, i, base);
-        lightmapped[i] = l->items[i].object < 0;
+        /* Planar meshes get texels: the room's surfaces, and boxes and planes among the
+         * objects (a bath panel, a vanity, a block), whose few vertices would stretch one
+         * value over a whole face and lose the light bounced from the floor near its foot. */
+        rd_shape shape = l->items[i].shape;
+        lightmapped[i] = l->items[i].object < 0 || shape == RD_SHAPE_BOX || shape == RD_SHAPE_PLANE;
         scene = fnv(scene, &keys[i], 8);
-        if (lightmapped[i])
+        if (l->items[i].object < 0)
             room = fnv(room, &keys[i], 8);
     }
     char dir[900];
@@ -366,6 +370,7 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
     float(*boxes)[6] = NULL;
     int box_count = 0;
     ref_bake_desc d = {.samples = s->samples,
+                       .passes = s->bounces,
                        .progress = s->progress,
                        .lightmapped = lightmapped,
                        .reach_m = APP_BAKE_REACH_M};

@@ -206,7 +206,7 @@ static ref_result bake(ref_scene *s, const ref_bake_desc *d, ref_bake *b)
 {
     double t0 = seconds_now();
     int samples = d->samples > 0 ? d->samples : 64;
-    int passes = d->passes > 0 ? d->passes : 2;
+    int passes = d->passes > 0 ? d->passes : REF_DEFAULT_BOUNCES;
     float texel = d->texel_m > 0.0f ? d->texel_m : 0.03f;
     float ao = d->ao_distance_m > 0.0f ? d->ao_distance_m : 0.5f;
     bake_layout l = {0};

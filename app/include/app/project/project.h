@@ -144,7 +144,17 @@ typedef struct app_light {
     double axis[3];             /* rect: the direction of its width, unit, square to direction;
                                    default horizontal (direction x Z), or X for a vertical light */
     double height_axis[3];      /* the direction of its height (rect: direction x axis) */
+    /* The object whose glowing (emissive) parts show this light: a pendant's shade, a mirror
+       light's strip. They glow but light nothing; the light is this record, in the GPU, the
+       bake and the tracer alike (docs/project-format.md, "Lights"). Unnamed (emitter_named 0):
+       the emissive object nearest the light within APP_LIGHT_EMITTER_REACH_MM of its box;
+       named "": none, so a glowing shape there stays an area light of the tracer. */
+    char emitter[64];
+    int emitter_named;
 } app_light;
+
+/* How far a light may sit outside the box of the lamp that shows it to be found by position. */
+#define APP_LIGHT_EMITTER_REACH_MM 250.0
 
 typedef struct app_camera {
     char name[64];

@@ -40,7 +40,8 @@ typedef struct app_render_item {
     rd_shape shape;       /* the unit shape the mesh approximates (MESH when none) */
     int double_sided;     /* an open sheet or a model: both sides drawn */
     int background;       /* a room surface: drawn after the rest, casts no shadow */
-    int light_stand_in;   /* emits through lights of the list (a window's exterior panel) */
+    int light_stand_in;   /* emits through lights of the list (a window's exterior panel, a
+                             lamp's glowing shade: render_list_glow.c) */
     int group;            /* parts of one fixture share a group > 0: one probe for them */
     rd_probe_desc probe;  /* static_map is unset: see probe_map */
     int probe_map;        /* index into app_render_list.probe_maps, -1 = none */

@@ -17,6 +17,7 @@ typedef struct app_bake_settings {
     int on;
     int progress; /* a progress bar on stderr */
     int samples;  /* hemisphere rays per point and pass; 0 = ref_bake's default */
+    int bounces;  /* gathering passes; 0 = REF_DEFAULT_BOUNCES, the reference's default */
 } app_bake_settings;
 
 void app_bake_configure(const app_bake_settings *s);

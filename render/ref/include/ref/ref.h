@@ -125,6 +125,9 @@ typedef struct ref_render_desc {
 } ref_render_desc;
 
 #define REF_MAX_BOUNCES 1024
+/* The indirect bounces of `tessera reference` and of the bake (ref_bake.h) by default: the
+ * GPU's baked image carries the same light as the ground truth it is measured against. */
+#define REF_DEFAULT_BOUNCES 4
 
 typedef struct ref_image {
     int width, height;

@@ -64,7 +64,7 @@ typedef struct ref_bake {
 
 typedef struct ref_bake_desc {
     int samples;         /* hemisphere rays per point and pass; 0 = 64 */
-    int passes;          /* gathering passes (bounces); 0 = 2 */
+    int passes;          /* gathering passes (bounces); 0 = REF_DEFAULT_BOUNCES */
     float texel_m;       /* lightmap texel side; 0 = 0.03 m */
     float ao_distance_m; /* hits nearer than this occlude; 0 = 0.5 m */
     int threads;         /* 0 = the online processors */
