@@ -73,8 +73,10 @@ click_in() {
     note "click $1 $PX,$PY"
 }
 
+# The qualities are draft and interactive (1, 2): final and print are for stills, and their
+# probes and shadow maps are a step of some 170 MB in the working set that would hide a leak.
 act_key() {
-    set -- v Tab 1 2 1 2 3 F1 F2 F3 F4 F5 Delete r t p Escape Return w a s d
+    set -- v Tab 1 2 F1 F2 F3 F4 F5 Delete r t p Escape Return w a s d
     pick $#
     shift "$R"
     case "$1" in
@@ -157,10 +159,11 @@ act_column() {
     if [ "$R" -eq 0 ]; then drag 1 "$col"; else click_in "$col"; fi
 }
 
-# A menu of the bar (File is left out: its Quit would end the soak), then one of its items or
-# Escape. Items are 17 px apart from y = 33.
+# A menu of the bar, then one of its items or Escape (items are 17 px apart from y = 33). File
+# is left out (its Quit would end the soak), and Render (its final and print qualities, see
+# act_key, and its jobs, which run in other processes).
 act_menu() {
-    set -- 69 113 165 222 273
+    set -- 69 113 165 273
     pick $#
     shift "$R"
     mx=$1

@@ -46,6 +46,8 @@ segments=$(((seconds + segment - 1) / segment))
         echo "wait-file $out/seg-$i"
         i=$((i + 1))
     done
+    echo "quality draft" # the quality it started with: the end's memory is like for like
+    echo "wait 30"
     echo "save $out/final.json"
     echo "screenshot $out/end.png"
     echo "quit"
