@@ -223,7 +223,12 @@ monkey_act() {
     pick 100
     k=$R
     if [ "$k" -ge 61 ] && [ "$k" -lt 77 ] && [ "$search_x" -eq 0 ]; then
-        k=8 # the catalog search is not showing: a drag in a view instead
+        # The catalog search is not showing (the tile action scrolled the column down to its
+        # Tiles): the column back up, for the next segment's locate.
+        xdotool mousemove $((right_x + right_w / 2)) $((right_y + 100)) sleep 0.1 \
+            click --repeat 10 --delay 40 4
+        note "wheel 4 x10 right (the catalog search hidden)"
+        return
     fi
     pane
     if [ "$k" -lt 8 ]; then

@@ -8,7 +8,9 @@
 # - the resident memory (VmRSS, sampled every 2 s into $OUT/rss.csv) grew by less than
 #   SOAK_MAX_GROWTH_MB (default 50) from the end of the warm-up (SOAK_WARMUP seconds, default
 #   60, or a third of a shorter run) to the end;
-# - the final save and the project the monkey saved with Ctrl+S pass `tessera check`.
+# - the final save and the project the monkey saved with Ctrl+S read back and validate in
+#   `tessera check` (exit 0 or 1: design findings such as collisions the monkey made are
+#   reported, not failed; exit 2 fails).
 # The script holds the window in segments of 10 s (wait-file), between which it logs where the
 # catalog search is and, every sixth, takes a screenshot ($OUT/shot-N.png; $OUT/end.png last).
 # It writes $OUT/summary.txt: the figures docs/benchmarks.md quotes.
@@ -126,8 +128,16 @@ frames=$(sed -n 's/^tessera: gl-check: \([0-9]*\) frames, .*/\1/p' "$log")
 gl_errors=$(sed -n 's/^tessera: gl-check: [0-9]* frames, \([0-9]*\) GL errors/\1/p' "$log")
 test -n "$gl_errors" || fail "the window did not report its GL error count"
 test "${gl_errors:-1}" -eq 0 || fail "$gl_errors GL errors"
-if grep -qE 'ERROR: (Address|Leak)Sanitizer|runtime error:|SUMMARY: (Address|Undefined)' "$log"; then
+# A leak report whose every frame is in "<unknown module>" is a library unloaded before the
+# report (Mesa's driver, dlclosed at exit: 240 bytes in 3 allocations on this machine, the same
+# in every run); it is noted, not failed. Any other sanitizer report fails.
+foreign_leaks=$(awk '/ERROR: LeakSanitizer/ { on = 1 } on && /^ *#[1-9][0-9]* / && !/<unknown module>/ { n++ }
+    END { print n + 0 }' "$log")
+if grep -qE 'ERROR: AddressSanitizer|runtime error:|SUMMARY: UndefinedBehavior' "$log" ||
+    { grep -q 'ERROR: LeakSanitizer' "$log" && [ "$foreign_leaks" -gt 0 ]; }; then
     fail "a sanitizer report in $log"
+elif grep -q 'ERROR: LeakSanitizer' "$log"; then
+    echo "note: LeakSanitizer reports leaks only in unloaded libraries: $(grep 'SUMMARY: AddressSanitizer' "$log")"
 fi
 
 # Memory: the sample at the end of the warm-up against the last one.
@@ -140,16 +150,33 @@ if [ -z "$rss_warm" ] || [ -z "$rss_end" ]; then
     rss_warm=0 rss_end=0
 fi
 growth_kb=$((rss_end - rss_warm))
-test "$growth_kb" -lt $((max_growth_mb * 1024)) ||
+# AddressSanitizer keeps freed memory in quarantine (256 MB by default): its build's memory is
+# reported, not judged.
+if grep -q __asan_init "$tessera"; then
+    echo "note: a sanitizer build: memory growth of $((growth_kb / 1024)) MB not judged"
+elif [ "$growth_kb" -ge $((max_growth_mb * 1024)) ]; then
     fail "resident memory grew by $((growth_kb / 1024)) MB after ${warm} s (limit $max_growth_mb MB)"
+fi
 
-# The saved projects pass `tessera check`.
+# The saved projects read back and validate in `tessera check`: exit 2 (unreadable or invalid)
+# fails. Exit 1 is accepted: the monkey moves fixtures into each other and into door swings, and
+# the window lets a planner do so, showing those findings (errors of the design, not of the
+# file); their count goes into the summary.
 test -s "$out/final.json" || fail "the final save wrote nothing"
-"$tessera" check "$out/final.json" >"$out/check-final.txt" 2>&1 ||
-    { cat "$out/check-final.txt"; fail "the final save does not pass tessera check"; }
+check_file() {
+    set +e
+    "$tessera" check "$1" >"$2" 2>&1
+    check_rc=$?
+    set -e
+    if [ "$check_rc" -ge 2 ]; then
+        cat "$2"
+        fail "$1 does not pass tessera check (exit $check_rc)"
+    fi
+}
+check_file "$out/final.json" "$out/check-final.txt"
+final_errors=$(grep -c '^error' "$out/check-final.txt" || true)
 saves=$(grep -c 'key ctrl+s' "$out/actions.txt" || true)
-"$tessera" check "$out/soak.json" >"$out/check-soak.txt" 2>&1 ||
-    { cat "$out/check-soak.txt"; fail "the project saved with Ctrl+S does not pass tessera check"; }
+check_file "$out/soak.json" "$out/check-soak.txt"
 test -s "$out/end.png" || fail "no final screenshot"
 
 # The monkey acted on the window: the end differs from the first screenshot the script took
@@ -167,6 +194,8 @@ selections=$(grep -c '^tessera: selected' "$log" || true)
     echo "rss_kb at ${warm} s: $rss_warm; at 60 s: ${rss_minute:-n/a}; at the end: $rss_end; peak: $rss_max"
     echo "growth_kb after warm-up: $growth_kb"
     echo "ctrl+s presses $saves; selections logged $selections"
+    echo "tessera check of the final save: $final_errors design errors ($(grep '^error' "$out/check-final.txt" |
+        awk '{ print $2 }' | sort | uniq -c | awk '{ printf "%s%s %s", (NR > 1 ? ", " : ""), $2, $1 }'))"
 } >"$out/summary.txt"
 cat "$out/summary.txt"
 test $fail -eq 0 || exit 1
