@@ -6,8 +6,9 @@
 # - the window counted 0 GL errors (KHR_debug callback, render/gl_check.h);
 # - its log has no sanitizer report (an ASan/UBSan build of tessera may be given);
 # - the resident memory (VmRSS, sampled every 2 s into $OUT/rss.csv) grew by less than
-#   SOAK_MAX_GROWTH_MB (default 50) from the end of the warm-up (SOAK_WARMUP seconds, default
-#   60, or a third of a shorter run) to the end;
+#   SOAK_MAX_GROWTH_MB (default 50) from the end of the warm-up (SOAK_WARMUP seconds of the
+#   monkey, default 60, or a third of a run shorter than 3 minutes) to the end; the script
+#   shows every view and quality once before the monkey starts;
 # - the final save and the project the monkey saved with Ctrl+S read back and validate in
 #   `tessera check` (exit 0 or 1: design findings such as collisions the monkey made are
 #   reported, not failed; exit 2 fails).
@@ -39,8 +40,23 @@ log="$out/stderr.txt"
 cp "$project" "$out/soak.json"
 segments=$(((seconds + segment - 1) / segment))
 {
+    # Every view and quality the monkey reaches, once, before it starts: their first use
+    # (the elevation and its tile panel, walking, the interactive preset) belongs to the
+    # warm-up, not to the growth.
     echo "quality draft"
     echo "wait 2"
+    echo "view elevation"
+    echo "wait 10"
+    echo "view plan"
+    echo "wait 10"
+    echo "mode walk"
+    echo "view 3d"
+    echo "wait 10"
+    echo "mode orbit"
+    echo "quality interactive"
+    echo "wait 10"
+    echo "quality draft"
+    echo "wait 5"
     i=1
     while [ $i -le $segments ]; do
         echo "locate widget-if-drawn search"
@@ -89,10 +105,11 @@ wait_log() {
 
 . "$here/soak_monkey.sh"
 exec 3<"$out/random.txt"
-actions=0
+actions=0 monkey_t0=0
 seg=1
 while [ $seg -le $segments ]; do
     wait_log "waiting for $out/seg-$seg\$"
+    if [ $seg -eq 1 ]; then monkey_t0=$(($(date +%s) - soak_start)); fi
     until_t=$(($(date +%s) + segment))
     while [ "$(date +%s)" -lt "$until_t" ]; do
         monkey_act
@@ -141,10 +158,10 @@ elif grep -q 'ERROR: LeakSanitizer' "$log"; then
 fi
 
 # Memory: the sample at the end of the warm-up against the last one.
-rss_warm=$(awk -F, -v t="$warm" 'NR > 1 && $1 >= t { print $2; exit }' "$out/rss.csv")
+rss_warm=$(awk -F, -v t="$((monkey_t0 + warm))" 'NR > 1 && $1 >= t { print $2; exit }' "$out/rss.csv")
 rss_end=$(awk -F, 'NR > 1 { v = $2 } END { print v }' "$out/rss.csv")
 rss_max=$(awk -F, 'NR > 1 && $2 > m { m = $2 } END { print m + 0 }' "$out/rss.csv")
-rss_minute=$(awk -F, 'NR > 1 && $1 >= 60 { print $2; exit }' "$out/rss.csv")
+rss_minute=$(awk -F, -v t="$((monkey_t0 + 60))" 'NR > 1 && $1 >= t { print $2; exit }' "$out/rss.csv")
 if [ -z "$rss_warm" ] || [ -z "$rss_end" ]; then
     fail "too few memory samples in $out/rss.csv"
     rss_warm=0 rss_end=0
@@ -191,7 +208,7 @@ selections=$(grep -c '^tessera: selected' "$log" || true)
         awk '{ printf "%s%s %s", (NR > 1 ? ", " : ""), $2, $1 }'))"
     echo "frames ${frames:-?}"
     echo "gl_errors ${gl_errors:-?}"
-    echo "rss_kb at ${warm} s: $rss_warm; at 60 s: ${rss_minute:-n/a}; at the end: $rss_end; peak: $rss_max"
+    echo "monkey from ${monkey_t0} s; rss_kb ${warm} s into it: $rss_warm; 60 s into it: ${rss_minute:-n/a}; at the end: $rss_end; peak: $rss_max"
     echo "growth_kb after warm-up: $growth_kb"
     echo "ctrl+s presses $saves; selections logged $selections"
     echo "tessera check of the final save: $final_errors design errors ($(grep '^error' "$out/check-final.txt" |
