@@ -1,5 +1,6 @@
 /* The plan view's geometry (ui/plan_view.h): the screen mapping round-trips, zoom keeps the
- * point under the pointer, hits find the right corner, wall and fixture, exact lengths. */
+ * point under the pointer, hits find the right corner, wall and fixture, exact lengths, the
+ * room's inside. */
 #include "check.h"
 #include "ui/plan_view.h"
 
@@ -77,5 +78,15 @@ int main(void)
     ui_plan_wall_moved(&plan, 3, -300, &a, &b);
     CHECK(fabs(a.x - 1200) < 1e-9 && a.y == 1500 && fabs(b.x - 1200) < 1e-9 && b.y == 4000);
     CHECK(ui_plan_wall_offset(&plan, 9, 100, 100) == 0); /* no such wall */
+
+    /* Inside the L, not in its notch nor beyond its walls (drops and drags outside the room
+     * are refused). */
+    CHECK(ui_plan_contains(&plan, 500, 500));
+    CHECK(ui_plan_contains(&plan, 3900, 1000));
+    CHECK(ui_plan_contains(&plan, 1000, 3900));
+    CHECK(!ui_plan_contains(&plan, 3000, 3000)); /* the notch */
+    CHECK(!ui_plan_contains(&plan, 1979, -1180));
+    CHECK(!ui_plan_contains(&plan, -10, 2000));
+    CHECK(!ui_plan_contains(NULL, 500, 500));
     return check_report("ui_plan_view");
 }

@@ -4,6 +4,7 @@
 #include "planner.h"
 
 #include "gui.h"
+#include "input_queue.h"
 
 #include <GLFW/glfw3.h>
 #include <stdio.h>
@@ -14,7 +15,8 @@ enum { WAIT_FILE_SECONDS = 60 };
 
 /* Done once PATH exists and every event sent before it was handled: the driver creates PATH
  * after its last event reached the X server, so one more frame's poll has them all queued, and
- * the script goes on when the queue is empty (a slow frame can leave clicks waiting). */
+ * the script goes on when the queue is empty (a slow frame can leave clicks waiting). It fails
+ * after WAIT_FILE_SECONDS without the file and without any input. */
 int planner_wait_file(planner *p, const ui_action *a)
 {
     static int waiting_action = -1, file_seen;
@@ -33,6 +35,8 @@ int planner_wait_file(planner *p, const ui_action *a)
         return 0;
     }
     file_seen = file_seen || access(a->text, F_OK) == 0;
+    if (ui_gui_input()->count > 0 || ui_gui_input_pending() > 0)
+        since = now; /* the driver is at work: a long one (the soak) may take minutes */
     if (now - since > WAIT_FILE_SECONDS) {
         fprintf(stderr, "tessera: script line %d: %s within %d s\n", a->line,
                 file_seen ? "the input was not handled" : "the file did not appear",
@@ -64,11 +68,17 @@ static int locate_fixture(planner *p, const char *name)
     return 1;
 }
 
-static int locate_widget(planner *p, const char *label)
+/* required = 0 (locate widget-if-drawn): a widget not drawn is logged, not a failure (the soak
+ * asks between segments, when the monkey may have hidden the panels). */
+static int locate_widget(planner *p, const char *label, int required)
 {
     float r[4];
     int visible;
     if (!ui_gui_locate(label, r, &visible)) {
+        if (!required) {
+            fprintf(stderr, "tessera: locate widget \"%s\" not drawn\n", label);
+            return 0;
+        }
         snprintf(p->status, sizeof p->status, "no button or text field \"%s\" is drawn", label);
         return 1;
     }
@@ -92,8 +102,10 @@ int planner_input_action(planner *p, const ui_action *a)
     if (a->kind == UI_ACT_LOCATE) {
         if (!strncmp(a->text, "fixture ", 8))
             return locate_fixture(p, a->text + 8);
+        if (!strncmp(a->text, "widget-if-drawn ", 16))
+            return locate_widget(p, a->text + 16, 0);
         if (!strncmp(a->text, "widget ", 7))
-            return locate_widget(p, a->text + 7);
+            return locate_widget(p, a->text + 7, 1);
         snprintf(p->status, sizeof p->status, "locate widget LABEL or locate fixture NAME");
         return 1;
     }

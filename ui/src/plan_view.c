@@ -166,3 +166,16 @@ double ui_plan_snap_grid(double v_mm, double grid_mm)
 {
     return grid_mm > 0 ? round(v_mm / grid_mm) * grid_mm : v_mm;
 }
+
+int ui_plan_contains(const app_room_plan *plan, double x_mm, double y_mm)
+{
+    /* The crossing test (W. R. Franklin, "PNPOLY - Point Inclusion in Polygon Test"). */
+    int inside = 0, n = plan ? plan->corner_count : 0;
+    for (int i = 0, j = n - 1; i < n; j = i++) {
+        const app_point2 *a = &plan->corners[i], *b = &plan->corners[j];
+        if ((a->y > y_mm) != (b->y > y_mm) &&
+            x_mm < (b->x - a->x) * (y_mm - a->y) / (b->y - a->y) + a->x)
+            inside = !inside;
+    }
+    return inside;
+}

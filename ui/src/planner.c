@@ -174,6 +174,7 @@ static int frame(planner *p)
     planner_files_frame(p, fw, fh, dt); /* dialogs and the job panel, presenting or not */
     planner_autosave_tick(p, now);
     ui_gui_render();
+    planner_gl_check_frame();
     if (p->script.count && planner_script_step(p))
         return 1;
     glfwSwapBuffers(p->window);
@@ -232,6 +233,7 @@ int ui_run(const ui_options *o)
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    planner_gl_check_hint();
     int w = o->width > 0 ? o->width : 1280, h = o->height > 0 ? o->height : 720;
     GLFWmonitor *mon = o->fullscreen ? glfwGetPrimaryMonitor() : NULL;
     if (mon) {
@@ -247,6 +249,7 @@ int ui_run(const ui_options *o)
     }
     glfwMakeContextCurrent(p.window);
     glfwSwapInterval(0); /* measured frame times are the renderer's, not the display's */
+    planner_gl_check_start();
     glfwSetWindowUserPointer(p.window, &p);
     glfwSetWindowCloseCallback(p.window, on_close);
     if (rd_context_create(
@@ -301,6 +304,8 @@ done:
         app_scene_release(p.ctx, &p.scene);
     if (p.ctx)
         rd_context_destroy(p.ctx);
+    if (p.window && planner_gl_check_finish(p.frame_count) && rc == 0)
+        rc = 1;
     app_project_free_all(&p.project);
     if (p.window)
         glfwDestroyWindow(p.window);

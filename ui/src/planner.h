@@ -313,6 +313,14 @@ void planner_camera_sync(planner *p);
 /* Walks (mm) among the walls and the fixtures; 1 when the whole move was made. */
 int planner_walk_move(planner *p, double forward_mm, double right_mm);
 
+/* gl_check_window.c (TESSERA_GL_CHECK=1): the debug context's hint before the window is made,
+ * counting from the context's start, the frame's poll, and at exit the summary; 1 when any GL
+ * error was seen. */
+void planner_gl_check_hint(void);
+void planner_gl_check_start(void);
+void planner_gl_check_frame(void);
+int planner_gl_check_finish(long frames);
+
 /* planner.c */
 /* The renderer's view of what the window shows, at a size, with the quality's supersampling. */
 void planner_view(const planner *p, int width, int height, rd_view *v);

@@ -29,6 +29,13 @@ static const app_fixture *fixture_of(const planner *p, int object)
     return NULL;
 }
 
+static int inside_room(const planner *p, double x_mm, double y_mm)
+{
+    app_point2 box[4];
+    app_room_plan fallback;
+    return ui_plan_contains(planner_plan(p, box, &fallback), x_mm, y_mm);
+}
+
 int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm)
 {
     int i = strcmp(name, "-") ? object_index(p, name) : p->plan_o.selected_object;
@@ -46,9 +53,13 @@ int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm)
      * to a corner within 300 mm, then 200 mm from a neighbour within 300 mm. */
     snprintf(line, sizeof line, "move \"%s\" %.0f %.0f %.0f snap wall corner neighbour", o->name,
              ui_plan_snap_grid(x, GRID_MM), ui_plan_snap_grid(y, GRID_MM), o->position_mm[2]);
-    /* No wall near: the move without snapping. */
+    /* No wall near: the move without snapping, inside the room only. */
     if (planner_edit(p, line) == 0)
         return 0;
+    if (!inside_room(p, x_mm, y_mm)) {
+        planner_status(p, "%s: outside the room, not moved", o->name);
+        return 1;
+    }
     snprintf(line, sizeof line, "move \"%s\" %.0f %.0f %.0f", o->name,
              ui_plan_snap_grid(x, GRID_MM), ui_plan_snap_grid(y, GRID_MM), o->position_mm[2]);
     return planner_edit(p, line);
@@ -70,7 +81,11 @@ int planner_place_selected(planner *p, double x_mm, double y_mm)
     snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f snap wall", prod->manufacturer,
              prod->article, variant, x_mm, y_mm);
     int rc = planner_edit(p, line);
-    if (rc) {
+    if (rc && !inside_room(p, x_mm, y_mm)) {
+        planner_status(p, "%s: outside the room, nothing placed", prod->name);
+        return 1;
+    }
+    if (rc) { /* no wall near: where it was dropped */
         snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f", prod->manufacturer,
                  prod->article, variant, x_mm, y_mm);
         rc = planner_edit(p, line);

@@ -57,12 +57,14 @@
  *   tile-panel on|off      the tile panel over the 3D view too (it shows in the elevation)
  *   expect-probe MATERIAL UPDATE  fail unless the material's probe updates so (every-frame,
  *                          once, on-change, time-sliced, static, default; docs/editing.md)
- *   wait-file PATH         hold the script until PATH exists (60 s at most) and the input
- *                          sent before it was handled, the window taking live input meanwhile:
- *                          an outside driver (xdotool in the input tests) works the window,
- *                          then creates PATH
+ *   wait-file PATH         hold the script until PATH exists and the input sent before it
+ *                          was handled, the window taking live input meanwhile (the pointer
+ *                          chooses the active pane): an outside driver (xdotool in the input
+ *                          tests) works the window, then creates PATH; 60 s with neither the
+ *                          file nor any input fail the script
  *   locate widget LABEL... log where a button or text field labelled LABEL is, in window
  *                          pixels, and whether its panel shows it (input_script.c)
+ *   locate widget-if-drawn LABEL...  the same, logging "not drawn" instead of failing
  *   locate fixture NAME... log where a fixture's centre is in the plan view (view plan first)
  *   expect-search TEXT...  fail unless the catalog browser's search field holds exactly TEXT
  *   panes both|one         plan and 3D side by side, or the active view alone (View menu)

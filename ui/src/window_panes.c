@@ -42,7 +42,8 @@ static void log_layout(planner *p, int width, int height)
 }
 
 /* The pane under a pointer that moved (no button held, no panel or menu under it) becomes the
- * active one. A script leaves the pointer alone: its `view` actions choose. */
+ * active one. A script leaves the pointer alone: its `view` actions choose; while it waits for
+ * outside input (wait-file), the pointer chooses as it does for a hand. */
 static void follow_pointer(planner *p)
 {
     double x, y;
@@ -50,7 +51,7 @@ static void follow_pointer(planner *p)
     int moved = x != p->pointer_seen[0] || y != p->pointer_seen[1];
     p->pointer_seen[0] = x;
     p->pointer_seen[1] = y;
-    int scripted = p->script.count && p->action < p->script.count;
+    int scripted = !planner_input_live(p);
     if (!moved || scripted || p->dragging || p->drop.active || ui_gui_wants_mouse())
         return;
     for (int b = GLFW_MOUSE_BUTTON_1; b <= GLFW_MOUSE_BUTTON_LAST; b++)

@@ -47,6 +47,10 @@ app_point2 ui_plan_corner_for_length(const app_room_plan *plan, int wall, double
 double ui_plan_wall_offset(const app_room_plan *plan, int wall, double dx, double dy);
 void ui_plan_wall_moved(const app_room_plan *plan, int wall, double offset_mm, app_point2 *start,
                         app_point2 *end);
+/* 1 when the plan point lies inside the room's walls (even-odd rule over the corners): a
+ * product dropped or a fixture dragged outside, beyond the walls' snapping distance, is
+ * refused rather than left outside the room. */
+int ui_plan_contains(const app_room_plan *plan, double x_mm, double y_mm);
 /* Rounds to a grid (mm), for dragged corners and fixtures. */
 double ui_plan_snap_grid(double v_mm, double grid_mm);
 

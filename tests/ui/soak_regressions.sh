@@ -1,0 +1,40 @@
+#!/bin/sh
+# What the window's soak found, each kept as a scripted session under Xvfb:
+# 1. a product dropped on the plan far outside the room (beyond the walls' snapping distance)
+#    was placed there, and the saved project failed `tessera check` (outside-room): now refused;
+# 2. the same for a fixture dragged there.
+#   usage: soak_regressions.sh TESSERA OUTDIR SCREENSHOT_CHECK PROJECT
+set -e
+. "$(dirname "$0")/session_lib.sh"
+session_start "$@"
+project=$4
+
+# expect_refused NAME MESSAGE: the script $out/NAME.txt fails on its last line with MESSAGE,
+# and its save before that action holds the project unchanged.
+expect_refused() {
+    set +e
+    xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open "$project" --size 1024x600 \
+        --script "$out/$1.txt" 2>"$out/$1.log"
+    rc=$?
+    set -e
+    cat "$out/$1.log"
+    test "$rc" -eq 1 || { echo "FAIL: $1: the window exited $rc, not 1 (the action was taken)"; exit 1; }
+    grep -q "$2" "$out/$1.log" || { echo "FAIL: $1: no \"$2\""; exit 1; }
+}
+
+cat >"$out/drop.txt" <<SCRIPT
+quality draft
+view plan
+search basin
+select 1
+place-selected 1979 -1180
+SCRIPT
+expect_refused drop 'outside the room, nothing placed'
+
+cat >"$out/drag.txt" <<SCRIPT
+quality draft
+view plan
+drag wc 1979 -1180
+SCRIPT
+expect_refused drag 'wc: outside the room, not moved'
+echo "soak_regressions: ok"
