@@ -53,7 +53,7 @@ static int ends_early(const char *text, size_t len)
     return in_string || depth > 0;
 }
 
-static app_result parse_json(pj_ctx *c, const char *text, size_t len, cJSON **out)
+app_result pj_parse_json(pj_ctx *c, const char *text, size_t len, cJSON **out)
 {
     size_t first = 0;
     while (first < len && is_json_space(text[first]))
@@ -100,11 +100,18 @@ static void set_project_path(app_project *p, const char *path)
     free(real);
 }
 
-static app_result read_root(pj_ctx *c, cJSON *root, app_project *p)
+app_result pj_read_root(pj_ctx *c, cJSON *root, app_project *p)
 {
     if (!cJSON_IsObject(root))
         return pj_fail(c, APP_ERR_SCHEMA, "expected an object (a Tessera project), got %s",
                        pj_type_name(root));
+    if (cJSON_GetObjectItemCaseSensitive(root, "rooms")) {
+        pj_path_key(c, "rooms");
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "a flat of several rooms: this command reads one room (check, "
+                       "quantities, render and print read flats; docs/project-format.md "
+                       "\"Flats\")");
+    }
     app_result r = pj_migrate(c, root, &p->file_version);
     if (r != APP_OK)
         return r;
@@ -144,13 +151,13 @@ app_result pj_parse_text(const char *json_text, size_t len,
         return pj_fail_file(&c, APP_ERR_IO, "too large (%zu bytes, the limit is 64 MiB)", len);
 
     cJSON *root = NULL;
-    app_result r = parse_json(&c, json_text ? json_text : "", len, &root);
+    app_result r = pj_parse_json(&c, json_text ? json_text : "", len, &root);
     if (r != APP_OK)
         return r;
     app_project p;
     memset(&p, 0, sizeof p);
     c.p = &p;
-    r = read_root(&c, root, &p);
+    r = pj_read_root(&c, root, &p);
     cJSON_Delete(root);
     pj_ctx_release(&c);
     if (r != APP_OK) {
