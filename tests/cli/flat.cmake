@@ -1,8 +1,9 @@
 # Flats: several rooms in one project file (docs/project-format.md "Flats"), the generator
 # `tessera generate-flat`, and what check, quantities and render do with a flat. Included from
 # tests/cli/CMakeLists.txt (DATA, OUT, tessera_cli_error). The tests share one catalog file, in
-# turn (RESOURCE_LOCK), and the flats the generator tests write.
-set(FLAT_ENV "TESSERA_CATALOG=${OUT}/flat-catalog.sqlite;TESSERA_GL=osmesa")
+# turn (RESOURCE_LOCK), and the flats the generator tests write. No light bake: the renders
+# compare two builds of one room, which a bake would only slow down.
+set(FLAT_ENV "TESSERA_CATALOG=${OUT}/flat-catalog.sqlite;TESSERA_GL=osmesa;TESSERA_BAKE=off")
 
 tessera_add_test(NAME cli.flat.generate
                  COMMAND tessera generate-flat --rooms 8 --seed 7 -o ${OUT}/flat8.json

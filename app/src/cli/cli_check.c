@@ -78,7 +78,10 @@ int cli_cmd_check(const cli_options *o)
                                                : APP_BARRIER_FREE_OFF};
     app_flat flat;
     char err[4096];
-    if (app_flat_read(project, &flat, err, sizeof err) != APP_OK) {
+    double t_read = cli_now_ms();
+    app_result read = app_flat_read(project, &flat, err, sizeof err);
+    t_read = cli_now_ms() - t_read;
+    if (read != APP_OK) {
         fprintf(stderr, "tessera check: %s\n", err);
         return CHECK_USAGE;
     }
@@ -100,8 +103,11 @@ int cli_cmd_check(const cli_options *o)
                                                                : "",
                t.findings, t.errors);
         rc = t.errors ? CHECK_FINDINGS : CHECK_OK;
-        fprintf(stderr, "tessera check: footprints %.1f ms (catalog lookups), checks %.1f ms\n",
-                t.footprint_ms, t.check_ms);
+        fprintf(stderr,
+                "tessera check: read %d room%s in %.1f ms, footprints %.1f ms (catalog "
+                "lookups), checks %.1f ms\n",
+                flat.room_count, flat.room_count == 1 ? "" : "s", t_read, t.footprint_ms,
+                t.check_ms);
     }
     app_placement_lazy_close(&cat);
     app_flat_free(&flat);
