@@ -103,17 +103,18 @@ static int images_from_dir(const char *dir, image_list *l)
 
 /* Renders every camera of the project at a modest size into tmp_dir (the renderer of
  * `tessera render`); a progress line per view. */
-static int render_cameras(const char *project, int room, rd_backend backend,
-                          const app_quality *quality, int w, int h, const char *tmp_dir,
-                          image_list *l)
+static int render_cameras(const char *project, const app_project *room, int room_number,
+                          rd_backend backend, const app_quality *quality, int w, int h,
+                          const char *tmp_dir, image_list *l)
 {
     cli_options o = {0};
     o.project = project;
-    o.room_index = room;
     o.backend = backend;
     o.quality = quality;
     cli_session s;
-    int rc = cli_session_open(&o, &s);
+    /* A flat's room is handed over, not read again: reading the whole file for each room
+     * would make the renders of N rooms cost N file reads of N rooms each. */
+    int rc = room ? cli_session_open_room(&o, room, &s) : cli_session_open(&o, &s);
     if (rc != CLI_OK)
         return rc;
     for (int i = 0; rc == CLI_OK && i < s.project.camera_count; i++) {
@@ -123,7 +124,7 @@ static int render_cameras(const char *project, int room, rd_backend backend,
         rd_view view;
         rc = cli_session_view(&s, &o, cam, w, h, &view);
         char path[4096];
-        snprintf(path, sizeof path, "%s/view-%02d-%02d.png", tmp_dir, room, i + 1);
+        snprintf(path, sizeof path, "%s/view-%02d-%02d.png", tmp_dir, room_number, i + 1);
         if (rc == CLI_OK)
             rc = cli_render_to_file(&s, &view, path);
         if (rc == CLI_OK && !images_add(l, path, cam))
@@ -203,8 +204,8 @@ static int print_flat(const cli_options *o, const app_flat *f, const app_print_o
         if (made_tmp) {
             fprintf(stderr, "tessera print: room %d of %d, \"%s\"\n", i + 1, f->room_count,
                     f->rooms[i].name);
-            rc = render_cameras(o->project, i + 1, o->backend, quality, render_w, render_h, tmp_dir,
-                                &images[i]);
+            rc = render_cameras(o->project, &f->rooms[i], i + 1, o->backend, quality, render_w,
+                                render_h, tmp_dir, &images[i]);
         }
         opts[i] = *base;
         opts[i].customer = o->customer;
@@ -293,7 +294,8 @@ int cli_cmd_print(const cli_options *o)
     } else if (!renders && p.camera_count > 0) {
         if (mkdtemp(tmp_dir)) {
             made_tmp = 1;
-            rc = render_cameras(project, 0, backend, quality, render_w, render_h, tmp_dir, &images);
+            rc = render_cameras(project, NULL, 0, backend, quality, render_w, render_h, tmp_dir,
+                                &images);
         } else {
             fprintf(stderr, "tessera print: cannot make a temporary folder: %s\n", strerror(errno));
             rc = CLI_FAILED;

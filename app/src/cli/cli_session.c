@@ -1,5 +1,6 @@
 #include "cli_options.h"
 
+#include "app/project/commands.h"
 #include "app/project/flat.h"
 #include "app/scene/quality.h"
 #include "app/scene/scene_bake.h"
@@ -94,10 +95,27 @@ app_result cli_session_read_room(const cli_options *o, app_project *out)
 int cli_session_open(const cli_options *o, cli_session *s)
 {
     memset(s, 0, sizeof *s);
-    char err[2048];
     app_result r = cli_session_read_room(o, &s->project);
     if (r != APP_OK)
         return r == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
+    return cli_session_start(o, s);
+}
+
+int cli_session_open_room(const cli_options *o, const app_project *room, cli_session *s)
+{
+    memset(s, 0, sizeof *s);
+    char err[2048];
+    if (app_project_copy(&s->project, room, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s: room \"%s\": %s\n", o->project, room->name, err);
+        return CLI_FAILED;
+    }
+    return cli_session_start(o, s);
+}
+
+int cli_session_start(const cli_options *o, cli_session *s)
+{
+    char err[2048];
+    app_result r;
     app_daylight_override(&s->project.daylight, o->sky, o->time); /* checked when parsed */
     if (rd_context_create(&(rd_context_desc){.backend = o->backend}, &s->ctx) != RD_OK) {
         fprintf(stderr, "tessera: cannot open an OpenGL context: %s\n", rd_last_error());
