@@ -61,3 +61,10 @@ tessera_add_test(NAME cli.flat.render_room_option
                          -o ${OUT}/flat-two-rooms-hall.png
                  EXPECT_STDERR "room 2 of 2, \"Hall\" (the others culled)" LABELS cli
                  ENV ${FLAT_ENV})
+
+# The documented example (docs/project-format.md "Flats") reads and passes check.
+tessera_add_test(NAME cli.flat.doc_example
+                 COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/flat_doc_example.sh $<TARGET_FILE:tessera>
+                         ${CMAKE_SOURCE_DIR}/docs/project-format.md ${OUT}/flat-doc-example.json
+                 EXPECT_OUTPUT "0 fixtures checked in 2 rooms; 0 findings, 0 errors" LABELS cli
+                 ENV ${FLAT_ENV} PROPERTIES RESOURCE_LOCK flat_catalog)

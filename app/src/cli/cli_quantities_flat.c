@@ -81,9 +81,12 @@ static int add_bom_lines(app_bom *t, const app_bom *b, int from, int to)
 
 static void print_heading(const char *what, const char *name, int csv)
 {
-    if (csv)
-        printf("%s,\"%s\"\n", what, name);
-    else
+    if (csv) {
+        printf("%s,\"", what);
+        for (const char *c = name; *c; c++) /* CSV: a quote inside a field is doubled */
+            fputs(*c == '"' ? "\"\"" : (char[2]){*c, 0}, stdout);
+        puts("\"");
+    } else
         printf("\n== %s: %s ==\n", what, name);
 }
 
