@@ -74,6 +74,8 @@ app_result cli_session_read_room(const cli_options *o, app_project *out)
     }
     /* A flat renders the room of the camera; the other rooms are never built (culled). */
     int room = app_flat_room_of_camera(&flat, o->camera);
+    if (room < 0 && !flat.is_flat)
+        room = 0; /* one room: the view names the cameras it has */
     if (room < 0 || (o->room_index > 0 && o->room_index > flat.room_count)) {
         if (room < 0)
             fprintf(stderr, "tessera: %s: no room has a camera \"%s\"\n", o->project, o->camera);

@@ -105,7 +105,8 @@ app_result pj_read_root(pj_ctx *c, cJSON *root, app_project *p)
     if (!cJSON_IsObject(root))
         return pj_fail(c, APP_ERR_SCHEMA, "expected an object (a Tessera project), got %s",
                        pj_type_name(root));
-    if (cJSON_GetObjectItemCaseSensitive(root, "rooms")) {
+    /* A flat's room list; any other "rooms" is an unknown key, ignored as before. */
+    if (cJSON_IsArray(cJSON_GetObjectItemCaseSensitive(root, "rooms"))) {
         pj_path_key(c, "rooms");
         return pj_fail(c, APP_ERR_SCHEMA,
                        "a flat of several rooms: this command reads one room (check, "
