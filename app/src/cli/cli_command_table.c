@@ -7,7 +7,7 @@
 /* The options every command that renders through the GPU renderer takes. */
 #define RENDER_SETTINGS                                                                            \
     "quality adaptive planar-mirrors room-probe exact-lamps self-reflections probe-resolution "    \
-    "shadows probes blur ambient backend bake bake-bounces tone exposure white-balance sky time "
+    "shadows probes blur ambient backend bake bake-bounces tone exposure white-balance sky time room "
 
 static const cli_command catalog_commands[] = {
     {.name = "search",
@@ -190,6 +190,14 @@ const cli_command cli_commands[] = {
      .max_args = 1,
      .options = "csv-table",
      .summary = "the room's tileable surfaces: frames, holes (openings, covered) and net m2"},
+    {.name = "generate-flat",
+     .run = cli_cmd_generate_flat,
+     .synopsis = "-o FLAT.json",
+     .options = "rooms seed output",
+     .summary = "a synthetic flat of N rooms from catalog products (tests, benchmarks)",
+     .help = "  Writes a flat (docs/project-format.md \"Flats\"): bathroom, kitchen, WC, hall,\n"
+             "  shower room, utility, en-suite, guest WC, then again; about 300 fixtures and\n"
+             "  40 000 tiles at 8 rooms. The same --rooms and --seed give the same file.\n"},
     {.name = "export-glb",
      .run = cli_cmd_export_glb,
      .synopsis = "PROJECT",

@@ -19,6 +19,7 @@ int cli_cmd_check(const cli_options *o);
 int cli_cmd_quantities(const cli_options *o);
 int cli_cmd_surfaces(const cli_options *o);
 int cli_cmd_export_glb(const cli_options *o);
+int cli_cmd_generate_flat(const cli_options *o);
 
 /* The measurement tools (app/src/measure/). */
 int cli_cmd_bench(const cli_options *o);

@@ -258,6 +258,8 @@ static const cli_option_spec options[] = {
      .hint = "the video's length"},
     INT("fps", fps, 1, 240, "N", "frames a second"),
     INT("threads", threads, 1, 256, "N", "CPU threads (default: all)"),
+    INT("rooms", rooms, 1, 256, "N", "rooms of the generated flat (default: 8)"),
+    INT("room", room_index, 1, 256, "N", "of a flat: room N (default: the camera's, or 1)"),
     {.key = "seed",
      .kind = CLI_LONG,
      .lo = 0,

@@ -59,6 +59,8 @@ typedef struct cli_options {
     /* Timing, video, reference. */
     int frames, warmup, fps, threads;
     long long seed;
+    int rooms;      /* generate-flat */
+    int room_index; /* --room N of a flat, 1-based; 0 = the camera's (or the first) */
     double seconds;
 
     /* Comparison. */
@@ -110,6 +112,14 @@ typedef struct cli_session {
 } cli_session;
 
 int cli_session_open(const cli_options *o, cli_session *s);
+/* A session on a copy of a room already read (a flat's room: not read from the file again). */
+int cli_session_open_room(const cli_options *o, const app_project *room, cli_session *s);
+/* The context, the scene and the settings for s->project (set); cli_session_open's second half. */
+int cli_session_start(const cli_options *o, cli_session *s);
+/* The project of o->project a session renders: a single-room project, or the room of a flat
+ * that holds o->camera (room o->room_index, 1-based, without a camera; else the first).
+ * Says what is wrong on stderr. */
+app_result cli_session_read_room(const cli_options *o, app_project *out);
 /* Whether --bake (or TESSERA_BAKE=off) asks for the baked light, and app_bake_configure from it. */
 int cli_bake_wanted(const cli_options *o);
 void cli_bake_configure(const cli_options *o);

@@ -4,6 +4,7 @@
  * The print set (app/output/print.h, docs/printing.md): plan, elevations, renders, part list. */
 #include "app/cli/cli.h"
 #include "app/output/print.h"
+#include "app/project/flat.h"
 #include "app/scene/quality.h"
 #include "cli_commands.h"
 
@@ -102,15 +103,18 @@ static int images_from_dir(const char *dir, image_list *l)
 
 /* Renders every camera of the project at a modest size into tmp_dir (the renderer of
  * `tessera render`); a progress line per view. */
-static int render_cameras(const char *project, rd_backend backend, const app_quality *quality,
-                          int w, int h, const char *tmp_dir, image_list *l)
+static int render_cameras(const char *project, const app_project *room, int room_number,
+                          rd_backend backend, const app_quality *quality, int w, int h,
+                          const char *tmp_dir, image_list *l)
 {
     cli_options o = {0};
     o.project = project;
     o.backend = backend;
     o.quality = quality;
     cli_session s;
-    int rc = cli_session_open(&o, &s);
+    /* A flat's room is handed over, not read again: reading the whole file for each room
+     * would make the renders of N rooms cost N file reads of N rooms each. */
+    int rc = room ? cli_session_open_room(&o, room, &s) : cli_session_open(&o, &s);
     if (rc != CLI_OK)
         return rc;
     for (int i = 0; rc == CLI_OK && i < s.project.camera_count; i++) {
@@ -120,7 +124,7 @@ static int render_cameras(const char *project, rd_backend backend, const app_qua
         rd_view view;
         rc = cli_session_view(&s, &o, cam, w, h, &view);
         char path[4096];
-        snprintf(path, sizeof path, "%s/view-%02d.png", tmp_dir, i + 1);
+        snprintf(path, sizeof path, "%s/view-%02d-%02d.png", tmp_dir, room_number, i + 1);
         if (rc == CLI_OK)
             rc = cli_render_to_file(&s, &view, path);
         if (rc == CLI_OK && !images_add(l, path, cam))
@@ -168,6 +172,80 @@ static int check_pdf_folder(const char *path)
     return CLI_FAILED;
 }
 
+/* A flat: each room's renders (its cameras; the other rooms are not built), then one PDF with
+ * a section a room. --renders DIR is not taken for a flat (its images belong to no room). */
+static int print_flat(const cli_options *o, const app_flat *f, const app_print_options *base,
+                      const app_quality *quality, int render_w, int render_h)
+{
+    if (o->svg || (o->renders && strcmp(o->renders, "none") != 0)) {
+        fprintf(stderr,
+                "tessera print: %s: a flat takes neither --svg nor --renders DIR (only "
+                "--renders none)\n",
+                o->project);
+        return CLI_USAGE;
+    }
+    image_list *images = calloc((size_t)f->room_count, sizeof *images);
+    app_print_options *opts = calloc((size_t)f->room_count, sizeof *opts);
+    char tmp_dir[] = "/tmp/tessera-print-XXXXXX";
+    int made_tmp = 0, rc = images && opts ? CLI_OK : CLI_FAILED;
+    if (rc == CLI_OK && !o->renders) {
+        if (mkdtemp(tmp_dir)) {
+            made_tmp = 1;
+        } else {
+            fprintf(stderr, "tessera print: cannot make a temporary folder: %s\n", strerror(errno));
+            rc = CLI_FAILED;
+        }
+    }
+    char catalog_src[4200], assets[4096];
+    snprintf(assets, sizeof assets, "%s", assets_dir());
+    snprintf(catalog_src, sizeof catalog_src, "%s/catalog", assets);
+    double t0 = cli_now_ms();
+    for (int i = 0; rc == CLI_OK && i < f->room_count; i++) {
+        if (made_tmp) {
+            fprintf(stderr, "tessera print: room %d of %d, \"%s\"\n", i + 1, f->room_count,
+                    f->rooms[i].name);
+            rc = render_cameras(o->project, &f->rooms[i], i + 1, o->backend, quality, render_w,
+                                render_h, tmp_dir, &images[i]);
+        }
+        opts[i] = *base;
+        opts[i].customer = o->customer;
+        opts[i].date = o->date;
+        opts[i].catalog_source = catalog_src;
+        opts[i].assets_dir = assets;
+        opts[i].images = (const char *const *)images[i].paths;
+        opts[i].image_titles = (const char *const *)images[i].titles;
+        opts[i].image_count = images[i].count;
+        opts[i].verbose = 1;
+    }
+    double t1 = cli_now_ms();
+    app_print_report rep = {0};
+    char err[2048];
+    if (rc == CLI_OK) {
+        app_result r = app_print_flat_pdf(f->rooms, opts, f->room_count, f->name, o->output, &rep,
+                                          err, sizeof err);
+        if (r != APP_OK) {
+            fprintf(stderr, "tessera: %s\n", err);
+            rc = r == APP_ERR_SCHEMA ? CLI_USAGE : CLI_FAILED;
+        }
+    }
+    if (rc == CLI_OK)
+        fprintf(stderr,
+                "tessera print: %s: %d rooms, %d pages (%d elevations with %d whole and %d cut "
+                "tiles, %d renders, %d part-list pages); renders %.0f ms, pages %.0f ms\n",
+                o->output, f->room_count, rep.pages, rep.elevation_pages, rep.tiles_whole,
+                rep.tiles_cut, rep.render_pages, rep.partlist_pages, t1 - t0, cli_now_ms() - t1);
+    for (int i = 0; images && i < f->room_count; i++) {
+        for (int k = 0; made_tmp && k < images[i].count; k++)
+            unlink(images[i].paths[k]);
+        images_free(&images[i]);
+    }
+    if (made_tmp)
+        rmdir(tmp_dir);
+    free(images);
+    free(opts);
+    return rc;
+}
+
 int cli_cmd_print(const cli_options *o)
 {
     const char *project = o->project, *output = o->output, *svg = o->svg, *renders = o->renders;
@@ -196,11 +274,18 @@ int cli_cmd_print(const cli_options *o)
     }
     app_project p;
     char err[2048];
-    app_result r = app_project_read(project, &p, err, sizeof err);
+    app_flat flat;
+    app_result r = app_flat_read(project, &flat, err, sizeof err);
     if (r != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         return r == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
     }
+    if (flat.is_flat) {
+        int frc = print_flat(o, &flat, &po, quality, render_w, render_h);
+        app_flat_free(&flat);
+        return frc;
+    }
+    app_flat_take_room(&flat, 0, &p);
     image_list images = {0};
     char tmp_dir[] = "/tmp/tessera-print-XXXXXX";
     int made_tmp = 0, rc = CLI_OK;
@@ -209,7 +294,8 @@ int cli_cmd_print(const cli_options *o)
     } else if (!renders && p.camera_count > 0) {
         if (mkdtemp(tmp_dir)) {
             made_tmp = 1;
-            rc = render_cameras(project, backend, quality, render_w, render_h, tmp_dir, &images);
+            rc = render_cameras(project, NULL, 0, backend, quality, render_w, render_h, tmp_dir,
+                                &images);
         } else {
             fprintf(stderr, "tessera print: cannot make a temporary folder: %s\n", strerror(errno));
             rc = CLI_FAILED;

@@ -11,6 +11,7 @@
 #include "app/design/room_surfaces.h"
 #include "app/output/quote.h"
 #include "cli_commands.h"
+#include "cli_quantities.h"
 #include "cli_quantities_json.h"
 #include "cli_quantities_trims.h"
 
@@ -177,7 +178,7 @@ static const char *type_name(app_tile_type t)
     return (int)t >= 0 && (int)t < 4 ? n[t] : "?";
 }
 
-static void print_tiles(const app_quantities *q, const app_bom *b, int csv)
+void cli_print_tiles(const app_quantities *q, const app_bom *b, int csv)
 {
     if (csv) {
         puts("section,type,manufacturer,article,variant,name,work_w_mm,work_h_mm,whole,cut,"
@@ -329,7 +330,7 @@ static void print_quote_head(const app_quote *q, int csv)
     }
 }
 
-static void print_bom(const app_bom *b, int csv)
+void cli_print_bom(const app_bom *b, int csv)
 {
     char up[32], net[32], vat[32], gross[32];
     if (csv)
@@ -522,15 +523,29 @@ int cli_cmd_quantities(const cli_options *o)
     }
     char err[2048];
     app_project p;
-    if (app_project_read(o->project, &p, err, sizeof err) != APP_OK) {
+    app_flat flat;
+    if (app_flat_read(o->project, &flat, err, sizeof err) != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         return CLI_USAGE;
     }
     cat_db *db = NULL;
     if ((rc = open_catalog(o->db, &db)) != CLI_OK) {
-        app_project_free(&p);
+        app_flat_free(&flat);
         return rc;
     }
+    if (flat.is_flat && (o->json_table || o->xlsx)) {
+        fprintf(stderr,
+                "tessera quantities: %s: --json and --xlsx take a single room, not a flat\n",
+                o->project);
+        rc = CLI_USAGE;
+    } else if (flat.is_flat && o->bench_repeats <= 0)
+        rc = cli_quantities_flat(o, &flat, db);
+    if (flat.is_flat && (rc != CLI_OK || o->bench_repeats <= 0)) {
+        cat_db_close(db);
+        app_flat_free(&flat);
+        return rc;
+    }
+    app_flat_take_room(&flat, 0, &p); /* a single room (--bench times the first of a flat) */
     if (o->bench_repeats > 0) {
         rc = bench_project(&p, db, o->bench_repeats);
         cat_db_close(db);
@@ -590,13 +605,13 @@ int cli_cmd_quantities(const cli_options *o)
             fprintf(o->csv_table ? stderr : stdout,
                     "%s: no tilings yet (no surface of this project is tiled)\n", o->project);
         else
-            print_tiles(&q, &bom, o->csv_table);
+            cli_print_tiles(&q, &bom, o->csv_table);
         if (o->offcuts && p.tiling_count > 0)
             print_offcuts(&q, layouts, o->csv_table);
         cli_print_trims(trims, trim_count, &bom, o->csv_table);
         print_consumables(&cons, o->csv_table);
         print_quote_head(&quote, o->csv_table);
-        print_bom(&bom, o->csv_table);
+        cli_print_bom(&bom, o->csv_table);
     }
 done:
     free(trims);

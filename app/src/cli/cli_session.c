@@ -1,5 +1,7 @@
 #include "cli_options.h"
 
+#include "app/project/commands.h"
+#include "app/project/flat.h"
 #include "app/scene/quality.h"
 #include "app/scene/scene_bake.h"
 #include "render/image_io.h"
@@ -62,15 +64,61 @@ void cli_bake_configure(const cli_options *o)
     app_bake_configure(&b);
 }
 
+app_result cli_session_read_room(const cli_options *o, app_project *out)
+{
+    char err[2048];
+    app_flat flat;
+    app_result r = app_flat_read(o->project, &flat, err, sizeof err);
+    if (r != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return r;
+    }
+    /* A flat renders the room of the camera; the other rooms are never built (culled). */
+    int room = app_flat_room_of_camera(&flat, o->camera);
+    if (room < 0 && !flat.is_flat)
+        room = 0; /* one room: the view names the cameras it has */
+    if (room < 0 || (o->room_index > 0 && o->room_index > flat.room_count)) {
+        if (room < 0)
+            fprintf(stderr, "tessera: %s: no room has a camera \"%s\"\n", o->project, o->camera);
+        else
+            fprintf(stderr, "tessera: %s: no room %d (%d rooms)\n", o->project, o->room_index,
+                    flat.room_count);
+        app_flat_free(&flat);
+        return APP_ERR_SCHEMA;
+    }
+    if (o->room_index > 0 && !o->camera)
+        room = o->room_index - 1;
+    if (flat.is_flat)
+        fprintf(stderr, "tessera: %s: room %d of %d, \"%s\" (the others culled)\n", o->project,
+                room + 1, flat.room_count, flat.rooms[room].name);
+    app_flat_take_room(&flat, room, out);
+    return APP_OK;
+}
+
 int cli_session_open(const cli_options *o, cli_session *s)
 {
     memset(s, 0, sizeof *s);
-    char err[2048];
-    app_result r = app_project_read(o->project, &s->project, err, sizeof err);
-    if (r != APP_OK) {
-        fprintf(stderr, "tessera: %s\n", err);
+    app_result r = cli_session_read_room(o, &s->project);
+    if (r != APP_OK)
         return r == APP_ERR_OUT_OF_MEMORY ? CLI_FAILED : CLI_USAGE;
+    return cli_session_start(o, s);
+}
+
+int cli_session_open_room(const cli_options *o, const app_project *room, cli_session *s)
+{
+    memset(s, 0, sizeof *s);
+    char err[2048];
+    if (app_project_copy(&s->project, room, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s: room \"%s\": %s\n", o->project, room->name, err);
+        return CLI_FAILED;
     }
+    return cli_session_start(o, s);
+}
+
+int cli_session_start(const cli_options *o, cli_session *s)
+{
+    char err[2048];
+    app_result r;
     app_daylight_override(&s->project.daylight, o->sky, o->time); /* checked when parsed */
     if (rd_context_create(&(rd_context_desc){.backend = o->backend}, &s->ctx) != RD_OK) {
         fprintf(stderr, "tessera: cannot open an OpenGL context: %s\n", rd_last_error());

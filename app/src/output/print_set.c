@@ -283,6 +283,90 @@ app_result app_print_pdf(const app_project *p, const app_print_options *o, const
     return r;
 }
 
+/* The rooms of a flat into one PDF: each room's print set in turn (its own plan, elevations,
+ * renders and part list, numbered within the room), on one surface. */
+app_result app_print_flat_pdf(const app_project *rooms, const app_print_options *opts, int n,
+                              const char *title, const char *pdf_path, app_print_report *report,
+                              char *err, size_t err_size)
+{
+    if (n < 1 || !rooms || !opts) {
+        snprintf(err, err_size, "print: no rooms to print");
+        return APP_ERR_SCHEMA;
+    }
+    app_result r = APP_OK;
+    for (int i = 0; r == APP_OK && i < n; i++)
+        r = check_args(&rooms[i], &opts[i], pdf_path, err, err_size);
+    if (r != APP_OK)
+        return r;
+    char tmp[4200];
+    if ((size_t)snprintf(tmp, sizeof tmp, "%s.part-%ld", pdf_path, (long)getpid()) >= sizeof tmp) {
+        snprintf(err, err_size, "%s: path too long", pdf_path);
+        return APP_ERR_IO;
+    }
+    if (report)
+        memset(report, 0, sizeof *report);
+    double w, h;
+    app_paper_size_mm(opts[0].paper, opts[0].landscape, &w, &h);
+    cairo_surface_t *surface = cairo_pdf_surface_create(tmp, w * 72.0 / 25.4, h * 72.0 / 25.4);
+    cairo_t *cr = NULL;
+    if (cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
+        snprintf(err, err_size, "%s: cannot write: %s", pdf_path,
+                 cairo_status_to_string(cairo_surface_status(surface)));
+        r = APP_ERR_IO;
+    } else {
+        cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE,
+                                       title && *title ? title : "Tessera print set");
+        cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "Tessera");
+        cr = cairo_create(surface);
+    }
+    for (int i = 0; r == APP_OK && i < n; i++) {
+        app_print_report rep;
+        pr_doc d;
+        r = prepare(&d, &rooms[i], &opts[i], &rep, err, err_size);
+        if (r == APP_OK) {
+            d.pdf_path = pdf_path;
+            d.surface = surface;
+            d.cr = cr;
+            r = draw_pages(&d);
+            d.surface = NULL; /* shared: not the room's to destroy */
+            d.cr = NULL;
+        }
+        release(&d);
+        if (r == APP_OK && report) {
+            report->pages += rep.pages;
+            report->elevation_pages += rep.elevation_pages;
+            report->tiles_whole += rep.tiles_whole;
+            report->tiles_cut += rep.tiles_cut;
+            report->fixtures += rep.fixtures;
+            report->render_pages += rep.render_pages;
+            report->partlist_pages += rep.partlist_pages;
+            report->plan_scale =
+                rep.plan_scale > report->plan_scale ? rep.plan_scale : report->plan_scale;
+            report->elevation_scale = rep.elevation_scale > report->elevation_scale
+                                          ? rep.elevation_scale
+                                          : report->elevation_scale;
+        }
+        if (opts[i].verbose)
+            fprintf(stderr, "tessera print: [%d/%d] room \"%s\" drawn\n", i + 1, n, rooms[i].name);
+    }
+    if (cr)
+        cairo_destroy(cr);
+    cairo_surface_finish(surface);
+    if (r == APP_OK && cairo_surface_status(surface) != CAIRO_STATUS_SUCCESS) {
+        snprintf(err, err_size, "%s: cannot write: %s", pdf_path,
+                 cairo_status_to_string(cairo_surface_status(surface)));
+        r = APP_ERR_IO;
+    }
+    cairo_surface_destroy(surface);
+    if (r == APP_OK && rename(tmp, pdf_path) != 0) {
+        snprintf(err, err_size, "%s: cannot write: %s", pdf_path, strerror(errno));
+        r = APP_ERR_IO;
+    }
+    if (r != APP_OK)
+        unlink(tmp);
+    return r;
+}
+
 app_result app_print_svg(const app_project *p, const app_print_options *o, const char *dir,
                          app_print_report *report, char *err, size_t err_size)
 {

@@ -186,6 +186,13 @@ app_result pj_validate_project(pj_ctx *c, const app_project *p);
 
 /* Checks $.version and upgrades the tree in place to APP_PROJECT_VERSION. */
 app_result pj_migrate(pj_ctx *c, cJSON *root, int *file_version);
+/* The whole text of a file (the size limit and the messages of app_project_read); *text is
+ * malloc'ed. */
+app_result pj_read_file(pj_ctx *c, const char *path, char **text, size_t *len);
+/* JSON text -> a cJSON tree, or a message with the line and column (project_parse.c). */
+app_result pj_parse_json(pj_ctx *c, const char *text, size_t len, cJSON **out);
+/* Every section of one room's project from root (an object), into p (zeroed). */
+app_result pj_read_root(pj_ctx *c, cJSON *root, app_project *p);
 
 /* ---- files (project_paths.c) ---------------------------------------------------------------- */
 

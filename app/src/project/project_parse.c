@@ -53,7 +53,7 @@ static int ends_early(const char *text, size_t len)
     return in_string || depth > 0;
 }
 
-static app_result parse_json(pj_ctx *c, const char *text, size_t len, cJSON **out)
+app_result pj_parse_json(pj_ctx *c, const char *text, size_t len, cJSON **out)
 {
     size_t first = 0;
     while (first < len && is_json_space(text[first]))
@@ -100,12 +100,24 @@ static void set_project_path(app_project *p, const char *path)
     free(real);
 }
 
-static app_result read_root(pj_ctx *c, cJSON *root, app_project *p)
+app_result pj_read_root(pj_ctx *c, cJSON *root, app_project *p)
 {
     if (!cJSON_IsObject(root))
         return pj_fail(c, APP_ERR_SCHEMA, "expected an object (a Tessera project), got %s",
                        pj_type_name(root));
-    app_result r = pj_migrate(c, root, &p->file_version);
+    /* A flat's room list; any other "rooms" is an unknown key, ignored as before. */
+    if (cJSON_IsArray(cJSON_GetObjectItemCaseSensitive(root, "rooms"))) {
+        pj_path_key(c, "rooms");
+        return pj_fail(c, APP_ERR_SCHEMA,
+                       "a flat of several rooms: this command reads one room (check, "
+                       "quantities, render and print read flats; docs/project-format.md "
+                       "\"Flats\")");
+    }
+    /* Text first (valid UTF-8 everywhere), then the sections, then the rules every command
+     * relies on (project_validate.c): a room of a flat is held to the same. */
+    app_result r = pj_check_text(c, root);
+    if (r == APP_OK)
+        r = pj_migrate(c, root, &p->file_version);
     if (r != APP_OK)
         return r;
     p->version = APP_PROJECT_VERSION;
@@ -116,7 +128,7 @@ static app_result read_root(pj_ctx *c, cJSON *root, app_project *p)
         (r = pj_read_cameras(c, root)) != APP_OK || (r = pj_read_render(c, root)) != APP_OK ||
         (r = pj_read_daylight(c, root)) != APP_OK || (r = pj_read_customer(c, root)) != APP_OK)
         return r;
-    return APP_OK;
+    return pj_validate_project(c, p);
 }
 
 app_result app_project_parse(const char *json_text, size_t len,
@@ -144,17 +156,13 @@ app_result pj_parse_text(const char *json_text, size_t len,
         return pj_fail_file(&c, APP_ERR_IO, "too large (%zu bytes, the limit is 64 MiB)", len);
 
     cJSON *root = NULL;
-    app_result r = parse_json(&c, json_text ? json_text : "", len, &root);
+    app_result r = pj_parse_json(&c, json_text ? json_text : "", len, &root);
     if (r != APP_OK)
         return r;
     app_project p;
     memset(&p, 0, sizeof p);
     c.p = &p;
-    r = pj_check_text(&c, root);
-    if (r == APP_OK)
-        r = read_root(&c, root, &p);
-    if (r == APP_OK)
-        r = pj_validate_project(&c, &p);
+    r = pj_read_root(&c, root, &p);
     cJSON_Delete(root);
     pj_ctx_release(&c);
     if (r != APP_OK) {

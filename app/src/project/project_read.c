@@ -53,6 +53,31 @@ static app_result read_all(pj_ctx *c, int fd, size_t hint, char **out, size_t *o
     return APP_OK;
 }
 
+app_result pj_read_file(pj_ctx *c, const char *path, char **text, size_t *len)
+{
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return pj_fail_file(c, APP_ERR_IO, "cannot open: %s", strerror(errno));
+    struct stat st;
+    if (fstat(fd, &st) != 0) {
+        int e = errno;
+        close(fd);
+        return pj_fail_file(c, APP_ERR_IO, "cannot open: %s", strerror(e));
+    }
+    if (S_ISDIR(st.st_mode)) {
+        close(fd);
+        return pj_fail_file(c, APP_ERR_IO, "is a directory, not a project file");
+    }
+    if (S_ISREG(st.st_mode) && st.st_size > APP_PROJECT_MAX_FILE_BYTES) {
+        close(fd);
+        return pj_fail_file(c, APP_ERR_IO, "too large (%lld bytes, the limit is 64 MiB)",
+                            (long long)st.st_size);
+    }
+    app_result r = read_all(c, fd, S_ISREG(st.st_mode) ? (size_t)st.st_size : 0, text, len);
+    close(fd);
+    return r;
+}
+
 app_result app_project_read(const char *path, app_project *out, char *err, size_t err_size)
 {
     pj_ctx c;
@@ -63,29 +88,9 @@ app_result app_project_read(const char *path, app_project *out, char *err, size_
         return pj_fail_file(&c, APP_ERR_IO, "no file name given");
     if (!out)
         return pj_fail_file(&c, APP_ERR_IO, "no project to read into (out is NULL)");
-
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        return pj_fail_file(&c, APP_ERR_IO, "cannot open: %s", strerror(errno));
-    struct stat st;
-    if (fstat(fd, &st) != 0) {
-        int e = errno;
-        close(fd);
-        return pj_fail_file(&c, APP_ERR_IO, "cannot open: %s", strerror(e));
-    }
-    if (S_ISDIR(st.st_mode)) {
-        close(fd);
-        return pj_fail_file(&c, APP_ERR_IO, "is a directory, not a project file");
-    }
-    if (S_ISREG(st.st_mode) && st.st_size > APP_PROJECT_MAX_FILE_BYTES) {
-        close(fd);
-        return pj_fail_file(&c, APP_ERR_IO, "too large (%lld bytes, the limit is 64 MiB)",
-                            (long long)st.st_size);
-    }
     char *text = NULL;
     size_t len = 0;
-    app_result r = read_all(&c, fd, S_ISREG(st.st_mode) ? (size_t)st.st_size : 0, &text, &len);
-    close(fd);
+    app_result r = pj_read_file(&c, path, &text, &len);
     if (r != APP_OK)
         return r;
     r = app_project_parse(text, len, path, out, err, err_size);

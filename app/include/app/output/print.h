@@ -87,6 +87,13 @@ typedef struct app_print_report {
 app_result app_print_pdf(const app_project *p, const app_print_options *o, const char *pdf_path,
                          app_print_report *report, char *err, size_t err_size);
 
+/* A flat's print set: room i's set with opts[i] (its renders), one section a room, in one PDF;
+ * title is the PDF's title. report (may be NULL) sums the rooms'; its scales are the smallest
+ * (largest N) used. */
+app_result app_print_flat_pdf(const app_project *rooms, const app_print_options *opts, int n,
+                              const char *title, const char *pdf_path, app_print_report *report,
+                              char *err, size_t err_size);
+
 /* The same pages as SVG files DIR/page-01.svg, DIR/page-02.svg, ... (DIR must exist). */
 app_result app_print_svg(const app_project *p, const app_print_options *o, const char *dir,
                          app_print_report *report, char *err, size_t err_size);
