@@ -9,7 +9,11 @@
  * screenshot_check --panes SHOT.png panel X,Y,W,H... view X,Y,W,H...: the panel rectangles
  * show the panels' background (their most common colour covers at least 30 % of them), and no
  * view rectangle shows it on more than 1 % of its pixels (no panel is drawn over a view) while
- * each shows a drawing (at least 20 colours). */
+ * each shows a drawing (at least 20 colours).
+ *
+ * screenshot_check --count RRGGBB TOLERANCE X0,Y0,X1,Y1 SHOT.png: prints how many pixels of
+ * the rectangle (x1, y1 excluded) are within TOLERANCE/255 per channel of the colour (the 3D
+ * view's selection outline). */
 #include "render/image_io.h"
 
 #include <math.h>
@@ -224,8 +228,38 @@ static int panes(int argc, char **argv)
     return rc;
 }
 
+static int count_colour(char **argv)
+{
+    unsigned colour;
+    int tolerance, x0, y0, x1, y1;
+    if (sscanf(argv[2], "%6x", &colour) != 1 || sscanf(argv[3], "%d", &tolerance) != 1 ||
+        sscanf(argv[4], "%d,%d,%d,%d", &x0, &y0, &x1, &y1) != 4) {
+        fprintf(stderr, "usage: screenshot_check --count RRGGBB TOLERANCE X0,Y0,X1,Y1 SHOT.png\n");
+        return 2;
+    }
+    rd_image img = {0};
+    char err[1024];
+    if (rd_image_read(argv[5], &img, NULL, err, sizeof err) != RD_IMAGE_OK) {
+        fprintf(stderr, "FAIL: %s\n", err);
+        return 1;
+    }
+    x0 = x0 < 0 ? 0 : x0;
+    y0 = y0 < 0 ? 0 : y0;
+    x1 = x1 > img.width ? img.width : x1;
+    y1 = y1 > img.height ? img.height : y1;
+    long n = 0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++)
+            n += near_colour(pixel_colour(&img, (long)y * img.width + x), colour, tolerance);
+    printf("%ld\n", n);
+    rd_image_free(&img);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    if (argc == 6 && !strcmp(argv[1], "--count"))
+        return count_colour(argv);
     if (argc >= 3 && !strcmp(argv[1], "--golden"))
         return golden(argc, argv);
     if (argc >= 3 && !strcmp(argv[1], "--panes"))

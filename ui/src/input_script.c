@@ -68,6 +68,18 @@ static int locate_fixture(planner *p, const char *name)
     return 1;
 }
 
+/* The box around the selection's outline in the 3D view (selection_3d.c). */
+static int locate_selection(planner *p)
+{
+    float b[4];
+    if (planner_selection_3d_bounds(p, b))
+        fprintf(stderr, "tessera: locate selection at %.0f %.0f %.0f %.0f\n", b[0], b[1], b[2],
+                b[3]);
+    else
+        fprintf(stderr, "tessera: locate selection: none shows\n");
+    return 0;
+}
+
 /* required = 0 (locate widget-if-drawn): a widget not drawn is logged, not a failure (the soak
  * asks between segments, when the monkey may have hidden the panels). */
 static int locate_widget(planner *p, const char *label, int required)
@@ -106,7 +118,10 @@ int planner_input_action(planner *p, const ui_action *a)
             return locate_widget(p, a->text + 16, 0);
         if (!strncmp(a->text, "widget ", 7))
             return locate_widget(p, a->text + 7, 1);
-        snprintf(p->status, sizeof p->status, "locate widget LABEL or locate fixture NAME");
+        if (!strcmp(a->text, "selection"))
+            return locate_selection(p);
+        snprintf(p->status, sizeof p->status,
+                 "locate widget LABEL, locate fixture NAME or locate selection");
         return 1;
     }
     return 0; /* wait-file runs in planner_wait_file */

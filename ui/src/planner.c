@@ -165,6 +165,8 @@ static int frame(planner *p)
         else if (p->layout.pane_2d.w > 0)
             planner_plan_frame(p, fw, fh);
         if (vw > 0)
+            planner_selection_3d(p);
+        if (vw > 0)
             planner_findings_3d(p, fw, fh);
         if (vw > 0)
             planner_live_overlay(p, pane);

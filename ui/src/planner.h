@@ -247,6 +247,8 @@ void planner_status(planner *p, const char *fmt, ...) __attribute__((format(prin
 void planner_plan_frame(planner *p, int width, int height);
 /* Places the catalog browser's selected product at a plan point, snapped to the nearest wall. */
 int planner_place_selected(planner *p, double x_mm, double y_mm);
+/* Selects a fixture by its object's name ("-": none), as a click on it would. */
+int planner_pick(planner *p, const char *name);
 /* Moves a fixture (by object name) to a plan point, as a drag in the plan would. */
 int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm);
 void planner_plan_scroll(planner *p, double steps);
@@ -259,6 +261,10 @@ int planner_move_wall(planner *p, int wall, double offset_mm);
 int planner_wall_item_line(const planner *p, int kind, int wall, char *line, size_t size);
 /* findings_3d.c: the placement findings marked over the 3D view. */
 void planner_findings_3d(planner *p, int width, int height);
+/* selection_3d.c: the selected fixture and its group outlined over the 3D view; the window
+ * pixels x0 y0 x1 y1 around that outline inside the pane (0 when none shows). */
+void planner_selection_3d(planner *p);
+int planner_selection_3d_bounds(const planner *p, float bounds[4]);
 /* "STEM-N" with the smallest N no opening, pre-wall or niche of the plan is named (a static
  * buffer, valid until the next call). */
 const char *planner_unique_name(const planner *p, const char *stem);

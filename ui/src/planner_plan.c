@@ -36,6 +36,18 @@ static int inside_room(const planner *p, double x_mm, double y_mm)
     return ui_plan_contains(planner_plan(p, box, &fallback), x_mm, y_mm);
 }
 
+int planner_pick(planner *p, const char *name)
+{
+    int i = strcmp(name, "-") ? object_index(p, name) : -1;
+    if (i >= 0 && !fixture_of(p, i)) {
+        planner_status(p, "no fixture \"%s\" in the plan", name);
+        return 1;
+    }
+    p->plan_o.selected_object = i;
+    p->plan_o.selected_wall = -1;
+    return 0;
+}
+
 int planner_drag_object(planner *p, const char *name, double x_mm, double y_mm)
 {
     int i = strcmp(name, "-") ? object_index(p, name) : p->plan_o.selected_object;

@@ -273,6 +273,8 @@ static int apply(planner *p, const ui_action *a)
     case UI_ACT_TILE_PANEL:
         return planner_tile_action(p, a) ? fail(a, p->status) : 0;
     case UI_ACT_WAIT_FILE: /* input_script.c */
+    case UI_ACT_PICK:
+        return planner_pick(p, a->text) ? fail(a, p->status) : 0;
     case UI_ACT_LOCATE:
     case UI_ACT_EXPECT_SEARCH:
         return planner_input_action(p, a) ? fail(a, p->status) : 0;

@@ -69,6 +69,7 @@ static const struct {
     {"expect-search", UI_ACT_EXPECT_SEARCH, 0, 2},
     {"panes", UI_ACT_PANES, 0, 1},
     {"split", UI_ACT_SPLIT, 1, 0},
+    {"pick", UI_ACT_PICK, 0, 1},
     {"print-pdf", UI_ACT_FILES, 0, 3},
     {"render-image", UI_ACT_FILES, 0, 3},
     {"export-glb", UI_ACT_FILES, 0, 3},

@@ -66,6 +66,10 @@
  *                          pixels, and whether its panel shows it (input_script.c)
  *   locate widget-if-drawn LABEL...  the same, logging "not drawn" instead of failing
  *   locate fixture NAME... log where a fixture's centre is in the plan view (view plan first)
+ *   locate selection       log the window-pixel box around the selection's outline in the
+ *                          3D view (selection_3d.c), or that none shows
+ *   pick NAME              select a fixture by its object's name, as a click on it in the
+ *                          plan or the 3D view does ("-": clear the selection)
  *   expect-search TEXT...  fail unless the catalog browser's search field holds exactly TEXT
  *   panes both|one         plan and 3D side by side, or the active view alone (View menu)
  *   split SX               drag the splitter between the panes to window x SX
@@ -146,6 +150,7 @@ typedef enum ui_action_kind {
     UI_ACT_EXPECT_SEARCH,
     UI_ACT_PANES, /* the window's layout (panel_layout.h) */
     UI_ACT_SPLIT,
+    UI_ACT_PICK,  /* the selection, by name */
     UI_ACT_FILES, /* planner_actions.h: text is "VERB ARGUMENT" */
     UI_ACT_QUIT
 } ui_action_kind;
