@@ -46,10 +46,10 @@ test "$(echo "$boxes" | wc -l)" -eq 2 || { echo "FAIL: no outline box logged: $b
 count() { # SHOT X0 Y0 X1 Y1
     "$check" --count dc6e00 12 "$(($2 - 3)),$(($3 - 3)),$(($4 + 4)),$(($5 + 4))" "$out/$1.png"
 }
-# shellcheck disable=SC2086 # the box splits into four numbers on purpose
+# shellcheck disable=SC2046 # the box splits into four numbers on purpose
 set -- $(echo "$boxes" | head -n 1)
 picked=$(count accumulating "$@") refined=$(count refined "$@") before=$(count before "$@")
-# shellcheck disable=SC2086
+# shellcheck disable=SC2046
 set -- $(echo "$boxes" | tail -n 1)
 moving=$(count moving "$@") cleared=$(count cleared "$@")
 echo "selection-coloured pixels: before $before, accumulating $picked, refined $refined," \
