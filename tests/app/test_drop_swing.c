@@ -178,8 +178,51 @@ static void test_explicit_rule_kept(void)
     app_project_free_all(&p);
 }
 
+static void test_clear_of_free_areas(void)
+{
+    /* app_slide_out_of_swing alone: a WC on wall 0 at x = 1500 (footprint x 1320..1680, y
+     * 0..560) keeps its 800 x 550 free area in front (x 1100..1900, y 560..1110). A cabinet
+     * 400 wide and 600 deep (a category without a side distance) dropped at x = 2500 in the
+     * swing would fit at x = 1900 beside the WC's footprint, but its front would stand in the
+     * WC's free area: it goes to x = 1100 - 200 = 900. */
+    app_project p;
+    make_room(&p, box, 4);
+    app_history *h = app_history_create(0);
+    run(&p, h, door);
+    app_fixture wc;
+    memset(&wc, 0, sizeof wc);
+    wc.object = 0;
+    wc.category = CAT_CATEGORY_WCS_BIDETS;
+    wc.has_product = 1;
+    wc.role = APP_ROLE_FIXTURE;
+    wc.centre[0] = 1500;
+    wc.centre[1] = 280;
+    wc.half[0] = 180;
+    wc.half[1] = 280;
+    wc.z1 = 420;
+    wc.width_mm = 360;
+    wc.depth_mm = 560;
+    app_pose in = {2500, 0, 0, 0}, out;
+    CHECK(app_slide_out_of_swing(&p.plan, &wc, 1, CAT_CATEGORY_ACCESSORIES, 400, 600, 0, 900, in,
+                                 &out) == 1);
+    CHECK_NEAR(out.x, 900, 1e-6);
+    CHECK_NEAR(out.y, 0, 1e-6);
+    /* 500 deep, it stays out of the free area anyway: beside the WC's footprint at 1900. */
+    CHECK(app_slide_out_of_swing(&p.plan, &wc, 1, CAT_CATEGORY_ACCESSORIES, 400, 500, 0, 900, in,
+                                 &out) == 1);
+    CHECK_NEAR(out.x, 1900, 1e-6);
+    /* Out of every swing already: not moved. */
+    in.x = 1000;
+    CHECK(app_slide_out_of_swing(&p.plan, &wc, 1, CAT_CATEGORY_ACCESSORIES, 400, 500, 0, 900, in,
+                                 &out) == 0);
+    CHECK_NEAR(out.x, 1000, 1e-6);
+    app_history_destroy(h);
+    app_project_free_all(&p);
+}
+
 int main(void)
 {
+    test_clear_of_free_areas();
     test_slid_along_the_side_wall();
     test_slid_along_the_door_wall();
     test_wall_inside_the_swing();
