@@ -13,13 +13,11 @@
 
 /* DOMAIN.md "Clearances": at least 200 mm between objects and to side walls. It is a rule of
  * the trade, not advice: a shorter distance is an error like a blocked free area. */
-#define SIDE_DISTANCE_MM 200.0
+#define SIDE_DISTANCE_MM PL_SIDE_DISTANCE_MM
 /* Free areas are for standing and moving: anything reaching below this height blocks them. */
 #define FREE_AREA_HEADROOM_MM 2000.0
 /* Anything no higher than this is a floor covering (a mat, a rug): walked on, not around. */
 #define FLOOR_COVERING_MM 20.0
-/* A fixture this close to a wall, across a door or window in it, stands in front of it. */
-#define OPENING_REACH_MM 50.0
 /* DIN 18040-2: the wheelchair WC needs 900 mm clear on one side and 300 on the other, over
  * 700 mm of depth from the wall. */
 #define WC_WIDE_SIDE_MM 900.0
@@ -61,7 +59,7 @@ static int apart(const double a[4], const double b[4], double margin)
            b[1] > a[3] + margin;
 }
 
-static int is_sanitary(int category)
+static int is_sanitary_category(int category)
 {
     return category == CAT_CATEGORY_BASINS || category == CAT_CATEGORY_WCS_BIDETS ||
            category == CAT_CATEGORY_BATHS || category == CAT_CATEGORY_SHOWER_TRAYS ||
@@ -73,6 +71,12 @@ static int is_sanitary(int category)
 static int needs_side_room(int category)
 {
     return category == CAT_CATEGORY_BASINS || category == CAT_CATEGORY_WCS_BIDETS;
+}
+
+int pl_side_distance_applies(int category_a, int category_b)
+{
+    return is_sanitary_category(category_a) && is_sanitary_category(category_b) &&
+           (needs_side_room(category_a) || needs_side_room(category_b));
 }
 
 /* Whether a fixture takes room on the floor and in the air (not a mat, not an attachment). */
@@ -195,9 +199,7 @@ static app_result check_collisions(check_ctx *c)
                     return r;
                 continue;
             }
-            if (!is_sanitary(a->category) || !is_sanitary(b->category))
-                continue;
-            if (!needs_side_room(a->category) && !needs_side_room(b->category))
+            if (!pl_side_distance_applies(a->category, b->category))
                 continue;
             double at[2];
             double dist = pl_rect_distance(&ra, &rb, at);
@@ -285,7 +287,7 @@ static app_result check_room(check_ctx *c)
             }
             double along = fmin(s_hi, op->offset_mm + op->width_mm) - fmax(s_lo, op->offset_mm);
             double zo = z_overlap(f->z0, f->z1, op->sill_mm, op->sill_mm + op->height_mm);
-            if (along > PL_TOLERANCE_MM && t_lo < OPENING_REACH_MM && zo > PL_TOLERANCE_MM) {
+            if (along > PL_TOLERANCE_MM && t_lo < PL_OPENING_REACH_MM && zo > PL_TOLERANCE_MM) {
                 double sm =
                     0.5 * (fmax(s_lo, op->offset_mm) + fmin(s_hi, op->offset_mm + op->width_mm));
                 double at[2] = {o[0] + d[0] * sm, o[1] + d[1] * sm};
@@ -298,19 +300,9 @@ static app_result check_room(check_ctx *c)
                     return res;
                 continue;
             }
-            if (op->type != APP_OPENING_DOOR ||
-                (op->swing != APP_SWING_IN_LEFT && op->swing != APP_SWING_IN_RIGHT))
-                continue;
-            /* A leaf opening into the room sweeps a quarter circle; its square is kept free. */
             pl_rect sw;
-            sw.ax[0] = d[0];
-            sw.ax[1] = d[1];
-            sw.ay[0] = nrm[0];
-            sw.ay[1] = nrm[1];
-            sw.h[0] = sw.h[1] = 0.5 * op->width_mm;
-            double sm = op->offset_mm + 0.5 * op->width_mm;
-            sw.c[0] = o[0] + d[0] * sm + nrm[0] * sw.h[1];
-            sw.c[1] = o[1] + d[1] * sm + nrm[1] * sw.h[1];
+            if (!pl_door_swing_rect(plan, k, &sw))
+                continue;
             if (pl_rect_penetration(&r, &sw) > PL_TOLERANCE_MM && f->z0 < op->height_mm) {
                 res = pl_add_finding(c->out, APP_FINDING_OPENING, APP_SEVERITY_ERROR, f->object, -1,
                                      sw.c, "\"%s\" is in the swing of the door \"%s\"", f->name,

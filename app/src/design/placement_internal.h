@@ -44,6 +44,35 @@ void pl_wall_frame(const app_room_plan *plan, int wall, double origin[2], double
 /* The plan rectangle of pre-wall k. */
 pl_rect pl_prewall_rect(const app_room_plan *plan, int k);
 
+/* A face a fixture's back can stand against: a wall, or a pre-wall's front. */
+typedef struct pl_face {
+    int wall;
+    int prewall;             /* -1 for the wall itself */
+    double o[2], d[2], n[2]; /* the wall's start corner, direction, inward normal */
+    double len;              /* the wall's length */
+    double s0, s1;           /* the face's extent along the wall */
+    double offset;           /* the face's distance from the wall line (pre-wall depth) */
+} pl_face;
+
+/* Faces are numbered walls first, then pre-walls. pl_face_get returns 0 for a degenerate
+ * one. */
+int pl_face_count(const app_room_plan *plan);
+int pl_face_get(const app_room_plan *plan, int k, pl_face *f);
+/* The face the pose's back stands on (within 1 mm, facing along its normal), or -1. */
+int pl_face_of_pose(const app_room_plan *plan, app_pose in, pl_face *out);
+
+/* DOMAIN.md "Clearances": at least 200 mm between objects (VDI 6000 sheet 1). */
+#define PL_SIDE_DISTANCE_MM 200.0
+/* 1 when two fixtures of these categories must keep PL_SIDE_DISTANCE_MM apart (sanitary
+ * objects, one of them a basin or a WC). */
+int pl_side_distance_applies(int category_a, int category_b);
+
+/* A fixture this close to a wall, across a door or window in it, stands in front of it. */
+#define PL_OPENING_REACH_MM 50.0
+/* The square an inward-opening door's leaf sweeps (its width deep, in front of the
+ * doorway), kept free; 0 when opening k is no door opening into the room. */
+int pl_door_swing_rect(const app_room_plan *plan, int k, pl_rect *out);
+
 /* Appends a finding; returns APP_ERR_OUT_OF_MEMORY when it cannot. */
 app_result pl_add_finding(app_findings *f, app_finding_kind kind, app_severity sev, int obj_a,
                           int obj_b, const double pos[2], const char *fmt, ...)

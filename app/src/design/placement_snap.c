@@ -9,22 +9,12 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* A face a fixture's back can stand against: a wall, or a pre-wall's front. */
-typedef struct face {
-    int wall;
-    int prewall;             /* -1 for the wall itself */
-    double o[2], d[2], n[2]; /* the wall's start corner, direction, inward normal */
-    double len;              /* the wall's length */
-    double s0, s1;           /* the face's extent along the wall */
-    double offset;           /* the face's distance from the wall line (pre-wall depth) */
-} face;
-
-static int face_count(const app_room_plan *plan)
+int pl_face_count(const app_room_plan *plan)
 {
     return plan->corner_count + plan->prewall_count;
 }
 
-static int face_get(const app_room_plan *plan, int k, face *f)
+int pl_face_get(const app_room_plan *plan, int k, pl_face *f)
 {
     memset(f, 0, sizeof *f);
     if (k < plan->corner_count) {
@@ -63,11 +53,11 @@ int app_snap_to_wall(const app_room_plan *plan, double width_mm, app_pose in,
         return -1;
     int best = -1;
     double best_dist = INFINITY, best_s = 0;
-    face bf;
+    pl_face bf;
     memset(&bf, 0, sizeof bf);
-    for (int k = 0; k < face_count(plan); k++) {
-        face f;
-        if (!face_get(plan, k, &f))
+    for (int k = 0; k < pl_face_count(plan); k++) {
+        pl_face f;
+        if (!pl_face_get(plan, k, &f))
             continue;
         double rx = in.x - f.o[0], ry = in.y - f.o[1];
         double s = rx * f.d[0] + ry * f.d[1];
@@ -92,14 +82,13 @@ int app_snap_to_wall(const app_room_plan *plan, double width_mm, app_pose in,
     return bf.wall;
 }
 
-/* The face the pose's back stands on (within 1 mm, facing along its normal), or -1. */
-static int face_of_pose(const app_room_plan *plan, app_pose in, face *out)
+int pl_face_of_pose(const app_room_plan *plan, app_pose in, pl_face *out)
 {
     double a = in.rotation_deg * M_PI / 180;
     double fy[2] = {-sin(a), cos(a)};
-    for (int k = 0; k < face_count(plan); k++) {
-        face f;
-        if (!face_get(plan, k, &f))
+    for (int k = 0; k < pl_face_count(plan); k++) {
+        pl_face f;
+        if (!pl_face_get(plan, k, &f))
             continue;
         if (fy[0] * f.n[0] + fy[1] * f.n[1] < 0.999)
             continue;
@@ -121,8 +110,8 @@ int app_snap_to_corner(const app_room_plan *plan, double width_mm, app_pose in,
     *out = in;
     if (!plan || plan->corner_count < 3 || !plan->corners)
         return 0;
-    face f;
-    if (face_of_pose(plan, in, &f) < 0)
+    pl_face f;
+    if (pl_face_of_pose(plan, in, &f) < 0)
         return 0;
     double s = (in.x - f.o[0]) * f.d[0] + (in.y - f.o[1]) * f.d[1];
     double left = s - 0.5 * width_mm, right = s + 0.5 * width_mm;

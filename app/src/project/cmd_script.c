@@ -307,10 +307,15 @@ static int object_size(sctx *c, int i, double *w, double *d)
 }
 
 /* Applies the `snap ...` words after index `from` to pose; self = the object being placed
- * (-1 for a new one). */
-static int snap(sctx *c, int from, double width, double depth, int self, app_pose *pose)
+ * (-1 for a new one). *wall_only (may be NULL) = 1 when the words were just `snap wall`, the
+ * drop rule of the window (docs/editing.md "Mounting heights"). */
+static int snap(sctx *c, int from, double width, double depth, int self, app_pose *pose,
+                int *wall_only)
 {
     int i = keyword(c, from, "snap");
+    if (wall_only)
+        *wall_only = i >= 0 && i + 1 < c->ntok && !strcmp(c->tok[i + 1], "wall") &&
+                     (i + 2 == c->ntok || c->used[i + 2]);
     if (i < 0)
         return 1;
     int any = 0;
@@ -457,6 +462,34 @@ static int mount(sctx *c, const app_product_info *info, const char *on, int has_
     return 1;
 }
 
+/* A product dropped against a wall (`snap wall` alone, and not on a carrier) is slid along
+ * that wall out of a door's swing when a clear position exists there; else it stays and the
+ * `opening` check reports it (docs/editing.md "Mounting heights"). */
+static int slide_out_of_swing(sctx *c, const app_product_info *info, app_pose *pose)
+{
+    app_fixture *fx = NULL;
+    int n = 0;
+    char err[1024];
+    if (app_placement_fixtures(c->p, c->env ? c->env->lookup : NULL, c->env ? c->env->user : NULL,
+                               &fx, &n, err, sizeof err) != APP_OK)
+        return fail(c, "%s: %s", c->tok[0], err);
+    app_pose out;
+    int moved =
+        app_slide_out_of_swing(&c->p->plan, fx, n, info->category, info->width_mm, info->depth_mm,
+                               pose->z, pose->z + info->height_mm, *pose, &out);
+    free(fx);
+    if (moved > 0 && c->env && c->env->log)
+        fprintf(c->env->log, "place: out of a door swing: (%.0f, %.0f) -> (%.0f, %.0f)\n", pose->x,
+                pose->y, out.x, out.y);
+    else if (moved < 0 && c->env && c->env->log)
+        fprintf(c->env->log,
+                "place: no position on that wall is clear of the door swing; left at (%.0f, "
+                "%.0f)\n",
+                pose->x, pose->y);
+    *pose = out;
+    return 1;
+}
+
 static int do_place(sctx *c)
 {
     int at = keyword(c, 1, "at");
@@ -486,10 +519,13 @@ static int do_place(sctx *c)
     if (!ref.variant[0] && info.variant[0])
         memcpy(ref.variant, info.variant, sizeof ref.variant);
     app_pose pose = {pos[0], pos[1], pos[2], rot};
-    if (!snap(c, opt, info.width_mm, info.depth_mm, -1, &pose) || !all_used(c))
+    int dropped = 0;
+    if (!snap(c, opt, info.width_mm, info.depth_mm, -1, &pose, &dropped) || !all_used(c))
         return 0;
     char parent[64] = "";
     if ((on || !has_z) && !mount(c, &info, on, has_z, &pose, parent, sizeof parent))
+        return 0;
+    if (dropped && !parent[0] && !slide_out_of_swing(c, &info, &pose))
         return 0;
 
     app_command_desc d;
@@ -590,7 +626,7 @@ static int do_move(sctx *c, int relative)
     int si = keyword(c, 5, "snap");
     if (si >= 0) {
         c->used[si] = 0; /* snap() looks for it again */
-        if (!object_size(c, i, &w, &dep) || !snap(c, 5, w, dep, i, &pose))
+        if (!object_size(c, i, &w, &dep) || !snap(c, 5, w, dep, i, &pose, NULL))
             return 0;
     }
     if (!all_used(c))

@@ -237,6 +237,19 @@ int app_snap_to_neighbour(const app_fixture *fx, int count, int self_object, dou
                           double depth_mm, app_pose in, double max_distance_mm, double gap_mm,
                           app_pose *out);
 
+/* After app_snap_to_wall, for a dropped product: when the footprint of a fixture (width x
+ * depth, its back on the wall or pre-wall face the pose stands on, z0..z1 above the floor)
+ * lies in the swing of a door opening into the room (the square the `opening` check keeps
+ * free), slides it along that face to the nearest position, on either side, clear of every
+ * door swing, of the doorways and windows in front of it, of pre-walls, of the footprints
+ * and free areas of the fixtures of fx, and 200 mm from those the distance check keeps a
+ * product of `category` (cat_category) from, with the whole fixture on the face. Returns 1
+ * when it moved, 0 when it was in no swing, -1 when no such position exists on that face (or
+ * out of memory); *out = in unless it moved. */
+int app_slide_out_of_swing(const app_room_plan *plan, const app_fixture *fx, int count,
+                           int category, double width_mm, double depth_mm, double z0, double z1,
+                           app_pose in, app_pose *out);
+
 #ifdef __cplusplus
 }
 #endif
