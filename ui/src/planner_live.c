@@ -102,10 +102,11 @@ static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, i
     planner_view(p, *rw, *rh, &v);
     v.supersample = 1;
     double t0 = glfwGetTime();
-    if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK || present_view(p) != RD_OK)
+    if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK)
         return render_failed();
     /* Kept for the still view's first picture: by the time the view stops, the context's
-     * last render may be a catalog thumbnail. */
+     * last render may be a catalog thumbnail. Read before the present: the readback binds
+     * the render's own framebuffer, the present binds the window again for the panels. */
     size_t size = (size_t)*rw * (size_t)*rh * 4;
     if (size > p->live.last_size) {
         free(p->live.last);
@@ -113,6 +114,8 @@ static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, i
         p->live.last_size = p->live.last ? size : 0;
     }
     if (p->live.last && rd_read_rgba8(p->ctx, p->live.last, size) != RD_OK)
+        return render_failed();
+    if (present_view(p) != RD_OK)
         return render_failed();
     *render_ms = (float)((glfwGetTime() - t0) * 1e3);
     p->live.last_w = *rw;
