@@ -2,8 +2,10 @@
  * TESSERA_HEAP_LOG=SECONDS set, a line every that many seconds with glibc's mallinfo2(3)
  * figures and the planner's caches, so resident growth can be told apart as memory in use
  * (a leak or a cache that grows) or memory freed but kept by the allocator (fragmentation).
- * TESSERA_HEAP_TRIM=1 also gives free heap pages back with malloc_trim(3) after each scene
- * rebuild, to measure what the allocator keeps. */
+ * After each scene rebuild the free heap pages go back to the system (malloc_trim(3)): a
+ * rebuild frees and allocates tens of megabytes in pieces, and glibc keeps the holes, so the
+ * resident size crept up by the holes' size in the soak while the memory in use stayed flat.
+ * TESSERA_HEAP_TRIM=0 turns that off, to measure what the allocator keeps. */
 #define _GNU_SOURCE
 #include "planner.h"
 #include "tiles.h"
@@ -30,7 +32,7 @@ void planner_heap_after_rebuild(void)
     static int enabled = -1;
     if (enabled < 0) {
         const char *s = getenv("TESSERA_HEAP_TRIM");
-        enabled = s && *s == '1';
+        enabled = !(s && *s == '0');
     }
     if (enabled)
         malloc_trim(0);

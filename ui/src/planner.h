@@ -242,7 +242,7 @@ int planner_lock_for_save_as(planner *p, const char *path, app_project_lock *out
 void planner_unlock_document(planner *p);
 void planner_autosave_tick(planner *p, double now);
 /* heap_log.c: with TESSERA_HEAP_LOG=SECONDS, a heap and caches line on stderr that often;
- * with TESSERA_HEAP_TRIM=1, planner_rebuild_scene gives free heap pages back. */
+ * planner_heap_after_rebuild gives free heap pages back (TESSERA_HEAP_TRIM=0: not). */
 void planner_heap_log_tick(planner *p, double now);
 void planner_heap_after_rebuild(void);
 int planner_recovery_available(const planner *p);
