@@ -3,8 +3,8 @@
  * figures and the planner's caches, so resident growth can be told apart as memory in use
  * (a leak or a cache that grows) or memory freed but kept by the allocator (fragmentation).
  * After each scene rebuild the free heap pages go back to the system (malloc_trim(3)): a
- * rebuild frees and allocates tens of megabytes in pieces, and glibc keeps the holes, so the
- * resident size crept up by the holes' size in the soak while the memory in use stayed flat.
+ * rebuild frees and allocates the scene in many pieces, and glibc keeps the freed pages, so
+ * repeated rebuilds raised the resident size while the memory in use stayed flat.
  * TESSERA_HEAP_TRIM=0 turns that off, to measure what the allocator keeps. */
 #define _GNU_SOURCE
 #include "planner.h"
