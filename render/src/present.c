@@ -121,3 +121,11 @@ rd_result rd_bind_window(rd_context *ctx, int width, int height)
     glViewport(0, 0, width, height);
     return RD_OK;
 }
+
+unsigned rd_draw_framebuffer(rd_context *ctx)
+{
+    (void)ctx; /* the adopted window's context is current */
+    GLint bound = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    return (unsigned)bound;
+}

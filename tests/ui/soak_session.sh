@@ -202,12 +202,32 @@ first_shot=$(ls "$out"/shot-*.png 2>/dev/null | head -n 1)
 if [ -n "$first_shot" ]; then "$check" "$first_shot" "$out/end.png" || fail "the screenshots do not differ"; fi
 selections=$(grep -c '^tessera: selected' "$log" || true)
 
+# Every screenshot taken with the panels showing (the layout line before it has a left
+# column; presenting has none) shows them: the columns their background, each view pane a
+# drawing (screenshot_check --panes). The window logs each frame whose panels found an
+# off-screen target bound (and binds the window again).
+for shot in "$out"/shot-*.png "$out/end.png"; do
+    test -s "$shot" || continue
+    name=$(basename "$shot")
+    layout=$(awk -v s="screenshot $out/$name " '/^tessera: layout/ { l = $0 } index($0, s) { print l; exit }' "$log")
+    case "$layout" in *" left "*) ;; *) continue ;; esac
+    rects=$(echo "$layout" | awk '{ for (i = 4; i < NF; i += 2) { split($(i + 1), r, ",")
+        if (r[3] <= 0 || r[4] <= 0) continue
+        if ($i == "left" || $i == "right") printf " panel %s", $(i + 1)
+        if ($i == "2d" || $i == "3d") printf " view %s", $(i + 1) } }')
+    # shellcheck disable=SC2086 # the rectangles are separate arguments
+    "$check" --panes "$shot" $rects >"$out/panes-${name%.png}.txt" 2>&1 ||
+        fail "$name does not show the panels and views: $(grep FAIL "$out/panes-${name%.png}.txt" | head -n 1)"
+done
+stray=$(sed -n 's/^tessera: gui: \([0-9]*\) times a frame found an off-screen target bound/\1/p' "$log")
+
 {
     echo "seed $seed, $seconds s asked, $soak_end s run"
     echo "actions $actions ($(cut -d' ' -f2 "$out/actions.txt" | sort | uniq -c | sort -rn |
         awk '{ printf "%s%s %s", (NR > 1 ? ", " : ""), $2, $1 }'))"
     echo "frames ${frames:-?}"
     echo "gl_errors ${gl_errors:-?}"
+    echo "frames whose panels found an off-screen target bound: ${stray:-?}"
     echo "monkey from ${monkey_t0} s; rss_kb ${warm} s into it: $rss_warm; 60 s into it: ${rss_minute:-n/a}; at the end: $rss_end; peak: $rss_max"
     echo "growth_kb after warm-up: $growth_kb"
     echo "ctrl+s presses $saves; selections logged $selections"

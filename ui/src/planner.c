@@ -6,6 +6,7 @@
 #include "app/project/commands.h"
 #include "app/scene/scene_bake.h"
 #include "gui.h"
+#include "render/ui_texture.h"
 
 #include <GLFW/glfw3.h>
 #include <math.h>
@@ -130,6 +131,20 @@ static int open_project(planner *p, const ui_options *o)
     return 0;
 }
 
+/* Work done in the frame (a render target made for a preset, an edit's scene rebuild, a
+ * thumbnail) may leave its own framebuffer bound: the panels are drawn into the window
+ * whatever came before, and each such frame is logged with the stage that left it. */
+static void window_target(planner *p, const char *after, int width, int height)
+{
+    unsigned stray = rd_draw_framebuffer(p->ctx);
+    if (!stray)
+        return;
+    p->stray_target_frames++;
+    fprintf(stderr, "tessera: gui: frame %ld: framebuffer %u bound after %s, not the window\n",
+            p->frame_count, stray, after);
+    rd_bind_window(p->ctx, width, height);
+}
+
 static int frame(planner *p)
 {
     int fw, fh;
@@ -156,6 +171,7 @@ static int frame(planner *p)
         planner_live_frame(p, fw, fh, pane, &render_ms, &rw, &rh))
         return 1;
 
+    window_target(p, "the 3D view", fw, fh);
     ui_gui_new_frame();
     if (p->presenting) {
         planner_draw_presentation(p, fw, fh);
@@ -175,6 +191,8 @@ static int frame(planner *p)
     }
     planner_files_frame(p, fw, fh, dt); /* dialogs and the job panel, presenting or not */
     planner_autosave_tick(p, now);
+    planner_heap_log_tick(p, now);
+    window_target(p, "the panels", fw, fh);
     ui_gui_render();
     planner_gl_check_frame();
     if (p->script.count && planner_script_step(p))

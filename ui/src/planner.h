@@ -55,6 +55,8 @@ typedef struct planner {
     int frame_index;
     long frame_count;
     double last_time;
+    long stray_target_frames; /* frames whose panels found an off-screen target bound */
+    double heap_logged_at;    /* heap_log.c: the last TESSERA_HEAP_LOG line */
     FILE *frame_log;
 
     /* The live 3D view (planner_live.c): moving frames at a reduced scale, then the still view
@@ -239,6 +241,10 @@ void planner_lock_document(planner *p);
 int planner_lock_for_save_as(planner *p, const char *path, app_project_lock *out);
 void planner_unlock_document(planner *p);
 void planner_autosave_tick(planner *p, double now);
+/* heap_log.c: with TESSERA_HEAP_LOG=SECONDS, a heap and caches line on stderr that often;
+ * planner_heap_after_rebuild gives free heap pages back (TESSERA_HEAP_TRIM=0: not). */
+void planner_heap_log_tick(planner *p, double now);
+void planner_heap_after_rebuild(void);
 int planner_recovery_available(const planner *p);
 int planner_recover(planner *p, int accept);
 void planner_status(planner *p, const char *fmt, ...) __attribute__((format(printf, 2, 3)));

@@ -81,6 +81,7 @@ int planner_rebuild_scene(planner *p)
     }
     p->scene_ready = 1;
     planner_set_quality(p, p->quality);
+    planner_heap_after_rebuild();
     return 0;
 }
 
@@ -119,6 +120,8 @@ void planner_doc_close(planner *p)
                 p->thumbs.rendered, p->thumbs.total_ms / p->thumbs.rendered);
     if (p->thumbs.error[0])
         fprintf(stderr, "tessera: thumbnails: %s\n", p->thumbs.error);
+    fprintf(stderr, "tessera: gui: %ld times a frame found an off-screen target bound\n",
+            p->stray_target_frames);
     ui_thumbnails_free(&p->thumbs); /* the window's GL context is still current */
     app_history_destroy(p->history);
     p->history = NULL;

@@ -105,9 +105,8 @@ static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, i
     if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK)
         return render_failed();
     /* Kept for the still view's first picture: by the time the view stops, the context's
-     * last render may be a catalog thumbnail. Read before the present: the read leaves the
-     * render's framebuffer bound, and the panels and overlays drawn after the present would
-     * land there instead of in the window (they vanished while the view moved). */
+     * last render may be a catalog thumbnail. Read before the present: the readback binds
+     * the render's own framebuffer, the present binds the window again for the panels. */
     size_t size = (size_t)*rw * (size_t)*rh * 4;
     if (size > p->live.last_size) {
         free(p->live.last);

@@ -23,6 +23,9 @@ void rd_ui_texture_delete(rd_context *ctx, unsigned gl_name);
  * in the frame (a thumbnail's rd_render), so the caller's widgets draw into the window.
  * Implemented in present.c. */
 rd_result rd_bind_window(rd_context *ctx, int width, int height);
+/* The framebuffer draws go to now: 0 is the window, anything else a target off-screen work
+ * left bound. */
+unsigned rd_draw_framebuffer(rd_context *ctx);
 
 #ifdef __cplusplus
 }
