@@ -15,18 +15,23 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-static int read_rgba(const char *path, rd_image *img, float **px)
+/* The image's size in w, h and its pixels as RGBA floats in *px (malloc'ed). */
+static int read_rgba(const char *path, int *w, int *h, float **px)
 {
     char err[1024];
+    rd_image image;
+    rd_image *img = &image;
     if (rd_image_read(path, img, NULL, err, sizeof err) != RD_IMAGE_OK) {
         fprintf(stderr, "check_noise_agreement: %s\n", err);
         return 0;
     }
+    *w = img->width;
+    *h = img->height;
     *px = malloc(4 * (size_t)img->width * (size_t)img->height * sizeof **px);
-    if (!*px)
-        return 0;
-    rd_image_expand_rgba(img, *px);
-    return 1;
+    if (*px)
+        rd_image_expand_rgba(img, *px);
+    rd_image_free(img);
+    return *px != NULL;
 }
 
 static double mse(const float *a, const float *b, size_t n)
@@ -57,17 +62,21 @@ int main(int argc, char **argv)
         fprintf(stderr, "check_noise_agreement: MIN_DB \"%s\" is not a number\n", argv[4]);
         return 2;
     }
-    rd_image g, r0, r1;
+    int gw = 0, gh = 0, w0 = 0, h0 = 0, w1 = 0, h1 = 0;
     float *pg = NULL, *p0 = NULL, *p1 = NULL;
-    if (!read_rgba(argv[1], &g, &pg) || !read_rgba(argv[2], &r0, &p0) ||
-        !read_rgba(argv[3], &r1, &p1))
-        return 2;
-    if (g.width != r0.width || g.height != r0.height || r0.width != r1.width ||
-        r0.height != r1.height) {
+    int read = read_rgba(argv[1], &gw, &gh, &pg) && read_rgba(argv[2], &w0, &h0, &p0) &&
+               read_rgba(argv[3], &w1, &h1, &p1);
+    if (read && (gw != w0 || gh != h0 || w0 != w1 || h0 != h1)) {
         fprintf(stderr, "check_noise_agreement: the images differ in size\n");
+        read = 0;
+    }
+    if (!read) {
+        free(pg);
+        free(p0);
+        free(p1);
         return 2;
     }
-    size_t n = (size_t)g.width * (size_t)g.height;
+    size_t n = (size_t)gw * (size_t)gh;
     double m_g = mse(pg, p0, n), m_seeds = mse(p0, p1, n);
     double noise = m_seeds / 2.0, bias = m_g - noise;
     double bias_db = psnr(bias > 0.0 ? bias : 0.0), noise_db = psnr(noise);
