@@ -273,6 +273,11 @@ static void elevation_in_pane(planner *p, ui_rect r)
     t->view = ui_elev_fit(lo.x, lo.y, hi.x, hi.y, ui_elev_mirrored(&t->frame), left, top + 40.0f,
                           right_x, r.y + r.h, 50.0f);
     t->view.px_per_mm *= t->zoom > 0 ? t->zoom : 1;
+    /* Panned at most half the surface from its fit: some of the surface always stays at the
+     * pane's centre, so no drag leaves an empty pane (Fit brings it back whole). */
+    float half_w = (float)(hi.x - lo.x) * 0.5f, half_h = (float)(hi.y - lo.y) * 0.5f;
+    t->pan[0] = t->pan[0] < -half_w ? -half_w : t->pan[0] > half_w ? half_w : t->pan[0];
+    t->pan[1] = t->pan[1] < -half_h ? -half_h : t->pan[1] > half_h ? half_h : t->pan[1];
     t->view.centre[0] += t->pan[0];
     t->view.centre[1] += t->pan[1];
     if (p->view == UI_VIEW_ELEVATION && planner_input_live(p))
