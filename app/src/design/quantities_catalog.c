@@ -133,8 +133,7 @@ static app_result add_line(app_bom *b, int *cap, app_bom_line **line, char *err,
     return APP_OK;
 }
 
-/* Fills the catalog part of a line; found = 0 when the catalog has no such product. */
-static void price_line(cat_db *db, app_bom_line *l)
+void app_bom_price_line(cat_db *db, app_bom_line *l)
 {
     cat_product p;
     char cerr[256];
@@ -319,7 +318,7 @@ app_result app_bom_build(cat_db *db, const app_project *p, const app_quantities 
         if (add_line(out, &cap, &l, err, err_size) != APP_OK)
             goto oom;
         l->product = t->spec.product;
-        price_line(db, l);
+        app_bom_price_line(db, l);
         l->is_tile = 1;
         l->tile_type = t->spec.type;
         l->quantity = app_tile_billed_quantity(t, l->unit);
@@ -343,7 +342,7 @@ app_result app_bom_build(cat_db *db, const app_project *p, const app_quantities 
         l->quantity = 1;
     }
     for (int k = first_fixture; k < out->line_count; k++)
-        price_line(db, &out->lines[k]);
+        app_bom_price_line(db, &out->lines[k]);
     if (out->line_count > first_fixture) /* qsort's array must not be NULL, even for 0 lines */
         qsort(out->lines + first_fixture, (size_t)(out->line_count - first_fixture),
               sizeof *out->lines, cmp_fixture);
@@ -393,7 +392,7 @@ app_result qty_bom_add_priced(cat_db *db, app_bom *b, int *cap, const app_produc
         return APP_ERR_OUT_OF_MEMORY;
     l->product = *ref;
     l->kind = kind;
-    price_line(db, l);
+    app_bom_price_line(db, l);
     l->quantity = quantity;
     snprintf(l->detail, sizeof l->detail, "%s", detail);
     return APP_OK;

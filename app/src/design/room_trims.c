@@ -5,7 +5,6 @@
 #include "app/design/room_surfaces.h"
 #include "room_mesh_internal.h"
 
-#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -211,28 +210,9 @@ app_result app_bom_add_trims(cat_db *db, const app_trim_quantity *trims, int cou
         memset(l, 0, sizeof *l);
         l->product = trims[k].product;
         l->quantity = trims[k].pieces;
-        l->unit = CAT_UNIT_PIECE;
-        cat_product p;
-        char cerr[256];
-        if (!db || cat_product_find(db, l->product.manufacturer, l->product.article, &p, cerr,
-                                    sizeof cerr) != CAT_DB_OK) {
-            snprintf(l->name, sizeof l->name, "%s %s (not in the catalog)", l->product.manufacturer,
-                     l->product.article);
-            continue;
-        }
-        l->found = 1;
-        snprintf(l->name, sizeof l->name, "%s", p.name);
-        snprintf(l->series, sizeof l->series, "%s", p.series);
-        l->category = p.category;
-        l->unit_price_cents = p.price_cents;
-        for (int v = 0; v < p.variant_count; v++)
-            if (l->product.variant[0] && !strcmp(p.variants[v].code, l->product.variant) &&
-                __builtin_add_overflow(l->unit_price_cents, p.variants[v].surcharge_cents,
-                                       &l->unit_price_cents))
-                l->unit_price_cents = LLONG_MAX; /* app_bom_total marks it out of range */
-        l->vat_percent = p.vat_percent;
-        snprintf(l->currency, sizeof l->currency, "%s", p.currency);
-        cat_product_free(&p);
+        app_bom_price_line(db, l);
+        l->unit = CAT_UNIT_PIECE; /* a profile is sold by the length, one piece each */
+        l->is_tile = 0;
     }
     app_bom_total(b);
     return APP_OK;

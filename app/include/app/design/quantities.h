@@ -222,6 +222,10 @@ app_result app_consumables_compute(const app_project *p, struct cat_db *db,
                                    const app_consumable_rules *rules, app_consumables *out,
                                    char *err, size_t err_size);
 
+/* Fills the catalog part of l from its product (name, series, category, unit, unit price with
+ * the variant's surcharge, VAT, currency); found = 0 when the catalog has no such product. */
+void app_bom_price_line(cat_db *db, app_bom_line *l);
+
 /* Appends the consumables and labour lines of c to b (priced from db like every line; lines
  * with a zero amount are left out) and totals b again. */
 app_result app_bom_add_consumables(cat_db *db, const app_consumables *c,
