@@ -8,7 +8,7 @@ static const char *const category_names[CAT_CATEGORY_COUNT] = {
     "",      "taps_mixers",     "shower_sets",    "basins",      "wcs_bidets",
     "baths", "shower_trays",    "shower_screens", "mirrors",     "mirror_cabinets",
     "lamps", "towel_radiators", "vanity_units",   "accessories", "tiles"};
-static const char *const unit_names[CAT_UNIT_COUNT] = {"piece", "m2", "box"};
+static const char *const unit_names[CAT_UNIT_COUNT] = {"piece", "m2", "box", "m"};
 static const char *const blend_names[CAT_BLEND_COUNT] = {"mix", "add", "fresnel"};
 static const char *const surface_names[CAT_SURFACE_COUNT] = {"glossy", "matt", "structured"};
 static const char *const tile_type_names[CAT_TILE_TYPE_COUNT] = {"UNI", "BOR", "DEK", "EIN"};

@@ -175,7 +175,7 @@ static void product_columns(checker *k)
     real(k, COL_VAT, 0, 100, 0, &p->vat_percent);
     p->unit = CAT_UNIT_PIECE;
     if (cell(k, COL_UNIT) && !cat_unit_parse(cell(k, COL_UNIT), &p->unit))
-        enum_problem(k, COL_UNIT, "unit", "piece, m2, box");
+        enum_problem(k, COL_UNIT, "unit", "piece, m2, box, m");
     copy(p->discount_group, sizeof p->discount_group, cell(k, COL_DISCOUNT_GROUP));
     if (cell(k, COL_MODEL)) {
         if (catdb_check_asset_path(cell(k, COL_MODEL), k->msg, sizeof k->msg))
@@ -330,6 +330,12 @@ int catdb_row_parse(const char *const cells[COL_COUNT], const size_t lengths[COL
     int is_tile = row->given[COL_CATEGORY] && p->category == CAT_CATEGORY_TILES;
     if (row->has_tile && row->given[COL_CATEGORY] && !is_tile)
         problem(&k, COL_TILE_TYPE, "tile columns are only for products of category tiles");
+    /* A tile's quantities are pieces, m2 and boxes (app_tile_billed_quantity); a price per
+     * metre would bill a count of tiles as metres. */
+    if (row->given[COL_UNIT] && p->unit == CAT_UNIT_M && (is_tile || row->has_tile))
+        problem(&k, COL_UNIT,
+                "a tile is priced per piece, m2 or box, not per metre (m is for profiles sold "
+                "by the length)");
     /* A tile's box: its work size and thickness, unless the row says otherwise. */
     if (row->has_tile && (is_tile || !cells[COL_CATEGORY])) {
         const cat_tile *t = &row->tile;

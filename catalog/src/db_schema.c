@@ -276,6 +276,9 @@ static const char schema_v5[] =
 
 typedef cat_db_result (*migration_fn)(sqlite3 *sql, const char *path, char *err, size_t err_size);
 
+static cat_db_result pragma_int(sqlite3 *sql, const char *path, const char *pragma, int *out,
+                                char *err, size_t err_size);
+
 static cat_db_result migrate_0_to_1(sqlite3 *sql, const char *path, char *err, size_t err_size)
 {
     return catdb_exec(sql, path, "cannot create the schema (version 1)", schema_v1, err, err_size);
@@ -311,8 +314,50 @@ static cat_db_result migrate_4_to_5(sqlite3 *sql, const char *path, char *err, s
     return r;
 }
 
+/* Version 6: products may be priced per metre (unit 'm': trim profiles, billed by the metres of
+ * the whole lengths bought). SQLite cannot alter a CHECK constraint, and rebuilding products
+ * would drop the search triggers and cascade into variants and tiles; widening the accepted
+ * values changes no stored row, so the table's text in sqlite_schema is edited in place, the
+ * procedure sqlite.org/lang_altertable.html ("Making Other Kinds Of Table Schema Changes")
+ * gives for constraint changes that leave the data valid: writable_schema, then
+ * schema_version + 1 so every connection reads the new text (test_db_schema.c runs
+ * integrity_check on a migrated file). */
+static cat_db_result migrate_5_to_6(sqlite3 *sql, const char *path, char *err, size_t err_size)
+{
+    const char *what = "cannot migrate the schema from version 5 to 6";
+    int version = 0;
+    cat_db_result r = pragma_int(sql, path, "PRAGMA schema_version", &version, err, err_size);
+    if (r != CAT_DB_OK)
+        return r;
+    char bump[64];
+    snprintf(bump, sizeof bump, "PRAGMA schema_version = %d", version + 1);
+    r = catdb_exec(sql, path, what,
+                   "PRAGMA writable_schema = ON;"
+                   "UPDATE sqlite_schema SET sql = replace(sql,"
+                   " 'CHECK (unit IN (''piece'', ''m2'', ''box''))',"
+                   " 'CHECK (unit IN (''piece'', ''m2'', ''box'', ''m''))')"
+                   " WHERE type = 'table' AND name = 'products';"
+                   "PRAGMA writable_schema = OFF;",
+                   err, err_size);
+    if (r != CAT_DB_OK) /* the UPDATE failed: never leave the schema writable */
+        sqlite3_exec(sql, "PRAGMA writable_schema = OFF", NULL, NULL, NULL);
+    if (r == CAT_DB_OK)
+        r = catdb_exec(sql, path, what, bump, err, err_size);
+    int unchanged = 1;
+    if (r == CAT_DB_OK)
+        r = pragma_int(sql, path,
+                       "SELECT count(*) FROM sqlite_schema WHERE name = 'products' AND sql NOT "
+                       "LIKE '%''box'', ''m'')%'",
+                       &unchanged, err, err_size);
+    if (r == CAT_DB_OK && unchanged)
+        return catdb_fail(err, err_size, CAT_DB_ERR_DATABASE,
+                          "%s: %s: the products table does not have the unit check of version 1",
+                          path, what);
+    return r;
+}
+
 static const migration_fn migrations[CAT_DB_SCHEMA_VERSION] = {
-    migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4, migrate_4_to_5};
+    migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4, migrate_4_to_5, migrate_5_to_6};
 
 static cat_db_result pragma_int(sqlite3 *sql, const char *path, const char *pragma, int *out,
                                 char *err, size_t err_size)

@@ -336,6 +336,37 @@ static void test_dry_run_and_progress(void)
     cat_db_close(db);
 }
 
+/* A price per metre (unit m): a trim profile sold by the length takes it; a tile cannot (its
+ * quantities are pieces, m2 and boxes), and a unit the catalog does not know names the known
+ * ones. */
+static void test_unit_metre(void)
+{
+    cat_db *db = open_catalog("metre.sqlite", 0);
+    static const char good[] = HEADER
+        "Testbad,TB-P,,accessories,S,L profile 2.5 m,,,2500,10,10,7.56,19,m" CHROME NO_TILE "\n";
+    cat_import_report rep;
+    CHECK(import_text(db, "metre.csv", good, &rep, NULL) == CAT_DB_OK);
+    print_problems(&rep);
+    cat_import_report_free(&rep);
+    cat_product p;
+    char err[512];
+    CHECK(cat_product_find(db, "Testbad", "TB-P", &p, err, sizeof err) == CAT_DB_OK);
+    CHECK(p.unit == CAT_UNIT_M && p.price_cents == 756 && !strcmp(cat_unit_name(p.unit), "m"));
+    cat_product_free(&p);
+    static const char bad[] = HEADER
+        /* 2 */ "A,A-1,,tiles,S,Tile,,,,,,39.90,19,m,MT,Matt,0,0.5 0.5 0.5,0.1 0.1 0.1,16,0.03,"
+                "0.25,fresnel,0,1.5,UNI,300,600,297,597,3,10,matt,1.44,8,\n"
+                /* 3 */ "A,A-2,,accessories,S,Profile,,,2500,10,10,7.56,19,metre" CHROME NO_TILE
+                "\n";
+    CHECK(import_text(db, "metre-bad.csv", bad, &rep, NULL) == CAT_DB_ERR_INVALID);
+    print_problems(&rep);
+    CHECK(has_problem(&rep, 2, "unit", "a tile is priced per piece, m2 or box, not per metre"));
+    CHECK(has_problem(&rep, 3, "unit", "unknown unit \"metre\" (known: piece, m2, box, m)"));
+    CHECK_MSG(rep.problem_count == 2, "%ld problems", rep.problem_count);
+    cat_import_report_free(&rep);
+    cat_db_close(db);
+}
+
 int main(void)
 {
     tmp_make();
@@ -345,6 +376,7 @@ int main(void)
     test_reimport();
     test_csv_forms();
     test_dry_run_and_progress();
+    test_unit_metre();
     tmp_remove();
     return check_report("test_db_import");
 }

@@ -159,6 +159,13 @@ static void test_migration_from_v1(void)
     CHECK(n == 1 && !strcmp(hits[0].article, "TL-300600"));
     CHECK(cat_search(db, "Oldtap", NULL, 4, hits, &n, err, sizeof err) == CAT_DB_OK && n == 1);
     cat_db_close(db);
+    /* Version 6 widened the unit check in place: a price per metre is taken, nonsense is not,
+     * and the edited schema passes SQLite's own check. */
+    CHECK(sql_run(path, "UPDATE products SET unit = 'm' WHERE article = 'OT-100'"));
+    CHECK(!sql_run(path, "UPDATE products SET unit = 'metre' WHERE article = 'OT-100'"));
+    CHECK(sql_int(path, "SELECT count(*) FROM products WHERE unit = 'm'") == 1);
+    CHECK(sql_int(path, "SELECT count(*) FROM pragma_integrity_check WHERE "
+                        "integrity_check = 'ok'") == 1);
 
     /* The migrated schema is the new one, table for table, column for column. */
     cat_db_close(open_catalog("fresh.sqlite", 0));

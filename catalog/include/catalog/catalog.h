@@ -22,7 +22,7 @@ extern "C" {
 
 /* The schema version this build writes (PRAGMA user_version). Older files are migrated on
  * open, one step at a time; newer ones are refused with CAT_DB_ERR_VERSION. */
-#define CAT_DB_SCHEMA_VERSION 5
+#define CAT_DB_SCHEMA_VERSION 6
 
 typedef enum cat_db_result {
     CAT_DB_OK = 0,
@@ -61,7 +61,15 @@ typedef enum cat_category {
     CAT_CATEGORY_COUNT
 } cat_category;
 
-typedef enum cat_unit { CAT_UNIT_PIECE = 0, CAT_UNIT_M2, CAT_UNIT_BOX, CAT_UNIT_COUNT } cat_unit;
+/* How a product's price is counted: per piece, per m2, per box, or per metre ("m": profiles
+ * sold in whole lengths and billed by the metres of the lengths bought). */
+typedef enum cat_unit {
+    CAT_UNIT_PIECE = 0,
+    CAT_UNIT_M2,
+    CAT_UNIT_BOX,
+    CAT_UNIT_M,
+    CAT_UNIT_COUNT
+} cat_unit;
 
 /* How a variant's reflection is blended (RENDERING.md section 6). */
 typedef enum cat_blend {
