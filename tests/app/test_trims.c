@@ -5,6 +5,8 @@
 #include "app/design/trims.h"
 #include "test_util.h"
 
+#include "catalog/catalog.h"
+
 #include <math.h>
 #include <stdlib.h>
 
@@ -120,10 +122,85 @@ static void test_project_totals(void)
     app_project_free(&p);
 }
 
+/* A profile priced per metre (catalog unit m) is billed by the metres of the whole lengths
+ * bought; one priced per length (unit piece) by its pieces. The catalog: the shipped trims.csv
+ * (KT-L10 7.56 EUR/m, brushed stainless +1.20; KT-R10 9.96 EUR/m) and one profile priced per
+ * length (KT-X10, 20.00 EUR a length). */
+static void test_priced_per_metre(void)
+{
+    char *dir = tu_make_temp_dir(), src[600], path[700], err[1024];
+    if (!dir) {
+        CHECK_MSG(0, "no temporary folder");
+        return;
+    }
+    snprintf(src, sizeof src, "%s/catalog", dir);
+    mkdir(src, 0777);
+    size_t len = 0;
+    char *trims = tu_read_file(TESSERA_SOURCE_DIR "/assets/catalog/trims.csv", &len);
+    snprintf(path, sizeof path, "%s/trims.csv", src);
+    CHECK(trims && tu_write_file(path, trims, len));
+    free(trims);
+    static const char per_length[] =
+        "manufacturer,article,category,name,width_mm,depth_mm,height_mm,list_price,unit\n"
+        "Kantec,KT-X10,accessories,Kantec profile priced per length,2500,10,10,20.00,piece\n";
+    snprintf(path, sizeof path, "%s/x.csv", src);
+    CHECK(tu_write_file(path, per_length, sizeof per_length - 1));
+    snprintf(path, sizeof path, "%s/catalog.sqlite", dir);
+    cat_db *db = NULL;
+    if (cat_catalog_open(path, src, &db, err, sizeof err) != CAT_DB_OK) {
+        CHECK_MSG(0, "%s", err);
+        tu_remove_tree(dir);
+        free(dir);
+        return;
+    }
+    app_trim_quantity q[3] = {
+        /* the reveals of reveals_room.json: 4.0 m from 2 lengths, and the niche's 2.0 m from 1 */
+        {.product = {"Kantec", "KT-L10", "CP"}, .edges = 4, .metres = 4.0, .pieces = 2},
+        {.product = {"Kantec", "KT-R10", "CP"}, .edges = 4, .metres = 2.0, .pieces = 1},
+        {.product = {"Kantec", "KT-X10", ""}, .edges = 2, .metres = 3.0, .pieces = 2},
+    };
+    app_bom b;
+    memset(&b, 0, sizeof b);
+    CHECK(app_bom_add_trims(db, q, 3, &b, err, sizeof err) == APP_OK);
+    CHECK(b.line_count == 3 && b.missing == 0);
+    if (b.line_count == 3) {
+        /* KT-L10: 2 lengths x 2.5 m = 5.00 m billed (not the 4.00 m set) x 7.56 = 37.80 EUR,
+         * the price of 2 lengths at 18.90; VAT 19 %: 7.182 -> 7.18 */
+        const app_bom_line *l = &b.lines[0];
+        CHECK(l->unit == CAT_UNIT_M && l->unit_price_cents == 756);
+        CHECK_NEAR(l->quantity, 5.0, 1e-12);
+        CHECK(l->net_cents == 3780 && l->vat_cents == 718);
+        CHECK_MSG(!strcmp(l->detail, "4.00 m needed: 2 x 2.5 m = 5.00 m billed"), "%s", l->detail);
+        /* KT-R10: 1 length = 2.50 m x 9.96 = 24.90 EUR */
+        CHECK(b.lines[1].unit == CAT_UNIT_M && b.lines[1].net_cents == 2490);
+        CHECK_NEAR(b.lines[1].quantity, 2.5, 1e-12);
+        /* KT-X10, priced per length: 2 pieces x 20.00 = 40.00 EUR */
+        CHECK(b.lines[2].unit == CAT_UNIT_PIECE && b.lines[2].quantity == 2);
+        CHECK(b.lines[2].net_cents == 4000);
+        CHECK_MSG(!strcmp(b.lines[2].detail, "3.00 m needed: 2 lengths of 2.5 m"), "%s",
+                  b.lines[2].detail);
+        /* 37.80 + 24.90 + 40.00 = 102.70 EUR */
+        CHECK(b.net_cents == 10270);
+    }
+    app_bom_free(&b);
+    /* brushed stainless: (7.56 + 1.20) EUR/m x 5.00 m = 43.80 EUR = 2 x (18.90 + 3.00) */
+    snprintf(q[0].product.variant, sizeof q[0].product.variant, "BS");
+    CHECK(app_bom_add_trims(db, q, 1, &b, err, sizeof err) == APP_OK);
+    CHECK(b.line_count == 1 && b.lines[0].unit_price_cents == 876 && b.lines[0].net_cents == 4380);
+    app_bom_free(&b);
+    /* the metres billed: pieces x 2.5 m */
+    CHECK_NEAR(app_trim_billed_metres(&q[0]), 5.0, 1e-12);
+    CHECK(app_trim_billed_metres(NULL) == 0);
+    cat_db_close(db);
+    tu_remove_tree(dir);
+    free(dir);
+}
+
 int main(void)
 {
     test_pieces();
     test_edges();
     test_project_totals();
+    test_priced_per_metre();
     return check_report("trims");
 }

@@ -194,6 +194,11 @@ app_result app_trim_quantities(const app_project *p, app_trim_quantity **out, in
     return APP_OK;
 }
 
+double app_trim_billed_metres(const app_trim_quantity *t)
+{
+    return t ? t->pieces * (APP_TRIM_PIECE_MM / 1000.0) : 0.0;
+}
+
 app_result app_bom_add_trims(cat_db *db, const app_trim_quantity *trims, int count, app_bom *b,
                              char *err, size_t err_size)
 {
@@ -209,10 +214,23 @@ app_result app_bom_add_trims(cat_db *db, const app_trim_quantity *trims, int cou
         app_bom_line *l = &b->lines[b->line_count++];
         memset(l, 0, sizeof *l);
         l->product = trims[k].product;
-        l->quantity = trims[k].pieces;
         app_bom_price_line(db, l);
-        l->unit = CAT_UNIT_PIECE; /* a profile is sold by the length, one piece each */
         l->is_tile = 0;
+        const app_trim_quantity *t = &trims[k];
+        double piece_m = APP_TRIM_PIECE_MM / 1000.0;
+        if (l->found && l->unit == CAT_UNIT_M) {
+            /* DOMAIN.md "Setting out tiles": a profile is sold in whole lengths, so a price per
+             * metre bills the metres of the lengths bought, not the metres set. */
+            l->quantity = app_trim_billed_metres(t);
+            snprintf(l->detail, sizeof l->detail, "%.2f m needed: %d x %.1f m = %.2f m billed",
+                     t->metres, t->pieces, piece_m, l->quantity);
+        } else {
+            /* priced per length (or not in the catalog): one piece a length */
+            l->unit = CAT_UNIT_PIECE;
+            l->quantity = t->pieces;
+            snprintf(l->detail, sizeof l->detail, "%.2f m needed: %d length%s of %.1f m", t->metres,
+                     t->pieces, t->pieces == 1 ? "" : "s", piece_m);
+        }
     }
     app_bom_total(b);
     return APP_OK;

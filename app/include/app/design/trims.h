@@ -49,9 +49,15 @@ typedef struct app_trim_quantity {
 app_result app_trim_quantities(const app_project *p, app_trim_quantity **out, int *count, char *err,
                                size_t err_size);
 
-/* Appends a priced line per trim to b (quantity: the pieces, as a profile is sold by the
- * length; the catalog's unit price is that of one length) and totals b again
- * (app_bom_total). A profile the catalog lacks is listed at 0 and counted in missing. */
+/* The metres of the whole lengths bought: pieces x APP_TRIM_PIECE_MM (a tiler buys whole
+ * lengths, so these, not t->metres, are what a price per metre bills). */
+double app_trim_billed_metres(const app_trim_quantity *t);
+
+/* Appends a priced line per trim to b and totals b again (app_bom_total). A profile priced per
+ * metre (catalog unit m) is billed app_trim_billed_metres at that price; one priced per piece
+ * (unit piece, the price of one length) is billed its pieces. The line's detail says the metres
+ * needed, the pieces and the metres billed. A profile the catalog lacks is listed at 0, by the
+ * piece, and counted in missing. */
 app_result app_bom_add_trims(cat_db *db, const app_trim_quantity *trims, int count, app_bom *b,
                              char *err, size_t err_size);
 
