@@ -29,6 +29,57 @@ tessera_add_test(NAME cli.flat.quantities_sum
                  EXPECT_OUTPUT "flat_quantities_sum: PASS: 3 rooms" LABELS cli TIMEOUT 300
                  ENV ${FLAT_ENV} PROPERTIES FIXTURES_REQUIRED flat3 RESOURCE_LOCK flat_catalog)
 
+# The flat's --json: each room as the room alone prints it, the total the sum of the rooms
+# quantified alone (tiles, trims, consumables, labour, money), and the quotation every room's
+# lines in turn; on the generated flat and on a flat with trims and a shower zone
+# (tests/data/tiles/flat_trims.json: reveals_room.json and consumables_wall.json as two rooms).
+tessera_add_test(NAME cli.flat.quantities_json
+                 COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/flat_quantities_json.py
+                         $<TARGET_FILE:tessera> ${OUT}/flat3.json ${OUT}/flat3-rooms
+                 EXPECT_OUTPUT "flat_quantities_json: PASS: 3 rooms" LABELS cli TIMEOUT 300
+                 ENV ${FLAT_ENV} PROPERTIES FIXTURES_REQUIRED flat3 RESOURCE_LOCK flat_catalog)
+tessera_add_test(NAME cli.flat.quantities_json_trims
+                 COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/flat_quantities_json.py
+                         $<TARGET_FILE:tessera> ${CMAKE_SOURCE_DIR}/tests/data/tiles/flat_trims.json ${OUT}/flat-trims-rooms
+                 EXPECT_OUTPUT "flat_quantities_json: PASS: 2 rooms" LABELS cli TIMEOUT 300
+                 ENV ${FLAT_ENV} PROPERTIES RESOURCE_LOCK flat_catalog)
+# The flat's quotation as a spreadsheet, read back against the JSON's "quotation"
+# (xlsx_check.py); the text and CSV forms carry each room's consumables and the flat's total.
+add_test(NAME cli.flat.quantities_xlsx
+         COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/xlsx_check.py ${OUT}/flat-quote.xlsx --
+                 $<TARGET_FILE:tessera> quantities ${CMAKE_SOURCE_DIR}/tests/data/tiles/flat_trims.json
+                 --company ${CMAKE_SOURCE_DIR}/assets/company/company.json)
+set_tests_properties(cli.flat.quantities_xlsx PROPERTIES LABELS cli TIMEOUT 300
+                     ENVIRONMENT "${FLAT_ENV};XDG_CONFIG_HOME=${OUT}/no-config"
+                     RESOURCE_LOCK flat_catalog)
+tessera_add_test(NAME cli.flat.quantities_text
+                 COMMAND tessera quantities ${CMAKE_SOURCE_DIR}/tests/data/tiles/flat_trims.json
+                 EXPECT_OUTPUT "== room: Bathroom ==.*Trim profiles.*KT-L10 [^\n]* 4 +4.00 m +2 +5.00 m.*adhesive [0-9.]+ kg.*== room: Shower ==.*waterproofing 4.41 m2.*== flat: Trim and shower flat \\(2 rooms\\) ==.*KT-L10 [^\n]* 4 +4.00 m +2 +5.00 m.*waterproofing 4.41 m2.*Quotation Q-2026-0042.*LAB-TILE-WALL"
+                 LABELS cli TIMEOUT 300 ENV ${FLAT_ENV} PROPERTIES RESOURCE_LOCK flat_catalog)
+tessera_add_test(NAME cli.flat.quantities_csv
+                 COMMAND tessera quantities ${CMAKE_SOURCE_DIR}/tests/data/tiles/flat_trims.json --csv
+                 EXPECT_OUTPUT "room,\"Bathroom\".*trims,Kantec,KT-L10,CP,[^\n]*,4,4.000,2.5,2,5.000,18.90,7.56,EUR.*consumables,adhesive,.*flat,\"Trim and shower flat \\(2 rooms\\)\".*consumables,waterproofing,4.4100,m2.*quote,number,Q-2026-0042.*bom,[^\n]*,labour,"
+                 LABELS cli TIMEOUT 300 ENV ${FLAT_ENV} PROPERTIES RESOURCE_LOCK flat_catalog)
+# tessera print on the flat: each room's part list and quotation bills its consumables and
+# labour (the Shower room its waterproofing) and the trims by the metre; --xlsx writes the
+# flat's one quotation, read back against `quantities FLAT --json`'s "quotation".
+tessera_add_test(NAME cli.flat.print_quotation
+                 COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/flat_print_quotation.sh
+                         $<TARGET_FILE:tessera> ${CMAKE_SOURCE_DIR}/tests/data/tiles/flat_trims.json
+                         ${OUT}/flat-print "Bathroom:FW-C2-25" "Bathroom:LAB-TILE-WALL"
+                         "Bathroom:4.00 m needed: 2 x 2.5 m = 5.00 m billed" "Shower:FW-C2-25"
+                         "Shower:FW-DS-M2" "Shower:LAB-TILE-WALL"
+                 EXPECT_OUTPUT "flat_print_quotation: PASS: 6 texts" LABELS cli TIMEOUT 300
+                 ENV ${FLAT_ENV} PROPERTIES RESOURCE_LOCK flat_catalog)
+add_test(NAME cli.flat.print_quotation_xlsx
+         COMMAND python3 ${CMAKE_CURRENT_SOURCE_DIR}/xlsx_check.py ${OUT}/flat-print-quote.xlsx --
+                 $<TARGET_FILE:tessera> print ${CMAKE_SOURCE_DIR}/tests/data/tiles/flat_trims.json
+                 -o ${OUT}/flat-print-quote.pdf --renders none --date 2026-12-04
+                 --company ${CMAKE_SOURCE_DIR}/assets/company/company.json)
+set_tests_properties(cli.flat.print_quotation_xlsx PROPERTIES LABELS cli TIMEOUT 300
+                     ENVIRONMENT "${FLAT_ENV};XDG_CONFIG_HOME=${OUT}/no-config"
+                     RESOURCE_LOCK flat_catalog)
+
 # A room's camera renders that room, and only it is built: the kitchen's view of the 3-room flat
 # is the same picture as the kitchen's own single-room file (flat_room.py writes it).
 tessera_add_test(NAME cli.flat.render_room

@@ -3,6 +3,7 @@
 JSON of the same run: reads the sheet with zipfile and the XML alone (no extra packages).
 
 usage: xlsx_check.py OUT.xlsx -- TESSERA quantities PROJECT [ARGS...]
+       (PROJECT may be a flat: then the sheet is checked against the JSON's "quotation")
        xlsx_check.py OUT.xlsx -- TESSERA print PROJECT -o OUT.pdf [ARGS...]
 (print: the JSON comes from `TESSERA quantities PROJECT --json` with the same --company and
 --date, so the print set's spreadsheet is checked against the quantities of the same project.)
@@ -57,7 +58,10 @@ def main():
         print(run.stderr, file=sys.stderr)
         sys.exit(1)
     doc = json.loads(run.stdout)
-    bom = doc["bom"]
+    # A flat's spreadsheet is its quotation: every room's positions in turn (the JSON's
+    # "quotation"), each description led by its room's name.
+    bom = doc["quotation"] if "rooms" in doc else doc["bom"]
+    rooms = [r["project"] for r in doc.get("rooms", [])]
     folder = os.path.dirname(os.path.abspath(out))
     leftovers = [f for f in os.listdir(folder)
                  if f.startswith(os.path.basename(out) + ".part")]
@@ -104,6 +108,8 @@ def main():
         r = str(row)
         check(text("A" + r) == str(l["position"]) or float(text("A" + r)) > 0, "position " + r)
         check(text("B" + r) == l["product"]["article"], "article in B" + r)
+        check(not rooms or any(l["name"].startswith(n + ": ") and n in text("C" + r)
+                               for n in rooms), "the room's name in C" + r)
         check(abs(float(text("D" + r)) - l["quantity"]) < 1e-9, "quantity in D" + r)
         check(abs(float(text("F" + r)) * 100 - l["unit_price_cents"]) < 1e-6, "price F" + r)
         net = cells["H" + r]

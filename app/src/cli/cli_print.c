@@ -7,6 +7,7 @@
 #include "app/project/flat.h"
 #include "app/scene/quality.h"
 #include "cli_commands.h"
+#include "cli_quantities.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -208,7 +209,11 @@ static int print_flat(const cli_options *o, const app_flat *f, const app_print_o
                                 render_h, tmp_dir, &images[i]);
         }
         opts[i] = *base;
-        opts[i].customer = o->customer;
+        /* as for a single room: --customer, else the file's customer; the company block */
+        opts[i].customer = o->customer
+                               ? o->customer
+                               : (f->rooms[i].customer.name[0] ? f->rooms[i].customer.name : NULL);
+        opts[i].company = o->company;
         opts[i].date = o->date;
         opts[i].catalog_source = catalog_src;
         opts[i].assets_dir = assets;
@@ -228,6 +233,9 @@ static int print_flat(const cli_options *o, const app_flat *f, const app_print_o
             rc = r == APP_ERR_SCHEMA ? CLI_USAGE : CLI_FAILED;
         }
     }
+    /* The flat's one quotation over every room, as `tessera quantities FLAT --xlsx` writes it. */
+    if (rc == CLI_OK && o->xlsx)
+        rc = cli_flat_quotation_xlsx(o, f, o->xlsx);
     if (rc == CLI_OK)
         fprintf(stderr,
                 "tessera print: %s: %d rooms, %d pages (%d elevations with %d whole and %d cut "

@@ -22,7 +22,7 @@
 #include <string.h>
 #include <unistd.h>
 
-static int open_catalog(const char *db_path, cat_db **db)
+int cli_quantities_open_catalog(const char *db_path, cat_db **db)
 {
     char path[4096], src[4096], err[4096];
     if (db_path)
@@ -227,7 +227,7 @@ void cli_print_tiles(const app_quantities *q, const app_bom *b, int csv)
            q->tiled_area_m2, q->region_area_m2, q->grout_area_m2, q->offcut_count);
 }
 
-static void print_offcuts(const app_quantities *q, const app_tile_layout *layouts, int csv)
+void cli_print_offcuts(const app_quantities *q, const app_tile_layout *layouts, int csv)
 {
     if (csv)
         puts("section,article,source_surface,source_row,source_col,target_surface,target_row,"
@@ -259,7 +259,7 @@ static const char *kind_name(app_bom_kind k)
     return k == APP_BOM_CONSUMABLE ? "consumable" : k == APP_BOM_LABOUR ? "labour" : "product";
 }
 
-static void print_consumables(const app_consumables *c, int csv)
+void cli_print_consumables(const app_consumables *c, int csv)
 {
     if (csv) {
         puts("section,what,amount,unit");
@@ -291,7 +291,7 @@ static void print_consumables(const app_consumables *c, int csv)
            c->fixtures == 1 ? "" : "s");
 }
 
-static void print_quote_head(const app_quote *q, int csv)
+void cli_print_quote_head(const app_quote *q, int csv)
 {
     const app_customer *cu = &q->customer;
     if (csv) {
@@ -529,18 +529,12 @@ int cli_cmd_quantities(const cli_options *o)
         return CLI_USAGE;
     }
     cat_db *db = NULL;
-    if ((rc = open_catalog(o->db, &db)) != CLI_OK) {
+    if ((rc = cli_quantities_open_catalog(o->db, &db)) != CLI_OK) {
         app_flat_free(&flat);
         return rc;
     }
-    if (flat.is_flat && (o->json_table || o->xlsx)) {
-        fprintf(stderr,
-                "tessera quantities: %s: --json and --xlsx take a single room, not a flat\n",
-                o->project);
-        rc = CLI_USAGE;
-    } else if (flat.is_flat && o->bench_repeats <= 0)
+    if (flat.is_flat && o->bench_repeats <= 0) {
         rc = cli_quantities_flat(o, &flat, db);
-    if (flat.is_flat && (rc != CLI_OK || o->bench_repeats <= 0)) {
         cat_db_close(db);
         app_flat_free(&flat);
         return rc;
@@ -552,31 +546,8 @@ int cli_cmd_quantities(const cli_options *o)
         app_project_free(&p);
         return rc;
     }
-    app_tile_layout *layouts = NULL;
-    int n = 0;
-    app_quantities q;
-    memset(&q, 0, sizeof q);
-    app_bom bom;
-    memset(&bom, 0, sizeof bom);
-    app_result res = app_room_tile_layouts(&p, db, &layouts, &n, err, sizeof err);
-    app_quantity_options qo = app_quantity_options_default();
-    qo.surplus_percent = o->surplus;
-    if (res == APP_OK)
-        res = app_quantities_compute(layouts, n, &qo, &q, err, sizeof err);
-    if (res == APP_OK)
-        res = app_bom_build(db, &p, &q, &bom, err, sizeof err);
-    app_trim_quantity *trims = NULL;
-    int trim_count = 0;
-    if (res == APP_OK)
-        res = app_trim_quantities(&p, &trims, &trim_count, err, sizeof err);
-    if (res == APP_OK)
-        res = app_bom_add_trims(db, trims, trim_count, &bom, err, sizeof err);
-    app_consumables cons;
-    memset(&cons, 0, sizeof cons);
-    if (res == APP_OK)
-        res = app_consumables_compute(&p, db, layouts, n, NULL, &cons, err, sizeof err);
-    if (res == APP_OK)
-        res = app_bom_add_consumables(db, &cons, NULL, &bom, err, sizeof err);
+    cli_room_quantities rq;
+    app_result res = cli_room_quantities_compute(&p, db, o->surplus, &rq, err, sizeof err);
     app_quote quote;
     memset(&quote, 0, sizeof quote);
     if (res == APP_OK &&
@@ -586,15 +557,13 @@ int cli_cmd_quantities(const cli_options *o)
         goto done;
     }
     if (res == APP_OK && o->xlsx &&
-        app_quote_write_xlsx(o->xlsx, &p, &quote, &bom, err, sizeof err) != APP_OK) {
+        app_quote_write_xlsx(o->xlsx, &p, &quote, &rq.bom, err, sizeof err) != APP_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         rc = CLI_FAILED;
         goto done;
     }
     if (res == APP_OK && o->json_table) {
-        rc = cli_quantities_json(stdout, &p, &q, &cons, &quote, &bom, o->offcuts ? layouts : NULL)
-                 ? CLI_OK
-                 : CLI_FAILED;
+        rc = cli_quantities_json(stdout, &p, &rq, &quote, o->offcuts) ? CLI_OK : CLI_FAILED;
         goto done;
     }
     if (res != APP_OK) {
@@ -605,19 +574,16 @@ int cli_cmd_quantities(const cli_options *o)
             fprintf(o->csv_table ? stderr : stdout,
                     "%s: no tilings yet (no surface of this project is tiled)\n", o->project);
         else
-            cli_print_tiles(&q, &bom, o->csv_table);
+            cli_print_tiles(&rq.q, &rq.bom, o->csv_table);
         if (o->offcuts && p.tiling_count > 0)
-            print_offcuts(&q, layouts, o->csv_table);
-        cli_print_trims(trims, trim_count, &bom, o->csv_table);
-        print_consumables(&cons, o->csv_table);
-        print_quote_head(&quote, o->csv_table);
-        cli_print_bom(&bom, o->csv_table);
+            cli_print_offcuts(&rq.q, rq.layouts, o->csv_table);
+        cli_print_trims(rq.trims, rq.trim_count, &rq.bom, o->csv_table);
+        cli_print_consumables(&rq.cons, o->csv_table);
+        cli_print_quote_head(&quote, o->csv_table);
+        cli_print_bom(&rq.bom, o->csv_table);
     }
 done:
-    free(trims);
-    app_bom_free(&bom);
-    app_quantities_free(&q);
-    app_tile_layouts_free(layouts, n);
+    cli_room_quantities_free(&rq);
     cat_db_close(db);
     app_project_free(&p);
     return rc;

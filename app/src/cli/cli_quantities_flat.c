@@ -1,83 +1,16 @@
-/* `tessera quantities FLAT`: the tile part list and the bill of materials of each room, then
- * the flat's total. A total line is the sum of the rooms' lines for that product (each room
- * ordered with its own surplus and whole boxes, as the rooms are tiled one after another), so
- * every figure of the total is the sum of the rooms' figures. */
+/* `tessera quantities FLAT`: each room's quantities as the room alone would print them (tiles,
+ * offcuts, trim profiles, consumables and labour, its priced bill), then the flat's total, every
+ * figure the sum of the rooms' (cli_flat_total.h), and the flat's one quotation: --json writes
+ * the rooms, the total and the quotation as one document, --xlsx the quotation as a
+ * spreadsheet with every room's positions in turn (docs/cli.md "quantities"). */
+#include "cli_flat_total.h"
 #include "cli_quantities.h"
-
-#include "app/design/room_surfaces.h"
+#include "cli_quantities_json.h"
+#include "cli_quantities_trims.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int same_product(const app_product_ref *a, const app_product_ref *b)
-{
-    return !strcmp(a->manufacturer, b->manufacturer) && !strcmp(a->article, b->article) &&
-           !strcmp(a->variant, b->variant);
-}
-
-/* Adds the room's tile lines to the total (a new product at the end). */
-static int add_tiles(app_quantities *t, const app_quantities *q)
-{
-    for (int i = 0; i < q->line_count; i++) {
-        const app_tile_quantity *l = &q->lines[i];
-        int k = 0;
-        while (k < t->line_count && !same_product(&t->lines[k].spec.product, &l->spec.product))
-            k++;
-        if (k == t->line_count) {
-            app_tile_quantity *grown =
-                realloc(t->lines, (size_t)(t->line_count + 1) * sizeof *grown);
-            if (!grown)
-                return 0;
-            t->lines = grown;
-            t->lines[k] = *l;
-            t->line_count++;
-            continue;
-        }
-        app_tile_quantity *s = &t->lines[k];
-        s->whole += l->whole;
-        s->cut += l->cut;
-        s->reused += l->reused;
-        s->pieces_needed += l->pieces_needed;
-        s->area_m2 += l->area_m2;
-        s->length_m += l->length_m;
-        s->pieces_with_surplus += l->pieces_with_surplus;
-        s->boxes += l->boxes;
-        s->pieces_to_order += l->pieces_to_order;
-        s->order_m2 += l->order_m2;
-    }
-    t->region_area_m2 += q->region_area_m2;
-    t->tiled_area_m2 += q->tiled_area_m2;
-    t->grout_area_m2 += q->grout_area_m2;
-    t->offcut_count += q->offcut_count;
-    return 1;
-}
-
-/* Adds bill lines [from, to) of b to the total's lines, merged by product. */
-static int add_bom_lines(app_bom *t, const app_bom *b, int from, int to)
-{
-    for (int i = from; i < to; i++) {
-        const app_bom_line *l = &b->lines[i];
-        int k = 0;
-        while (k < t->line_count && !same_product(&t->lines[k].product, &l->product))
-            k++;
-        if (k == t->line_count) {
-            app_bom_line *grown = realloc(t->lines, (size_t)(t->line_count + 1) * sizeof *grown);
-            if (!grown)
-                return 0;
-            t->lines = grown;
-            t->lines[k] = *l;
-            t->line_count++;
-            continue;
-        }
-        app_bom_line *s = &t->lines[k];
-        s->quantity += l->quantity;
-        s->net_cents += l->net_cents;
-        s->vat_cents += l->vat_cents;
-        s->gross_cents += l->gross_cents;
-    }
-    return 1;
-}
 
 static void print_heading(const char *what, const char *name, int csv)
 {
@@ -90,83 +23,147 @@ static void print_heading(const char *what, const char *name, int csv)
         printf("\n== %s: %s ==\n", what, name);
 }
 
-typedef struct room_result {
-    app_quantities q;
-    app_bom bom;
-} room_result;
-
-int cli_quantities_flat(const cli_options *o, const app_flat *f, cat_db *db)
+/* The flat's quote: the shared customer and quote number of the file (every room carries
+ * them), numbered by the flat's name when the file gives no number. */
+static app_result flat_quote(const cli_options *o, const app_flat *f, app_quote *quote, char *err,
+                             size_t err_size)
 {
-    room_result *rooms = calloc((size_t)f->room_count, sizeof *rooms);
-    if (!rooms) {
+    app_project named = f->rooms[0]; /* a shallow copy: read only */
+    if (f->name[0])
+        snprintf(named.name, sizeof named.name, "%s", f->name);
+    return app_quote_make(&named, o->company, o->date, quote, err, err_size);
+}
+
+static int print_flat(const cli_options *o, const app_flat *f, const cli_room_quantities *rooms,
+                      const cli_room_quantities *total, const app_quote *quote)
+{
+    int csv = o->csv_table;
+    for (int i = 0; i < f->room_count; i++) {
+        const cli_room_quantities *r = &rooms[i];
+        print_heading("room", f->rooms[i].name, csv);
+        cli_print_tiles(&r->q, &r->bom, csv);
+        if (o->offcuts && r->layout_count > 0)
+            cli_print_offcuts(&r->q, r->layouts, csv);
+        cli_print_trims(r->trims, r->trim_count, &r->bom, csv);
+        cli_print_consumables(&r->cons, csv);
+        cli_print_bom(&r->bom, csv);
+    }
+    char what[160];
+    snprintf(what, sizeof what, "%s (%d rooms)", f->name[0] ? f->name : "the flat", f->room_count);
+    print_heading("flat", what, csv);
+    cli_print_tiles(&total->q, &total->bom, csv);
+    cli_print_trims(total->trims, total->trim_count, &total->bom, csv);
+    cli_print_consumables(&total->cons, csv);
+    cli_print_quote_head(quote, csv);
+    cli_print_bom(&total->bom, csv);
+    return CLI_OK;
+}
+
+/* Everything the flat's outputs need. */
+typedef struct flat_result {
+    cli_room_quantities *rooms;
+    cli_room_quantities total;
+    app_quote quote;
+    app_bom quotation;
+} flat_result;
+
+static void flat_result_free(const app_flat *f, flat_result *r)
+{
+    app_bom_free(&r->quotation);
+    cli_room_quantities_free(&r->total);
+    for (int i = 0; r->rooms && i < f->room_count; i++)
+        cli_room_quantities_free(&r->rooms[i]);
+    free(r->rooms);
+    memset(r, 0, sizeof *r);
+}
+
+/* Quantifies every room with the order surplus in percent (keep_layouts: for the offcut list),
+ * then the total, the quote and the quotation; returns the exit code (the message is
+ * printed). */
+static int flat_compute(const cli_options *o, const app_flat *f, cat_db *db, double surplus,
+                        int keep_layouts, flat_result *out)
+{
+    memset(out, 0, sizeof *out);
+    out->rooms = calloc((size_t)f->room_count, sizeof *out->rooms);
+    if (!out->rooms) {
         fprintf(stderr, "tessera: out of memory for %d rooms\n", f->room_count);
         return CLI_FAILED;
     }
-    app_quantity_options qo = app_quantity_options_default();
-    qo.surplus_percent = o->surplus;
-    int rc = CLI_OK;
     char err[2048];
-    for (int i = 0; rc == CLI_OK && i < f->room_count; i++) {
+    for (int i = 0; i < f->room_count; i++) {
         const app_project *p = &f->rooms[i];
-        app_tile_layout *layouts = NULL;
-        int n = 0;
-        app_result r = app_room_tile_layouts(p, db, &layouts, &n, err, sizeof err);
-        if (r == APP_OK)
-            r = app_quantities_compute(layouts, n, &qo, &rooms[i].q, err, sizeof err);
-        if (r == APP_OK)
-            r = app_bom_build(db, p, &rooms[i].q, &rooms[i].bom, err, sizeof err);
-        app_tile_layouts_free(layouts, n);
+        app_result r = cli_room_quantities_compute(p, db, surplus, &out->rooms[i], err, sizeof err);
         if (r != APP_OK) {
             fprintf(stderr, "tessera: %s: room \"%s\": %s\n", o->project, p->name, err);
-            rc = r == APP_ERR_OUT_OF_MEMORY || r == APP_ERR_IO ? CLI_FAILED : CLI_USAGE;
-            break;
+            return r == APP_ERR_OUT_OF_MEMORY || r == APP_ERR_IO ? CLI_FAILED : CLI_USAGE;
         }
-        if (!o->csv_table)
-            fprintf(stderr, "tessera quantities: [%d/%d] %s\n", i + 1, f->room_count, p->name);
-        print_heading("room", p->name, o->csv_table);
-        cli_print_tiles(&rooms[i].q, &rooms[i].bom, o->csv_table);
-        cli_print_bom(&rooms[i].bom, o->csv_table);
+        if (!keep_layouts)
+            cli_room_quantities_free_layouts(&out->rooms[i]);
+        fprintf(stderr, "tessera quantities: [%d/%d] %s\n", i + 1, f->room_count, p->name);
     }
+    if (flat_quote(o, f, &out->quote, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return CLI_USAGE;
+    }
+    if (cli_flat_total(out->rooms, f->room_count, &out->total) != APP_OK ||
+        cli_flat_quotation(f, out->rooms, &out->quotation) != APP_OK) {
+        fprintf(stderr, "tessera: out of memory for the flat's total\n");
+        return CLI_FAILED;
+    }
+    if (out->quotation.out_of_range) {
+        fprintf(stderr,
+                "tessera: %s: the flat's total does not fit in an amount; check the catalog "
+                "prices\n",
+                o->project);
+        return CLI_USAGE;
+    }
+    return CLI_OK;
+}
+
+static int write_xlsx(const app_flat *f, const flat_result *r, const char *path)
+{
+    char err[2048];
+    app_project named = f->rooms[0]; /* the sheet's "Project" row: the flat's name */
+    if (f->name[0])
+        snprintf(named.name, sizeof named.name, "%s", f->name);
+    if (app_quote_write_xlsx(path, &named, &r->quote, &r->quotation, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera: %s\n", err);
+        return CLI_FAILED;
+    }
+    return CLI_OK;
+}
+
+int cli_quantities_flat(const cli_options *o, const app_flat *f, cat_db *db)
+{
+    flat_result r;
+    int rc = flat_compute(o, f, db, o->surplus, o->offcuts, &r);
+    if (rc == CLI_OK && o->xlsx)
+        rc = write_xlsx(f, &r, o->xlsx);
     if (rc == CLI_OK) {
-        app_quantities total_q;
-        app_bom total_b;
-        memset(&total_q, 0, sizeof total_q);
-        memset(&total_b, 0, sizeof total_b);
-        int ok = 1;
-        /* Tiles first, in the order of the total's tile lines, as app_bom_build orders them. */
-        for (int i = 0; ok && i < f->room_count; i++)
-            ok = add_tiles(&total_q, &rooms[i].q) &&
-                 add_bom_lines(&total_b, &rooms[i].bom, 0, rooms[i].q.line_count);
-        for (int i = 0; ok && i < f->room_count; i++)
-            ok = add_bom_lines(&total_b, &rooms[i].bom, rooms[i].q.line_count,
-                               rooms[i].bom.line_count);
-        for (int i = 0; i < f->room_count; i++) {
-            total_b.net_cents += rooms[i].bom.net_cents;
-            total_b.vat_cents += rooms[i].bom.vat_cents;
-            total_b.gross_cents += rooms[i].bom.gross_cents;
-            total_b.missing += rooms[i].bom.missing;
-            total_b.foreign += rooms[i].bom.foreign;
-            total_b.out_of_range += rooms[i].bom.out_of_range;
-        }
-        memcpy(total_b.currency, rooms[0].bom.currency, sizeof total_b.currency);
-        if (!ok) {
-            fprintf(stderr, "tessera: out of memory for the flat's total\n");
-            rc = CLI_FAILED;
-        } else {
-            char what[160];
-            snprintf(what, sizeof what, "%s (%d rooms)", f->name[0] ? f->name : "the flat",
-                     f->room_count);
-            print_heading("flat", what, o->csv_table);
-            cli_print_tiles(&total_q, &total_b, o->csv_table);
-            cli_print_bom(&total_b, o->csv_table);
-        }
-        free(total_q.lines);
-        free(total_b.lines);
+        if (o->json_table)
+            rc = cli_quantities_json_flat(stdout, f, r.rooms, &r.total, &r.quote, &r.quotation,
+                                          o->offcuts)
+                     ? CLI_OK
+                     : CLI_FAILED;
+        else
+            rc = print_flat(o, f, r.rooms, &r.total, &r.quote);
     }
-    for (int i = 0; i < f->room_count; i++) {
-        app_quantities_free(&rooms[i].q);
-        app_bom_free(&rooms[i].bom);
-    }
-    free(rooms);
+    flat_result_free(f, &r);
+    return rc;
+}
+
+int cli_flat_quotation_xlsx(const cli_options *o, const app_flat *f, const char *path)
+{
+    /* the print set's quantities: the default surplus, as app_print_pdf counts a room */
+    cat_db *db = NULL;
+    int rc = cli_quantities_open_catalog(o->db, &db);
+    flat_result r;
+    memset(&r, 0, sizeof r);
+    if (rc == CLI_OK)
+        rc = flat_compute(o, f, db, app_quantity_options_default().surplus_percent, 0, &r);
+    if (rc == CLI_OK)
+        rc = write_xlsx(f, &r, path);
+    flat_result_free(f, &r);
+    cat_db_close(db);
     return rc;
 }

@@ -159,18 +159,33 @@ static cJSON *bom_json(const app_bom *b)
     return o;
 }
 
-int cli_quantities_json(FILE *f, const app_project *p, const app_quantities *q,
-                        const app_consumables *c, const app_quote *quote, const app_bom *b,
-                        const app_tile_layout *layouts)
+static cJSON *trims_json(const cli_room_quantities *r)
 {
-    cJSON *root = cJSON_CreateObject();
-    if (!root)
-        return 0;
-    cJSON_AddStringToObject(root, "project", p->name);
-    cJSON_AddItemToObject(root, "tiles", tiles_json(q, layouts));
-    cJSON_AddItemToObject(root, "consumables", consumables_json(c));
-    cJSON_AddItemToObject(root, "quote", quote_json(quote));
-    cJSON_AddItemToObject(root, "bom", bom_json(b));
+    cJSON *a = cJSON_CreateArray();
+    for (int i = 0; i < r->trim_count; i++) {
+        const app_trim_quantity *t = &r->trims[i];
+        cJSON *j = cJSON_CreateObject();
+        cJSON_AddItemToObject(j, "product", ref_json(&t->product));
+        cJSON_AddNumberToObject(j, "edges", t->edges);
+        cJSON_AddNumberToObject(j, "metres", t->metres);
+        cJSON_AddNumberToObject(j, "piece_m", APP_TRIM_PIECE_MM / 1000.0);
+        cJSON_AddNumberToObject(j, "pieces", t->pieces);
+        cJSON_AddNumberToObject(j, "billed_m", app_trim_billed_metres(t));
+        cJSON_AddItemToArray(a, j);
+    }
+    return a;
+}
+
+/* The members of one room's (or the flat total's) document. */
+static void add_room(cJSON *o, const cli_room_quantities *r, int offcuts)
+{
+    cJSON_AddItemToObject(o, "tiles", tiles_json(&r->q, offcuts ? r->layouts : NULL));
+    cJSON_AddItemToObject(o, "trims", trims_json(r));
+    cJSON_AddItemToObject(o, "consumables", consumables_json(&r->cons));
+}
+
+static int write_doc(FILE *f, cJSON *root)
+{
     char *text = cJSON_Print(root);
     cJSON_Delete(root);
     if (!text)
@@ -178,4 +193,41 @@ int cli_quantities_json(FILE *f, const app_project *p, const app_quantities *q,
     int ok = fputs(text, f) >= 0 && fputc('\n', f) != EOF;
     free(text);
     return ok;
+}
+
+int cli_quantities_json(FILE *f, const app_project *p, const cli_room_quantities *r,
+                        const app_quote *quote, int offcuts)
+{
+    cJSON *root = cJSON_CreateObject();
+    if (!root)
+        return 0;
+    cJSON_AddStringToObject(root, "project", p->name);
+    add_room(root, r, offcuts);
+    cJSON_AddItemToObject(root, "quote", quote_json(quote));
+    cJSON_AddItemToObject(root, "bom", bom_json(&r->bom));
+    return write_doc(f, root);
+}
+
+int cli_quantities_json_flat(FILE *f, const app_flat *fl, const cli_room_quantities *rooms,
+                             const cli_room_quantities *total, const app_quote *quote,
+                             const app_bom *quotation, int offcuts)
+{
+    cJSON *root = cJSON_CreateObject();
+    if (!root)
+        return 0;
+    cJSON_AddStringToObject(root, "flat", fl->name);
+    cJSON *list = cJSON_AddArrayToObject(root, "rooms");
+    for (int i = 0; i < fl->room_count; i++) {
+        cJSON *room = cJSON_CreateObject();
+        cJSON_AddStringToObject(room, "project", fl->rooms[i].name);
+        add_room(room, &rooms[i], offcuts);
+        cJSON_AddItemToObject(room, "bom", bom_json(&rooms[i].bom));
+        cJSON_AddItemToArray(list, room);
+    }
+    cJSON *t = cJSON_AddObjectToObject(root, "total");
+    add_room(t, total, 0);
+    cJSON_AddItemToObject(t, "bom", bom_json(&total->bom));
+    cJSON_AddItemToObject(root, "quote", quote_json(quote));
+    cJSON_AddItemToObject(root, "quotation", bom_json(quotation));
+    return write_doc(f, root);
 }
