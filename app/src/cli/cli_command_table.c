@@ -178,8 +178,8 @@ const cli_command cli_commands[] = {
      .summary = "the tile part list (whole/cut tiles, offcuts, boxes), consumables, labour and the "
                 "quotation",
      .help = "  Prices and VAT from the catalog. --json or --csv print machine-readable output;\n"
-             "  --xlsx FILE writes the quotation as a spreadsheet with formulas (a flat: each room,\n"
-             "  the total and one quotation over the rooms); --company FILE\n"
+             "  --xlsx FILE writes the quotation as a spreadsheet with formulas (a flat: each\n"
+             "  room, the total and one quotation over the rooms); --company FILE\n"
              "  the company block (default $XDG_CONFIG_HOME/tessera/company.json), --date\n"
              "  YYYY-MM-DD the quote's date. --bench N times the layout; --bench-mosaic needs no\n"
              "  project.\n",
