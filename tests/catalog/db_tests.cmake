@@ -3,7 +3,7 @@
 # tests that run the tessera binary on catalogs in this build folder.
 set(CAT_DB_SOURCE "${CMAKE_SOURCE_DIR}/assets/catalog")
 
-foreach(name test_db_schema test_db_import test_db_hostile test_db_search test_db_shipped test_db_faults
+foreach(name test_db_schema test_db_import test_db_mounting test_db_hostile test_db_search test_db_shipped test_db_faults
              test_db_roundtrip test_db_search_words)
   add_executable(${name} ${CMAKE_CURRENT_LIST_DIR}/${name}.c)
   target_link_libraries(${name} PRIVATE tessera_catalog)
@@ -13,6 +13,7 @@ foreach(name test_db_schema test_db_import test_db_hostile test_db_search test_d
   add_test(NAME catalog.${test_name} COMMAND ${name})
   set_tests_properties(catalog.${test_name} PROPERTIES LABELS unit)
 endforeach()
+set_tests_properties(catalog.db_mounting PROPERTIES LABELS "catalog;unit" TIMEOUT 60)
 
 # Colour words against finishes; German compound words (one executable, one test each).
 add_executable(test_db_search_finishes ${CMAKE_CURRENT_LIST_DIR}/test_db_search_finishes.c)
