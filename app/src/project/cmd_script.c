@@ -542,7 +542,7 @@ static int add_product(sctx *c, const app_product_ref *ref, const app_product_in
 static int add_companions(sctx *c, const app_product_ref *of, const app_product_info *info,
                           const app_pose *at)
 {
-    char maker[64], article[64];
+    char maker[CAT_MANUFACTURER_BYTES + 1], article[CAT_ARTICLE_BYTES + 1];
     int r;
     for (int k = 0; (r = cat_companion_get(info->companions, k, maker, sizeof maker, article,
                                            sizeof article)) != 0;
