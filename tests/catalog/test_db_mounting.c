@@ -4,7 +4,7 @@
  * product naming itself and a companion that is in neither the file nor the catalog are each
  * refused with the file, the line and the column, and nothing is imported; a companion may come
  * later in the file or be in the catalog already; the shipped vanity units name their basin,
- * mixer and mirror, and every shipped companion resolves. */
+ * mixer and mirror; a version-5 catalog with products is migrated. */
 #include "test_db_util.h"
 
 #define HEADER                                                                                     \
@@ -153,9 +153,46 @@ static void test_shipped(void)
     cat_db_close(db);
 }
 
+/* A version-5 catalog with products (the mounting columns dropped by hand) is migrated: the
+ * columns come back empty, its products keep their category's mounting, and an import can
+ * give them their own. */
+static void test_migration_from_v5(void)
+{
+    cat_db *db = open_catalog("v5.sqlite", 0);
+    cat_import_report rep;
+    char err[2048] = "";
+    CHECK(import_text(db, "v5.csv", HEADER ROW("V5-1", "basins", "", "", ""), &rep, err,
+                      sizeof err) == CAT_DB_OK);
+    cat_import_report_free(&rep);
+    cat_db_close(db);
+    const char *path = tmp_path("v5.sqlite");
+    CHECK(sql_run(path, "ALTER TABLE products DROP COLUMN mounting_height_mm;"
+                        "ALTER TABLE products DROP COLUMN mounting_to;"
+                        "ALTER TABLE products DROP COLUMN companions;"
+                        "PRAGMA user_version = 5;"));
+    CHECK(sql_int(path, "PRAGMA user_version") == 5);
+    db = NULL;
+    CHECK_MSG(cat_catalog_open(path, NULL, &db, err, sizeof err) == CAT_DB_OK, "%s", err);
+    CHECK(sql_int(path, "PRAGMA user_version") == CAT_DB_SCHEMA_VERSION);
+    CHECK(sql_int(path, "SELECT count(*) FROM products WHERE mounting_height_mm IS NULL AND "
+                        "mounting_to = '' AND companions = ''") == 1);
+    cat_product p;
+    CHECK(db && cat_product_find(db, "Testbad", "V5-1", &p, err, sizeof err) == CAT_DB_OK);
+    CHECK(p.mounting_to == CAT_MOUNT_NONE && p.price_cents == 10000);
+    cat_product_free(&p);
+    CHECK(db && import_text(db, "v5b.csv", HEADER ROW("V5-1", "basins", "880", "rim", ""), &rep,
+                            err, sizeof err) == CAT_DB_OK);
+    cat_import_report_free(&rep);
+    CHECK(db && cat_product_find(db, "Testbad", "V5-1", &p, err, sizeof err) == CAT_DB_OK);
+    CHECK(p.mounting_to == CAT_MOUNT_RIM && p.mounting_height_mm == 880);
+    cat_product_free(&p);
+    cat_db_close(db);
+}
+
 int main(void)
 {
     tmp_make();
+    test_migration_from_v5();
     test_good_values();
     test_nonsense_refused();
     test_shipped();
