@@ -90,8 +90,9 @@ int planner_place_selected(planner *p, double x_mm, double y_mm)
      * when one is near the drop point (a basin on its vanity), against the nearest wall
      * (docs/editing.md "Mounting heights"). */
     /* A product whose catalog row names companions (a vanity's basin, tap and mirror) comes
-     * with them, as one group and one undo step (docs/editing.md "Companions"). */
-    const char *with = prod->companions[0] ? " with-companions" : "";
+     * with them, as one group and one undo step (docs/editing.md "Companions"), unless the
+     * catalog panel's "[x] with ..." is turned off. */
+    const char *with = prod->companions[0] && !b->without_companions ? " with-companions" : "";
     int first_new = p->project.object_count;
     char line[512];
     snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f snap wall%s",
