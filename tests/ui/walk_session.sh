@@ -4,7 +4,8 @@
 # vanity) and W is held 3 s, straight at the vanity; then from "bath" the same towards the bath.
 # No frame's eye may come within the walker's body radius (200 mm, less 1 mm) of the vanity's or
 # the bath's footprint (the window logs both with `locate box`), each walk must have moved and
-# reached its fixture (an eye within 400 mm of it), and the shots show the room.
+# reached its fixture (an eye within 400 mm of it), and the shots (from where each walk starts,
+# facing the washstand and the bath, and where it ends) show the room.
 #   usage: walk_session.sh TESSERA OUTDIR SCREENSHOT_CHECK PROJECT
 # Exit 77 (skipped) without xdotool (.ci/setup installs it).
 set -e
@@ -37,6 +38,9 @@ locate box bath
 camera basin
 wait 5
 locate eye
+wait-file $out/entered-vanity
+wait 3
+screenshot $out/vanity-start.png
 wait-file $out/walked-vanity
 wait 3
 locate eye
@@ -45,6 +49,9 @@ mode orbit
 camera bath
 wait 5
 locate eye
+wait-file $out/entered-bath
+wait 3
+screenshot $out/bath-start.png
 wait-file $out/walked-bath
 wait 3
 locate eye
@@ -56,23 +63,26 @@ SCRIPT
     --frame-log "$out/frames.csv" 2>"$log" &
 pid=$!
 
-# walk NAME N: Tab into walk mode (the Nth time), W held 3 s; the script goes back to the orbit.
-# The pointer over the 3D view (at 960 x 540 it spans x 250..680, y 53..518) makes it active.
+# walk NAME N: Tab into walk mode (the Nth time; the script takes a shot from there), then W
+# held 3 s; the script goes back to the orbit. The pointer over the 3D view (at 960 x 540 it
+# spans x 250..680, y 53..518) makes it active.
 walk() {
+    wait_log "waiting for .*/entered-$1"
     xdotool mousemove --window "$win" 465 285
     sleep 0.5
     xdotool key --window "$win" Tab
     wait_log '^tessera: status: Walk mode' "$2"
+    touch "$out/entered-$1"
+    wait_log "waiting for .*/walked-$1"
     xdotool keydown --window "$win" w
     sleep 3
     xdotool keyup --window "$win" w
     touch "$out/walked-$1"
 }
-wait_log "waiting for .*/walked-vanity"
+wait_log "waiting for .*/entered-vanity"
 win=$(xdotool search --name '^Tessera' | head -1)
 test -n "$win" || { cat "$log"; echo "FAIL: no window named Tessera"; exit 1; }
 walk vanity 1
-wait_log "waiting for .*/walked-bath"
 walk bath 2
 
 set +e
@@ -81,10 +91,10 @@ rc=$?
 set -e
 cat "$log"
 test "$rc" -eq 0 || { echo "FAIL: the window exited $rc"; exit 1; }
-for shot in vanity bath; do
+for shot in vanity-start vanity bath-start bath; do
     test -s "$out/$shot.png" || { echo "FAIL: no screenshot $shot"; exit 1; }
 done
-"$check" "$out/vanity.png" "$out/bath.png"
+"$check" "$out/vanity-start.png" "$out/vanity.png" "$out/bath-start.png" "$out/bath.png"
 python3 - "$log" "$out/frames.csv" <<'PY'
 import csv, math, re, sys
 log = open(sys.argv[1]).read()
