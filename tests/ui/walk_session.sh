@@ -1,5 +1,5 @@
 #!/bin/sh
-# Walk mode with real keys under Xvfb (xdotool through XTEST, as a hand would): from the
+# Walk mode with real key events under Xvfb (xdotool sends them to the window): from the
 # stored viewpoint "basin" Tab enters walk mode (at eye height, where the view was, facing the
 # vanity) and W is held 3 s, straight at the vanity; then from "bath" the same towards the bath.
 # No frame's eye may come within the walker's body radius (200 mm, less 1 mm) of the vanity's or
