@@ -8,8 +8,9 @@
 static const char insert_product_sql[] =
     "INSERT INTO products (manufacturer_id, series_id, article, gtin, category, name, "
     "short_text, long_text, width_mm, depth_mm, height_mm, price_cents, vat_percent, currency, "
-    "unit, discount_group, model, origin) "
-    "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18)";
+    "unit, discount_group, model, origin, mounting_height_mm, mounting_to, companions) "
+    "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, "
+    "?21, coalesce(?22, ''), coalesce(?23, ''))";
 
 /* Same parameter numbers as the insert; a NULL parameter keeps the stored value (series:
  * ?19 says whether ?2 applies, since NULL is a valid series). */
@@ -22,7 +23,9 @@ static const char update_product_sql[] =
     "height_mm = coalesce(?11, height_mm), price_cents = coalesce(?12, price_cents), "
     "vat_percent = coalesce(?13, vat_percent), currency = coalesce(?14, currency), "
     "unit = coalesce(?15, unit), discount_group = coalesce(?16, discount_group), "
-    "model = coalesce(?17, model), origin = ?18 "
+    "model = coalesce(?17, model), origin = ?18, "
+    "mounting_height_mm = CASE WHEN ?22 IS NULL THEN mounting_height_mm ELSE ?21 END, "
+    "mounting_to = coalesce(?22, mounting_to), companions = coalesce(?23, companions) "
     "WHERE id = ?20";
 
 static const char insert_variant_sql[] =
@@ -199,6 +202,14 @@ static void bind_product(catdb_apply *a, sqlite3_stmt *st, const catdb_row *row,
         sqlite3_bind_text(st, 16, p->discount_group, -1, SQLITE_STATIC);
     if (SET(COL_MODEL))
         sqlite3_bind_text(st, 17, p->model, -1, SQLITE_STATIC);
+    /* A height and its reference are given together (db_row.c); an update without them keeps
+     * the stored pair. */
+    if (row->given[COL_MOUNTING_HEIGHT] && row->given[COL_MOUNTING_TO]) {
+        sqlite3_bind_double(st, 21, p->mounting_height_mm);
+        sqlite3_bind_text(st, 22, cat_mount_to_name(p->mounting_to), -1, SQLITE_STATIC);
+    }
+    if (SET(COL_COMPANIONS))
+        sqlite3_bind_text(st, 23, p->companions, -1, SQLITE_STATIC);
 #undef SET
     sqlite3_bind_text(st, 3, p->article, -1, SQLITE_STATIC);
     sqlite3_bind_text(st, 18, a->origin, -1, SQLITE_STATIC);

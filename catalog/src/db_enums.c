@@ -12,6 +12,7 @@ static const char *const unit_names[CAT_UNIT_COUNT] = {"piece", "m2", "box", "m"
 static const char *const blend_names[CAT_BLEND_COUNT] = {"mix", "add", "fresnel"};
 static const char *const surface_names[CAT_SURFACE_COUNT] = {"glossy", "matt", "structured"};
 static const char *const tile_type_names[CAT_TILE_TYPE_COUNT] = {"UNI", "BOR", "DEK", "EIN"};
+static const char *const mount_to_names[CAT_MOUNT_COUNT] = {"", "bottom", "top", "rim", "seat"};
 
 static const char *name_of(const char *const *names, int count, int v)
 {
@@ -52,6 +53,11 @@ const char *cat_surface_name(cat_tile_surface s)
 const char *cat_tile_type_name(cat_tile_type t)
 {
     return name_of(tile_type_names, CAT_TILE_TYPE_COUNT, (int)t);
+}
+
+const char *cat_mount_to_name(cat_mount_to m)
+{
+    return name_of(mount_to_names, CAT_MOUNT_COUNT, (int)m);
 }
 
 int cat_category_parse(const char *text, cat_category *out)
@@ -96,6 +102,15 @@ int cat_tile_type_parse(const char *text, cat_tile_type *out)
     if (i < 0)
         return 0;
     *out = (cat_tile_type)i;
+    return 1;
+}
+
+int cat_mount_to_parse(const char *text, cat_mount_to *out)
+{
+    int i = index_of(mount_to_names, 1, CAT_MOUNT_COUNT, text);
+    if (i < 0)
+        return 0;
+    *out = (cat_mount_to)i;
     return 1;
 }
 

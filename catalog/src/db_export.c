@@ -10,8 +10,9 @@
 static const char export_sql[] =
     "SELECT m.name, p.article, p.gtin, p.category, coalesce(s.name, ''), p.name, p.short_text, "
     "p.long_text, p.width_mm, p.depth_mm, p.height_mm, p.price_cents, p.currency, "
-    "p.vat_percent, p.unit, p.discount_group, p.model, "
-    "v.code, v.name, v.surcharge_cents, v.ambient_r, v.ambient_g, v.ambient_b, v.diffuse_r, "
+    "p.vat_percent, p.unit, p.discount_group, p.model, p.mounting_height_mm, p.mounting_to, "
+    "p.companions, v.code, v.name, v.surcharge_cents, v.ambient_r, v.ambient_g, v.ambient_b, "
+    "v.diffuse_r, "
     "v.diffuse_g, v.diffuse_b, v.specular_r, v.specular_g, v.specular_b, v.emissive_r, "
     "v.emissive_g, v.emissive_b, v.shininess, v.reflectivity, v.glossiness, v.blend, "
     "v.transparency, v.ior, "
@@ -24,7 +25,7 @@ static const char export_sql[] =
     "ORDER BY m.name, p.article, v.code";
 
 /* The select's columns follow the import format's, except that each colour takes three. */
-#define Q_AMBIENT 20
+#define Q_AMBIENT 23
 
 static int query_column(int c)
 {
@@ -93,6 +94,7 @@ static void put_row(FILE *f, sqlite3_stmt *st)
         case COL_WIDTH:
         case COL_DEPTH:
         case COL_HEIGHT:
+        case COL_MOUNTING_HEIGHT:
         case COL_VAT:
         case COL_SHININESS:
         case COL_REFLECTIVITY:

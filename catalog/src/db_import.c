@@ -199,6 +199,73 @@ static void check_repeats(importer *im, catdb_keymap *products, catdb_keymap *va
     }
 }
 
+/* A row that names companions, kept until the whole file is read: a companion may come later
+ * in the same file. */
+typedef struct companion_row {
+    long line;
+    char manufacturer[CAT_MANUFACTURER_BYTES + 1];
+    char article[CAT_ARTICLE_BYTES + 1];
+    char companions[CAT_COMPANIONS_BYTES + 1];
+} companion_row;
+
+typedef struct companion_rows {
+    companion_row *rows;
+    size_t count, cap;
+} companion_rows;
+
+static int keep_companions(companion_rows *c, long line, const cat_product *p)
+{
+    if (c->count == c->cap) {
+        size_t cap = c->cap ? c->cap * 2 : 16;
+        companion_row *r = realloc(c->rows, cap * sizeof *r);
+        if (!r)
+            return 0;
+        c->rows = r;
+        c->cap = cap;
+    }
+    companion_row *r = &c->rows[c->count++];
+    r->line = line;
+    snprintf(r->manufacturer, sizeof r->manufacturer, "%s", p->manufacturer);
+    snprintf(r->article, sizeof r->article, "%s", p->article);
+    snprintf(r->companions, sizeof r->companions, "%s", p->companions);
+    return 1;
+}
+
+/* Every companion is a product of this file or of the catalog. */
+static cat_db_result check_companions(importer *im, catdb_apply *apply, catdb_keymap *products,
+                                      const companion_rows *c, char *msg, size_t msg_size)
+{
+    for (size_t i = 0; i < c->count; i++) {
+        const companion_row *r = &c->rows[i];
+        char maker[CAT_MANUFACTURER_BYTES + 1], article[CAT_ARTICLE_BYTES + 1];
+        for (int k = 0;
+             cat_companion_get(r->companions, k, maker, sizeof maker, article, sizeof article) == 1;
+             k++) {
+            cat_product key_of = {0};
+            snprintf(key_of.manufacturer, sizeof key_of.manufacturer, "%s",
+                     maker[0] ? maker : r->manufacturer);
+            snprintf(key_of.article, sizeof key_of.article, "%s", article);
+            char key[CAT_MANUFACTURER_BYTES + CAT_ARTICLE_BYTES + 8];
+            product_key(&key_of, key, sizeof key);
+            if (catdb_keymap_get(products, key, 0, 0, NULL))
+                continue;
+            catdb_existing ex;
+            cat_db_result res =
+                catdb_apply_lookup(apply, key_of.manufacturer, article, &ex, msg, msg_size);
+            if (res != CAT_DB_OK)
+                return res;
+            if (ex.id)
+                continue;
+            char m[256];
+            snprintf(m, sizeof m, "companion %d, %s %s, is neither in this file nor in the catalog",
+                     k + 1, key_of.manufacturer, article);
+            im->line = r->line;
+            add_problem(im, COL_COMPANIONS, m);
+        }
+    }
+    return CAT_DB_OK;
+}
+
 /* A big import (against the catalog's size) leaves the full-text index alone and rebuilds it
  * once at the end: FTS5 takes a row from a trigger several times slower than in a rebuild.
  * Nothing to do when the caller has deferred it already (the shipped data's sync). */
@@ -271,6 +338,7 @@ cat_db_result catdb_import_buffer(sqlite3 *sql, const char *db_path, const char 
     catdb_apply apply;
     memset(&apply, 0, sizeof apply);
     catdb_keymap products = {0}, variants = {0};
+    companion_rows companions = {0};
     catdb_row *row = NULL;
     if (file_code == CAT_DB_OK) {
         fatal = catdb_exec(sql, db_path, "cannot start the import",
@@ -338,6 +406,12 @@ cat_db_result catdb_import_buffer(sqlite3 *sql, const char *db_path, const char 
             break;
         }
         catdb_row_check_new(row, has, &ex, add_problem, &im);
+        if (first && row->product.companions[0] &&
+            !keep_companions(&companions, im.line, &row->product)) {
+            fatal =
+                catdb_fail(fatal_msg, sizeof fatal_msg, CAT_DB_ERR_OUT_OF_MEMORY, "out of memory");
+            break;
+        }
         if (rep->problem_count > before || rep->problem_count > 0)
             continue; /* nothing more is written once anything is wrong: it is rolled back */
         if (!strcmp(origin, CATDB_ORIGIN_SHIPPED) && ex.from_import)
@@ -357,6 +431,12 @@ cat_db_result catdb_import_buffer(sqlite3 *sql, const char *db_path, const char 
             rep->variants_written += row->has_variant;
         }
     }
+    if (fatal == CAT_DB_OK && file_code == CAT_DB_OK && companions.count) {
+        char msg[256];
+        if (check_companions(&im, &apply, &products, &companions, msg, sizeof msg) != CAT_DB_OK)
+            fatal = catdb_fail(fatal_msg, sizeof fatal_msg, CAT_DB_ERR_DATABASE, "%s", msg);
+    }
+    free(companions.rows);
     if (desc && desc->progress)
         desc->progress(desc->user, rep->rows, total > rep->rows ? total : rep->rows);
     free(row);

@@ -261,6 +261,9 @@ typedef enum catdb_col {
     COL_UNIT,
     COL_DISCOUNT_GROUP,
     COL_MODEL,
+    COL_MOUNTING_HEIGHT,
+    COL_MOUNTING_TO,
+    COL_COMPANIONS,
     /* variant */
     COL_VARIANT_CODE,
     COL_VARIANT_NAME,

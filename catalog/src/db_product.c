@@ -23,7 +23,8 @@ void cat_product_free(cat_product *p)
 static const char product_sql[] =
     "SELECT p.id, m.name, p.article, p.gtin, p.category, coalesce(s.name, ''), p.name, "
     "p.short_text, p.long_text, p.width_mm, p.depth_mm, p.height_mm, p.price_cents, "
-    "p.vat_percent, p.currency, p.unit, p.discount_group, p.model, p.origin "
+    "p.vat_percent, p.currency, p.unit, p.discount_group, p.model, p.origin, "
+    "p.mounting_height_mm, p.mounting_to, p.companions "
     "FROM products p JOIN manufacturers m ON m.id = p.manufacturer_id "
     "LEFT JOIN series s ON s.id = p.series_id WHERE p.id = ?1";
 
@@ -63,6 +64,10 @@ static void read_product(sqlite3_stmt *st, cat_product *p)
     TEXT(st, 17, p->model);
     const char *origin = (const char *)sqlite3_column_text(st, 18);
     p->shipped = origin && !strcmp(origin, CATDB_ORIGIN_SHIPPED);
+    const char *to = (const char *)sqlite3_column_text(st, 20);
+    if (sqlite3_column_type(st, 19) != SQLITE_NULL && to && cat_mount_to_parse(to, &p->mounting_to))
+        p->mounting_height_mm = sqlite3_column_double(st, 19);
+    TEXT(st, 21, p->companions);
 }
 
 static void read_variant(sqlite3_stmt *st, cat_variant *v)

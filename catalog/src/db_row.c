@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+#include <strings.h>
 
 /* Longest text a cell of each column may hold. */
 static size_t max_bytes(int c)
@@ -35,6 +36,8 @@ static size_t max_bytes(int c)
         return CAT_VARIANT_NAME_BYTES;
     case COL_CALIBRE:
         return CAT_CALIBRE_BYTES;
+    case COL_COMPANIONS:
+        return CAT_COMPANIONS_BYTES;
     case COL_AMBIENT:
     case COL_DIFFUSE:
     case COL_SPECULAR:
@@ -185,6 +188,70 @@ static void product_columns(checker *k)
     }
 }
 
+/* Where the product is mounted: a height and what it is measured to come together; the
+ * height lies between the floor and CAT_MOUNTING_MAX_MM. */
+static void mounting_columns(checker *k)
+{
+    catdb_row *row = k->row;
+    cat_product *p = &row->product;
+    const char *h = cell(k, COL_MOUNTING_HEIGHT);
+    char inner[160];
+    if (h && catdb_parse_real(h, 0, CAT_MOUNTING_MAX_MM, 0, &p->mounting_height_mm, inner,
+                              sizeof inner)) {
+        snprintf(k->msg, sizeof k->msg,
+                 "%.150s (a mounting height is measured from the floor, at most %.0f mm, above "
+                 "any room's ceiling)",
+                 inner, CAT_MOUNTING_MAX_MM);
+        problem(k, COL_MOUNTING_HEIGHT, k->msg);
+        row->given[COL_MOUNTING_HEIGHT] = 0;
+    }
+    const char *to = cell(k, COL_MOUNTING_TO);
+    if (to && !cat_mount_to_parse(to, &p->mounting_to))
+        enum_problem(k, COL_MOUNTING_TO, "mounting reference", "bottom, top, rim, seat");
+    if (row->given[COL_MOUNTING_HEIGHT] && !to)
+        problem(k, COL_MOUNTING_TO,
+                "is empty, but the row has a mounting height: say what it is measured to "
+                "(bottom, top, rim, seat)");
+    if (row->given[COL_MOUNTING_TO] &&
+        !(k->cells[COL_MOUNTING_HEIGHT] && k->cells[COL_MOUNTING_HEIGHT][0]))
+        problem(k, COL_MOUNTING_HEIGHT, "is empty, but the row has a mounting_to");
+}
+
+/* Companions: "ARTICLE" or "MANUFACTURER:ARTICLE" separated by ";", at most
+ * CAT_MAX_COMPANIONS, none the product itself. Whether each is in the catalog is checked once
+ * the whole file is read (db_import.c). */
+static void companion_columns(checker *k)
+{
+    cat_product *p = &k->row->product;
+    const char *t = cell(k, COL_COMPANIONS);
+    if (!t)
+        return;
+    char maker[CAT_MANUFACTURER_BYTES + 1], article[CAT_ARTICLE_BYTES + 1];
+    int n = 0, r;
+    while ((r = cat_companion_get(t, n, maker, sizeof maker, article, sizeof article)) != 0) {
+        if (r < 0) {
+            snprintf(k->msg, sizeof k->msg,
+                     "entry %d is empty or too long (expected ARTICLE or MANUFACTURER:ARTICLE "
+                     "separated by \";\")",
+                     n + 1);
+            problem(k, COL_COMPANIONS, k->msg);
+            return;
+        }
+        if (!strcasecmp(article, p->article) &&
+            (!maker[0] || !strcasecmp(maker, p->manufacturer))) {
+            problem(k, COL_COMPANIONS, "names the product itself");
+            return;
+        }
+        n++;
+    }
+    if (n > CAT_MAX_COMPANIONS) {
+        snprintf(k->msg, sizeof k->msg, "names %d products, at most %d", n, CAT_MAX_COMPANIONS);
+        problem(k, COL_COMPANIONS, k->msg);
+        return;
+    }
+    copy(p->companions, sizeof p->companions, t);
+}
+
 /* The material of a variant whose file gives no value: a plain light grey (ambient follows
  * diffuse unless given). */
 static const double default_material[CATDB_MATERIAL_VALUES] = {
@@ -324,6 +391,8 @@ int catdb_row_parse(const char *const cells[COL_COUNT], const size_t lengths[COL
         row->given[c] = lengths[c] > 0 && !bad_text[c];
     }
     product_columns(&k);
+    mounting_columns(&k);
+    companion_columns(&k);
     variant_columns(&k);
     tile_columns(&k);
     cat_product *p = &row->product;

@@ -272,6 +272,16 @@ static const char schema_v5[] =
     "END;\n"
     "INSERT INTO product_fts (product_fts) VALUES ('rebuild');\n";
 
+/* Version 7: where a product is mounted and what goes with it (docs/catalog.md "Mounting
+ * heights"): its mounting height above the floor (NULL: not given, the placement uses the
+ * category's), what that height is measured to, and its companions' article numbers. */
+static const char schema_v7[] =
+    "ALTER TABLE products ADD COLUMN mounting_height_mm REAL\n"
+    "    CHECK (mounting_height_mm IS NULL OR mounting_height_mm BETWEEN 0 AND 4000);\n"
+    "ALTER TABLE products ADD COLUMN mounting_to TEXT NOT NULL DEFAULT ''\n"
+    "    CHECK (mounting_to IN ('', 'bottom', 'top', 'rim', 'seat'));\n"
+    "ALTER TABLE products ADD COLUMN companions TEXT NOT NULL DEFAULT '';\n";
+
 /* clang-format on */
 
 typedef cat_db_result (*migration_fn)(sqlite3 *sql, const char *path, char *err, size_t err_size);
@@ -356,8 +366,15 @@ static cat_db_result migrate_5_to_6(sqlite3 *sql, const char *path, char *err, s
     return r;
 }
 
+static cat_db_result migrate_6_to_7(sqlite3 *sql, const char *path, char *err, size_t err_size)
+{
+    return catdb_exec(sql, path, "cannot migrate the schema from version 6 to 7", schema_v7, err,
+                      err_size);
+}
+
 static const migration_fn migrations[CAT_DB_SCHEMA_VERSION] = {
-    migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4, migrate_4_to_5, migrate_5_to_6};
+    migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4, migrate_4_to_5, migrate_5_to_6,
+    migrate_6_to_7};
 
 static cat_db_result pragma_int(sqlite3 *sql, const char *path, const char *pragma, int *out,
                                 char *err, size_t err_size)

@@ -24,7 +24,8 @@ static const char header[] =
     "height_mm,list_price,currency,vat_percent,unit,discount_group,model,variant_code,"
     "variant_name,variant_surcharge,ambient,diffuse,specular,emissive,shininess,reflectivity,"
     "glossiness,blend,transparency,ior,tile_type,nominal_w_mm,nominal_h_mm,work_w_mm,work_h_mm,"
-    "grout_mm,thickness_mm,calibre,surface,m2_per_box,pieces_per_box,texture\n";
+    "grout_mm,thickness_mm,calibre,surface,m2_per_box,pieces_per_box,texture,mounting_height_mm,"
+    "mounting_to,companions\n";
 
 static void put_text(FILE *f, const char *s)
 {
@@ -528,7 +529,10 @@ typedef struct product {
     const material *variants[4];
     int variant_count;
     const tile_data *tile;
-    int has_model; /* 1: the model column names the generated GLB (make_models.c) */
+    int has_model;        /* 1: the model column names the generated GLB (make_models.c) */
+    double mount_h;       /* mounting_height_mm, when mount_to is set */
+    const char *mount_to; /* "bottom", "top", "rim", "seat" or NULL */
+    char companions[200];
 } product;
 
 /* The model path, as cat_model_file_name() in catalog/src/gen_path.c makes it (the test
@@ -626,10 +630,18 @@ static void write_rows(FILE *f, const product *p)
             put_num(f, t->thickness);
             fprintf(f, ",%s,%s,", t->calibre, t->surface);
             put_num(f, round(t->pieces * area * 1000) / 1000);
-            fprintf(f, ",%d,%s\n", t->pieces, t->texture);
+            fprintf(f, ",%d,%s,", t->pieces, t->texture);
         } else {
-            fputs(",,,,,,,,,,,,\n", f);
+            fputs(",,,,,,,,,,,,", f);
         }
+        if (p->mount_to) {
+            put_num(f, p->mount_h);
+            fprintf(f, ",%s,", p->mount_to);
+        } else {
+            fputs(",,", f);
+        }
+        put_text(f, p->companions);
+        fputc('\n', f);
     }
 }
 
@@ -676,6 +688,93 @@ static const char *category_sentence(const char *category)
 }
 
 /* Writes `count` products of the types (picked from `first`, cycling) for one series. */
+/* ---- mounting heights and companions (docs/catalog.md "Mounting heights and companions") ---- */
+
+/* The products written so far, for a vanity unit's companions. */
+#define N_MADE 512
+typedef struct made {
+    const char *maker, *category, *series;
+    char article[48], name[200];
+    double w, h;
+} made;
+static made made_list[N_MADE];
+static int made_count;
+
+static void remember(const product *p)
+{
+    if (made_count < N_MADE) {
+        made *m = &made_list[made_count++];
+        m->maker = p->m->name;
+        m->category = p->category;
+        m->series = p->series;
+        snprintf(m->article, sizeof m->article, "%s", p->article);
+        snprintf(m->name, sizeof m->name, "%s", p->name);
+        m->w = p->w;
+        m->h = p->h;
+    }
+}
+
+/* The first product written of a category whose name holds `word` and, when w > 0, of that
+ * width; one of maker and series first when given. */
+static const made *find_made(const char *category, const char *word, double w, const char *maker,
+                             const char *series)
+{
+    for (int pass = maker ? 0 : 1; pass < 2; pass++)
+        for (int i = 0; i < made_count; i++) {
+            const made *m = &made_list[i];
+            if (strcmp(m->category, category) || !strstr(m->name, word) || (w > 0 && m->w != w))
+                continue;
+            if (pass == 0 && (strcmp(m->maker, maker) || strcmp(m->series, series)))
+                continue;
+            return m;
+        }
+    return NULL;
+}
+
+static void add_companion(product *p, const made *m)
+{
+    size_t n = strlen(p->companions);
+    if (m)
+        snprintf(p->companions + n, sizeof p->companions - n, "%s%s%s%s", n ? ";" : "",
+                 strcmp(m->maker, p->m->name) ? m->maker : "",
+                 strcmp(m->maker, p->m->name) ? ":" : "", m->article);
+}
+
+/* The trade's heights (DOMAIN.md "Typical sizes"): a basin's rim at 850, a WC's seat at 420
+ * (460-480 accessible: 470), a floor-standing WC on the floor, a mirror's underside at 1150, a
+ * towel radiator's at 150. A vanity unit for a basin comes with the series' basin of its width
+ * (else any maker's), a basin mixer and a mirror of its width, and its top where that basin's
+ * rim is at 850. */
+static void mounting(product *p)
+{
+    const char *c = p->category;
+    if (!strcmp(c, "basins")) {
+        p->mount_to = "rim";
+        p->mount_h = 850;
+    } else if (!strcmp(c, "wcs_bidets")) {
+        int floor = strstr(p->name, "close-coupled") || strstr(p->name, "back-to-wall");
+        p->mount_to = floor ? "bottom" : "seat";
+        p->mount_h = floor ? 0 : strstr(p->name, "accessible") ? 470 : 420;
+    } else if (!strcmp(c, "mirrors") || !strcmp(c, "mirror_cabinets")) {
+        p->mount_to = "bottom";
+        p->mount_h = 1150;
+    } else if (!strcmp(c, "towel_radiators")) {
+        p->mount_to = "bottom";
+        p->mount_h = 150;
+    } else if (!strcmp(c, "vanity_units") && strstr(p->name, "vanity unit")) {
+        int twin = strstr(p->name, "double") != NULL;
+        const made *basin = find_made("basins", twin ? "double washbasin" : "washbasin", p->w,
+                                      p->m->name, p->series);
+        add_companion(p, basin);
+        add_companion(p, find_made("taps_mixers", "basin mixer", 0, NULL, NULL));
+        add_companion(p, find_made("mirrors", "mirror", p->w, NULL, NULL));
+        if (basin) {
+            p->mount_to = "top";
+            p->mount_h = 850 - basin->h;
+        }
+    }
+}
+
 static int series_products(FILE *f, int maker_id, const char *category, const char *series,
                            double price_factor, const ptype *types, int type_count, int first,
                            int count, const char *series_text)
@@ -702,7 +801,9 @@ static int series_products(FILE *f, int maker_id, const char *category, const ch
         for (int v = 0; v < 4 && t->variants->m[v]; v++)
             p.variants[p.variant_count++] = t->variants->m[v];
         p.has_model = 1;
+        mounting(&p);
         write_rows(f, &p);
+        remember(&p);
     }
     return count;
 }

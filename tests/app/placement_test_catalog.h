@@ -88,6 +88,14 @@ static app_result ptc_lookup(void *user, const app_product_ref *ref, app_product
         out->height_mm = atof(fld[10]);
         out->category = ptc_category(fld[3]);
         snprintf(out->model, sizeof out->model, "%s", fld[16]);
+        /* mounting_height_mm, mounting_to, companions: the last three columns. */
+        if (n >= 45 && fld[43][0]) {
+            out->has_mounting = 1;
+            out->mounting_height_mm = atof(fld[42]);
+            out->mounting_of = strcmp(fld[43], "bottom") ? APP_MOUNT_TOP : APP_MOUNT_BOTTOM;
+        }
+        if (n >= 45)
+            snprintf(out->companions, sizeof out->companions, "%s", fld[44]);
         r = APP_OK;
         break;
     }

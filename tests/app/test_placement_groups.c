@@ -124,6 +124,72 @@ static void test_mounting_heights(void)
     app_project_free_all(&p);
 }
 
+/* The catalog's own mounting heights win over the category's (docs/catalog.md "Mounting
+ * heights and companions"): the accessible WC CE413301 (400 high) has its seat at 470, not
+ * 420; the close-coupled WC stands on the floor. A vanity placed `with-companions` brings the
+ * basin, mixer and mirror its row names, each on its carrier, in one undo step; a product
+ * whose mounting height is above the room's ceiling is refused. */
+static void test_catalog_mounting(void)
+{
+    app_product_info info = {.height_mm = 400, .category = CAT_CATEGORY_WCS_BIDETS};
+    CHECK_NEAR(app_product_mounting_z(&info), 20, 1e-9); /* the category's 420 */
+    info.has_mounting = 1;
+    info.mounting_height_mm = 470;
+    info.mounting_of = APP_MOUNT_TOP;
+    CHECK_NEAR(app_product_mounting_z(&info), 70, 1e-9);
+    info.mounting_of = APP_MOUNT_BOTTOM;
+    CHECK_NEAR(app_product_mounting_z(&info), 470, 1e-9);
+
+    app_project p;
+    make_room(&p);
+    app_history *h = app_history_create(0);
+    run(&p, h,
+        "place Cerana CE413301 WH at 2500 0 snap wall as wc\n"
+        "place Cerana CE413501 WH at 700 2500 snap wall as wc2\n");
+    CHECK(named(&p, "wc") && fabs(named(&p, "wc")->position_mm[2] - 70) < 1e-9);
+    CHECK(named(&p, "wc2") && fabs(named(&p, "wc2")->position_mm[2]) < 1e-9);
+
+    int undo = app_history_undo_count(h);
+    run(&p, h, "place Cerana CE419501 OK at 1200 0 snap wall as vanity with-companions\n");
+    CHECK(app_history_undo_count(h) == undo + 1);
+    CHECK(p.object_count == 6);
+    const app_object *v = named(&p, "vanity"), *b = named(&p, "CE410401"),
+                     *t = named(&p, "31000000"), *m = named(&p, "VX20051");
+    CHECK(v && b && t && m);
+    if (v && b && t && m) {
+        CHECK_NEAR(v->position_mm[2] + 520, 680, 1e-9); /* the catalog's top 680 */
+        CHECK_NEAR(b->position_mm[2], 680, 1e-9);       /* its rim at 850 */
+        CHECK(!strcmp(b->parent, "vanity"));
+        CHECK_NEAR(t->position_mm[2], 850, 1e-9);
+        CHECK(!strcmp(t->parent, "CE410401"));
+        CHECK_NEAR(m->position_mm[2], 1150, 1e-9);
+        CHECK(!strcmp(m->parent, "CE410401"));
+    }
+    CHECK(floating_errors(&p) == 0);
+    char err[512];
+    CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK && p.object_count == 2);
+    app_history_destroy(h);
+    app_project_free_all(&p);
+
+    /* A room 1000 mm high: the mirror's 1150 is above its ceiling. */
+    make_room(&p);
+    p.plan.height_mm = p.room.height_mm = 1000;
+    h = app_history_create(0);
+    app_script_env env = {ptc_lookup, (void *)csv, NULL, NULL};
+    const char *line = "place Vitrelux VX20051 MI at 1500 0 as mirror\n";
+    err[0] = 0;
+    CHECK(app_script_run(&p, h, line, strlen(line), "t.edit", &env, NULL, err, sizeof err) !=
+          APP_OK);
+    CHECK_MSG(tu_contains(err, "above the room's ceiling at 1000 mm"), "%s", err);
+    /* A product without companions is told so. */
+    line = "place Cerana CE413301 WH at 2500 0 with-companions\n";
+    CHECK(app_script_run(&p, h, line, strlen(line), "t.edit", &env, NULL, err, sizeof err) !=
+          APP_OK);
+    CHECK_MSG(tu_contains(err, "has no companions"), "%s", err);
+    app_history_destroy(h);
+    app_project_free_all(&p);
+}
+
 static void test_group_move_rotate_remove(void)
 {
     app_project p, before;
@@ -192,5 +258,6 @@ int main(void)
 {
     test_mounting_heights();
     test_group_move_rotate_remove();
+    test_catalog_mounting();
     return check_report("placement_groups");
 }

@@ -3,7 +3,7 @@
 # tests that run the tessera binary on catalogs in this build folder.
 set(CAT_DB_SOURCE "${CMAKE_SOURCE_DIR}/assets/catalog")
 
-foreach(name test_db_schema test_db_import test_db_hostile test_db_search test_db_shipped test_db_faults
+foreach(name test_db_schema test_db_import test_db_mounting test_db_hostile test_db_search test_db_shipped test_db_faults
              test_db_roundtrip test_db_search_words)
   add_executable(${name} ${CMAKE_CURRENT_LIST_DIR}/${name}.c)
   target_link_libraries(${name} PRIVATE tessera_catalog)
@@ -13,6 +13,7 @@ foreach(name test_db_schema test_db_import test_db_hostile test_db_search test_d
   add_test(NAME catalog.${test_name} COMMAND ${name})
   set_tests_properties(catalog.${test_name} PROPERTIES LABELS unit)
 endforeach()
+set_tests_properties(catalog.db_mounting PROPERTIES LABELS "catalog;unit" TIMEOUT 60)
 
 # Colour words against finishes; German compound words (one executable, one test each).
 add_executable(test_db_search_finishes ${CMAKE_CURRENT_LIST_DIR}/test_db_search_finishes.c)
@@ -41,6 +42,10 @@ file(WRITE ${CAT_DB_CLI}/bad-rows.csv
      "Cli,C-1,4006381333931,basins,Good basin,600,550,175,259.00\n"
      "Cli,C-2,4006381333932,basins,Bad GTIN,600,550,175,259.00\n"
      "Cli,C-3,,sinks,Bad category,600,550,175,259.00\n")
+file(WRITE ${CAT_DB_CLI}/bad-mounting.csv
+     "manufacturer,article,category,name,width_mm,depth_mm,height_mm,list_price,mounting_height_mm,mounting_to,companions\n"
+     "Cli,M-1,basins,Basin,600,550,175,259.00,-850,rim,\n"
+     "Cli,M-2,vanity_units,Vanity,600,460,520,599.00,680,top,M-1;NO-SUCH\n")
 # tessera_add_test (tests/common/tessera_test.cmake) checks the exit code with the output and
 # fails on any sanitizer report.
 tessera_add_test(NAME catalog.db_cli_search
@@ -81,4 +86,12 @@ tessera_add_test(NAME catalog.db_cli_not_found
                  COMMAND tessera catalog show NO-SUCH-1 --db ${CAT_DB_CLI}/show.sqlite
                  EXPECT_RC 1 2 EXPECT_STDERR "no product with article number or GTIN \"NO-SUCH-1\""
                  LABELS unit)
-
+# Nonsense mounting data is refused with the file, the line and the column
+# (docs/catalog.md "Mounting heights and companions").
+tessera_add_test(NAME catalog.db_cli_import_bad_mounting
+                 COMMAND tessera catalog import ${CAT_DB_CLI}/bad-mounting.csv
+                         --db ${CAT_DB_CLI}/bad-mounting.sqlite
+                 EXPECT_RC 2
+                 EXPECT_STDERR "bad-mounting.csv:2: column mounting_height_mm: must be between 0 and 4000"
+                               "bad-mounting.csv:3: column companions: companion 2, Cli NO-SUCH, is neither"
+                 LABELS "catalog;unit" TIMEOUT 60)

@@ -181,7 +181,8 @@ static void test_migration_from_v3(void)
 {
     cat_db_close(open_catalog("v3.sqlite", 1));
     const char *path = tmp_path("v3.sqlite");
-    /* Back to version 3: without the finishes (version 5) and the synonyms and tokenizer (4). */
+    /* Back to version 3: without the mounting columns (version 7), the finishes (5) and the
+     * synonyms and tokenizer (4). */
     CHECK(sql_run(path, "DROP TRIGGER variants_finishes_insert;"
                         "DROP TRIGGER variants_finishes_delete;"
                         "DROP TRIGGER variants_finishes_update;"
@@ -192,6 +193,9 @@ static void test_migration_from_v3(void)
                         "DROP TRIGGER series_fts_rename;"
                         "DROP VIEW product_search;"
                         "ALTER TABLE products DROP COLUMN finishes;"
+                        "ALTER TABLE products DROP COLUMN mounting_height_mm;"
+                        "ALTER TABLE products DROP COLUMN mounting_to;"
+                        "ALTER TABLE products DROP COLUMN companions;"
                         "CREATE VIEW product_search AS SELECT p.id AS id, p.name AS name, "
                         "coalesce(s.name, '') AS series, m.name AS manufacturer, p.article AS "
                         "article, replace(replace(replace(replace(replace(p.article, '-', ''), "

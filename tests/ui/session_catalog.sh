@@ -2,7 +2,9 @@
 # The catalog's drag and drop, the live quantities panel and the file panel under Xvfb:
 # search "basin", drag the first hit into the plan and let go, check the object
 # count and that the quantities panel's total is plausible, save as, start a new project (an
-# empty room), open the saved file again (its objects are back), and exit 0. A second run opens
+# empty room), open the saved file again (its objects are back), drop a vanity unit whose
+# catalog row names companions (it comes with its basin, mixer and mirror: 4 objects, one
+# undo step), and exit 0. A second run opens
 # a broken file: it must fail, with a message that names the file and the problem.
 #   usage: session_catalog.sh TESSERA OUTDIR SCREENSHOT_CHECK SOURCE_DIR
 set -e
@@ -46,18 +48,29 @@ drop-selected 3d 640 500
 expect-objects 22
 undo
 expect-objects 21
+search CE419501
+select 1
+wait 2
+drop-selected 3d 640 500
+expect-objects 25
+wait 1
+screenshot $out/companions.png
+undo
+expect-objects 21
 wait 1
 screenshot $out/reopened.png
 quit
 SCRIPT
 session_window "$out/demo.json" 1280x720 "$out/session.txt" "$out/stderr.txt"
-session_shots browser dragging dropped new reopened
+session_shots browser dragging dropped new companions reopened
 # Each screenshot shows a room or a plan, and each step changed the picture.
 "$check" "$out/browser.png" "$out/dragging.png" "$out/dropped.png" "$out/new.png" \
     "$out/reopened.png"
 # The drop went through the place command and was saved; the saved file passes the checks'
 # reader.
 grep -q 'place "Cerana"' "$out/stderr.txt" || { echo "FAIL: no place edit"; exit 1; }
+grep -q 'place "Cerana" "CE419501" .* with-companions$' "$out/stderr.txt" ||
+    { echo "FAIL: the vanity was not dropped with its companions"; exit 1; }
 grep -q '"CE41' "$out/saved.json" || { echo "FAIL: the dropped basin was not saved"; exit 1; }
 # It landed at its mounting height (docs/editing.md "Mounting heights"), not on the floor: its
 # name is its article (the demo's own basin is named "basin").

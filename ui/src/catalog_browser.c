@@ -76,6 +76,7 @@ int ui_catalog_browser_select(ui_catalog_browser *b, int i)
     cat_product_free(&b->product);
     b->selected = i;
     b->variant = 0;
+    b->without_companions = 0;
     if (cat_product_get(b->db, b->hits[i].product_id, &b->product, b->error, sizeof b->error) !=
         CAT_DB_OK) {
         b->selected = -1;
@@ -105,6 +106,27 @@ static void details(ui_catalog_browser *b)
                  v);
         if (ui_gui_selectable(label, v == b->variant))
             b->variant = v;
+    }
+    if (p->mounting_to != CAT_MOUNT_NONE)
+        ui_gui_text("mounted: %.0f mm to its %s", p->mounting_height_mm,
+                    cat_mount_to_name(p->mounting_to));
+    if (p->companions[0]) {
+        /* The catalog says what goes with it (a vanity's basin, tap and mirror): a drop places
+         * them too, unless the user turns it off here. */
+        char maker[CAT_MANUFACTURER_BYTES + 1], article[CAT_ARTICLE_BYTES + 1];
+        int n = 0;
+        while (cat_companion_get(p->companions, n, maker, sizeof maker, article, sizeof article) ==
+               1)
+            n++;
+        char label[64];
+        snprintf(label, sizeof label, "[%s] place with its %d companion%s##companions",
+                 b->without_companions ? " " : "x", n, n == 1 ? "" : "s");
+        if (ui_gui_selectable(label, !b->without_companions))
+            b->without_companions = !b->without_companions;
+        for (int k = 0; k < n; k++) {
+            cat_companion_get(p->companions, k, maker, sizeof maker, article, sizeof article);
+            ui_gui_text("    + %s %s", maker[0] ? maker : p->manufacturer, article);
+        }
     }
     if (p->short_text[0])
         ui_gui_text_wrapped(p->short_text);

@@ -22,6 +22,7 @@ typedef struct ui_catalog_browser {
     int selected;                 /* index into hits, -1 = none */
     cat_product product;          /* details of the selected hit */
     int variant;                  /* selected variant of product */
+    int without_companions;       /* 1: a drop places the product alone, not with its companions */
     struct ui_thumbnails *thumbs; /* thumbnails of the hits (NULL: none shown) */
     int drag_hit; /* a hit being dragged out of the list this frame (drag and drop), -1 = none */
 } ui_catalog_browser;

@@ -68,6 +68,36 @@ static int locate_fixture(planner *p, const char *name)
     return 1;
 }
 
+/* A fixture's footprint in plan mm (what the walker and the checks see): centre, half sides,
+ * turn and heights, so a session can tell whether an eye entered it. */
+static int locate_box(planner *p, const char *name)
+{
+    for (int i = 0; i < p->fixture_count; i++) {
+        const app_fixture *f = &p->fixtures[i];
+        if (f->object < 0 || f->object >= p->project.object_count ||
+            strcmp(p->project.objects[f->object].name, name))
+            continue;
+        fprintf(stderr,
+                "tessera: locate box \"%s\" centre %.1f %.1f half %.1f %.1f angle %.1f z %.0f "
+                "%.0f\n",
+                name, f->centre[0], f->centre[1], f->half[0], f->half[1], f->angle_deg, f->z0,
+                f->z1);
+        return 0;
+    }
+    snprintf(p->status, sizeof p->status, "the project has no fixture \"%s\"", name);
+    return 1;
+}
+
+/* The eye of the view on screen, in plan mm, and the camera mode. */
+static int locate_eye(planner *p)
+{
+    double eye[3], target[3];
+    planner_view_points(p, eye, target);
+    fprintf(stderr, "tessera: locate eye at %.1f %.1f %.1f %s\n", eye[0], eye[1], eye[2],
+            p->mode == UI_MODE_WALK ? "walk" : "orbit");
+    return 0;
+}
+
 /* The box around the selection's outline in the 3D view (selection_3d.c). */
 static int locate_selection(planner *p)
 {
@@ -120,8 +150,13 @@ int planner_input_action(planner *p, const ui_action *a)
             return locate_widget(p, a->text + 7, 1);
         if (!strcmp(a->text, "selection"))
             return locate_selection(p);
+        if (!strncmp(a->text, "box ", 4))
+            return locate_box(p, a->text + 4);
+        if (!strcmp(a->text, "eye"))
+            return locate_eye(p);
         snprintf(p->status, sizeof p->status,
-                 "locate widget LABEL, locate fixture NAME or locate selection");
+                 "locate widget LABEL, locate fixture NAME, locate box NAME, locate eye or "
+                 "locate selection");
         return 1;
     }
     return 0; /* wait-file runs in planner_wait_file */

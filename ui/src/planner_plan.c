@@ -89,21 +89,26 @@ int planner_place_selected(planner *p, double x_mm, double y_mm)
     /* No height: the product lands at its mounting height, or on the product it mounts onto
      * when one is near the drop point (a basin on its vanity), against the nearest wall
      * (docs/editing.md "Mounting heights"). */
+    /* A product whose catalog row names companions (a vanity's basin, tap and mirror) comes
+     * with them, as one group and one undo step (docs/editing.md "Companions"), unless the
+     * catalog panel's "[x] with ..." is turned off. */
+    const char *with = prod->companions[0] && !b->without_companions ? " with-companions" : "";
+    int first_new = p->project.object_count;
     char line[512];
-    snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f snap wall", prod->manufacturer,
-             prod->article, variant, x_mm, y_mm);
+    snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f snap wall%s",
+             prod->manufacturer, prod->article, variant, x_mm, y_mm, with);
     int rc = planner_edit(p, line);
     if (rc && !inside_room(p, x_mm, y_mm)) {
         planner_status(p, "%s: outside the room, nothing placed", prod->name);
         return 1;
     }
     if (rc) { /* no wall near: where it was dropped */
-        snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f", prod->manufacturer,
-                 prod->article, variant, x_mm, y_mm);
+        snprintf(line, sizeof line, "place \"%s\" \"%s\" %s at %.0f %.0f%s", prod->manufacturer,
+                 prod->article, variant, x_mm, y_mm, with);
         rc = planner_edit(p, line);
     }
-    if (rc == 0) /* the new fixture is the selection, ready to be dragged */
-        p->plan_o.selected_object = p->project.object_count - 1;
+    if (rc == 0) /* the new fixture (not a companion) is the selection, ready to be dragged */
+        p->plan_o.selected_object = first_new;
     return rc;
 }
 

@@ -66,6 +66,9 @@
  *                          pixels, and whether its panel shows it (input_script.c)
  *   locate widget-if-drawn LABEL...  the same, logging "not drawn" instead of failing
  *   locate fixture NAME... log where a fixture's centre is in the plan view (view plan first)
+ *   locate box NAME        log a fixture's footprint in plan mm: centre, half sides, turn,
+ *                          underside and top (what the walker and the checks see)
+ *   locate eye             log the view's eye in plan mm and the camera mode (walk|orbit)
  *   locate selection       log the window-pixel box around the selection's outline in the
  *                          3D view (selection_3d.c), or that none shows
  *   pick NAME              select a fixture by its object's name, as a click on it in the

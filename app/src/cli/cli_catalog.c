@@ -211,6 +211,13 @@ int cli_cmd_catalog_show(const cli_options *o)
            cat_unit_name(p.unit), p.vat_percent, gross, p.currency);
     printf("  %-15s %s\n", "discount group", p.discount_group[0] ? p.discount_group : "(none)");
     printf("  %-15s %s\n", "model", p.model[0] ? p.model : "(none yet)");
+    if (p.mounting_to != CAT_MOUNT_NONE)
+        printf("  %-15s %g mm to its %s\n", "mounting", p.mounting_height_mm,
+               cat_mount_to_name(p.mounting_to));
+    else
+        printf("  %-15s %s\n", "mounting",
+               "(its category's, docs/editing.md \"Mounting heights\")");
+    printf("  %-15s %s\n", "companions", p.companions[0] ? p.companions : "(none)");
     printf("  %-15s %s\n", "source", p.shipped ? "shipped catalog" : "imported");
     if (p.has_tile) {
         const cat_tile *t = &p.tile;

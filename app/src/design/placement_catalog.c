@@ -78,6 +78,12 @@ app_result app_placement_catalog_lookup(void *user, const app_product_ref *ref,
     out->height_mm = prod.height_mm;
     out->category = (int)prod.category;
     snprintf(out->model, sizeof out->model, "%s", prod.model);
+    if (prod.mounting_to != CAT_MOUNT_NONE) {
+        out->has_mounting = 1;
+        out->mounting_height_mm = prod.mounting_height_mm;
+        out->mounting_of = prod.mounting_to == CAT_MOUNT_BOTTOM ? APP_MOUNT_BOTTOM : APP_MOUNT_TOP;
+    }
+    snprintf(out->companions, sizeof out->companions, "%s", prod.companions);
     if (v) {
         const cat_render_material *m = &v->material;
         out->has_material = 1;

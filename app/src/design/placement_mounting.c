@@ -1,6 +1,7 @@
-/* Mounting heights of the trade and the check that a basin is carried by something: the
- * heights a dropped product lands at (DOMAIN.md "Typical sizes": basin rim 850-900, WC seat
- * 400-420, mirror above the basin) and the floating-basin finding (docs/editing.md). */
+/* Mounting heights of the trade (the fallback for products whose catalog row gives none) and the
+ * check that a basin is carried by something: the heights a dropped product lands at (DOMAIN.md
+ * "Typical sizes": basin rim 850-900, WC seat 400-420, mirror above the basin) and the
+ * floating-basin finding (docs/editing.md). */
 #include "placement_internal.h"
 
 #include "catalog/catalog.h"
@@ -47,6 +48,16 @@ double app_mounting_z(int category, double height_mm)
     double z = m->of == APP_MOUNT_TOP ? m->height_mm - height_mm : m->height_mm;
     /* A product taller than its mounting height stands on the floor (a floor-standing WC, a
      * column basin). */
+    return z > 0 ? z : 0;
+}
+
+double app_product_mounting_z(const app_product_info *info)
+{
+    if (!info->has_mounting)
+        return app_mounting_z(info->category, info->height_mm);
+    double z = info->mounting_of == APP_MOUNT_TOP ? info->mounting_height_mm - info->height_mm
+                                                  : info->mounting_height_mm;
+    /* As for the categories: taller than its mounting height, it stands on the floor. */
     return z > 0 ? z : 0;
 }
 

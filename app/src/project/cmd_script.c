@@ -456,7 +456,15 @@ static int mount(sctx *c, const app_product_info *info, const char *on, int has_
             pose->z = fx[carrier].z1 + above;
         snprintf(parent, parent_size, "%s", o->name);
     } else if (!has_z) {
-        pose->z = app_mounting_z(info->category, info->height_mm);
+        double room = c->p->plan.height_mm;
+        if (info->has_mounting && room > 0 && info->mounting_height_mm > room) {
+            free(fx);
+            return fail(c,
+                        "%s: the catalog mounts this product at %.0f mm, above the room's "
+                        "ceiling at %.0f mm",
+                        c->tok[0], info->mounting_height_mm, room);
+        }
+        pose->z = app_product_mounting_z(info);
     }
     free(fx);
     return 1;
@@ -490,6 +498,81 @@ static int slide_out_of_swing(sctx *c, const app_product_info *info, app_pose *p
     return 1;
 }
 
+/* Adds the object of a placed product at pose, with its variant's material when the project
+ * lacks it, mounted on `parent` ("" = none), in the caller's undo group; its name into name. */
+static int add_product(sctx *c, const app_product_ref *ref, const app_product_info *info,
+                       const app_pose *pose, const char *as, const char *parent, char *name,
+                       size_t name_size)
+{
+    app_command_desc d;
+    memset(&d, 0, sizeof d);
+    d.type = APP_CMD_ADD_OBJECT;
+    d.index = -1;
+    app_object *o = &d.object;
+    if (as) {
+        if (!copy_name(c, o->name, sizeof o->name, as, "name"))
+            return 0;
+    } else {
+        unique_name(c->p, ref->article, o->name, sizeof o->name);
+    }
+    o->shape = APP_SHAPE_MODEL;
+    /* "models/..." lives where the build generated it (cat_models_dir), not under assets/ */
+    if (info->model[0] && c->env && c->env->assets_dir &&
+        !cat_model_resolve(info->model, c->env->assets_dir, o->model, sizeof o->model))
+        o->model[0] = '\0';
+    o->position_mm[0] = pose->x;
+    o->position_mm[1] = pose->y;
+    o->position_mm[2] = pose->z;
+    o->rotation_deg[2] = pose->rotation_deg;
+    o->scale[0] = o->scale[1] = o->scale[2] = 1;
+    o->has_product = 1;
+    o->product = *ref;
+    snprintf(o->parent, sizeof o->parent, "%s", parent);
+    snprintf(name, name_size, "%s", o->name);
+
+    app_command_desc m;
+    o->material = variant_material(c->p, ref, info, &m);
+    return (m.type != APP_CMD_ADD_MATERIAL || run(c, &m)) && run(c, &d);
+}
+
+/* The companions the catalog names for a placed product (a vanity's basin, tap and mirror),
+ * in their order, each dropped at the product's place without a height: each lands on its
+ * carrier (the basin on the vanity, the tap and the mirror on the basin) or, without one, at
+ * its mounting height (docs/editing.md "Companions"). */
+static int add_companions(sctx *c, const app_product_ref *of, const app_product_info *info,
+                          const app_pose *at)
+{
+    char maker[CAT_MANUFACTURER_BYTES + 1], article[CAT_ARTICLE_BYTES + 1];
+    int r;
+    for (int k = 0; (r = cat_companion_get(info->companions, k, maker, sizeof maker, article,
+                                           sizeof article)) != 0;
+         k++) {
+        app_product_ref ref;
+        memset(&ref, 0, sizeof ref);
+        if (r < 0 ||
+            !copy_name(c, ref.manufacturer, sizeof ref.manufacturer,
+                       maker[0] ? maker : of->manufacturer, "manufacturer") ||
+            !copy_name(c, ref.article, sizeof ref.article, article, "article"))
+            return r < 0 ? fail(c, "place: companion %d of %s %s is not an article", k + 1,
+                                of->manufacturer, of->article)
+                         : 0;
+        app_product_info ci;
+        if (!lookup(c, &ref, &ci))
+            return 0;
+        if (ci.variant[0])
+            memcpy(ref.variant, ci.variant, sizeof ref.variant);
+        app_pose pose = *at;
+        char parent[64] = "", name[64];
+        if (!mount(c, &ci, NULL, 0, &pose, parent, sizeof parent) ||
+            !add_product(c, &ref, &ci, &pose, NULL, parent, name, sizeof name))
+            return 0;
+        if (c->env && c->env->log)
+            fprintf(c->env->log, "place: companion %s %s as \"%s\"%s%s at z %.0f\n",
+                    ref.manufacturer, ref.article, name, parent[0] ? " on " : "", parent, pose.z);
+    }
+    return 1;
+}
+
 static int do_place(sctx *c)
 {
     int at = keyword(c, 1, "at");
@@ -510,12 +593,16 @@ static int do_place(sctx *c)
     const char *as = NULL, *on = NULL;
     if (kw_word(c, opt, "as", &as, 0) == 0 || kw_word(c, opt, "on", &on, 0) == 0)
         return 0;
+    int with_companions = keyword(c, opt, "with-companions") >= 0;
     app_product_info info;
     if (!lookup(c, &ref, &info))
         return 0;
     if (info.category == CAT_CATEGORY_TILES)
         return fail(c, "place: %s %s is a tile; tiles are laid with `tile SURFACE with ...`",
                     ref.manufacturer, ref.article);
+    if (with_companions && !info.companions[0])
+        return fail(c, "place: %s %s has no companions in the catalog", ref.manufacturer,
+                    ref.article);
     if (!ref.variant[0] && info.variant[0])
         memcpy(ref.variant, info.variant, sizeof ref.variant);
     app_pose pose = {pos[0], pos[1], pos[2], rot};
@@ -528,39 +615,13 @@ static int do_place(sctx *c)
     if (dropped && !parent[0] && !slide_out_of_swing(c, &info, &pose))
         return 0;
 
-    app_command_desc d;
-    memset(&d, 0, sizeof d);
-    d.type = APP_CMD_ADD_OBJECT;
-    d.index = -1;
-    app_object *o = &d.object;
-    if (as) {
-        if (!copy_name(c, o->name, sizeof o->name, as, "name"))
-            return 0;
-    } else {
-        unique_name(c->p, ref.article, o->name, sizeof o->name);
-    }
-    o->shape = APP_SHAPE_MODEL;
-    /* "models/..." lives where the build generated it (cat_models_dir), not under assets/ */
-    if (info.model[0] && c->env && c->env->assets_dir &&
-        !cat_model_resolve(info.model, c->env->assets_dir, o->model, sizeof o->model))
-        o->model[0] = '\0';
-    o->position_mm[0] = pose.x;
-    o->position_mm[1] = pose.y;
-    o->position_mm[2] = pose.z;
-    o->rotation_deg[2] = pose.rotation_deg;
-    o->scale[0] = o->scale[1] = o->scale[2] = 1;
-    o->has_product = 1;
-    o->product = ref;
-    memcpy(o->parent, parent, sizeof o->parent);
-
-    app_command_desc m;
-    int mat = variant_material(c->p, &ref, &info, &m);
-    o->material = mat;
-    char label[160];
-    snprintf(label, sizeof label, "place \"%s\"", o->name);
+    char label[160], name[64];
+    snprintf(label, sizeof label, "place \"%s\"%s", as ? as : ref.article,
+             with_companions ? " with its companions" : "");
     int before = c->st->commands;
     app_history_begin_group(c->h, label);
-    int ok = (m.type != APP_CMD_ADD_MATERIAL || run(c, &m)) && run(c, &d);
+    int ok = add_product(c, &ref, &info, &pose, as, parent, name, sizeof name) &&
+             (!with_companions || add_companions(c, &ref, &info, &pose));
     c->st->commands = before + (ok ? 1 : 0);
     return end_group(c, ok);
 }

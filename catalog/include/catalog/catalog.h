@@ -22,7 +22,7 @@ extern "C" {
 
 /* The schema version this build writes (PRAGMA user_version). Older files are migrated on
  * open, one step at a time; newer ones are refused with CAT_DB_ERR_VERSION. */
-#define CAT_DB_SCHEMA_VERSION 6
+#define CAT_DB_SCHEMA_VERSION 7
 
 typedef enum cat_db_result {
     CAT_DB_OK = 0,
@@ -95,6 +95,19 @@ typedef enum cat_tile_type {
     CAT_TILE_TYPE_COUNT
 } cat_tile_type;
 
+/* What a product's mounting height is measured to, from the floor (docs/catalog.md "Mounting
+ * heights"): its underside (a mirror, a radiator), its top, a basin's rim or a WC's seat (both
+ * the top of the product's box, which is where the catalog's boxes have them). NONE: the
+ * product gives no height; the placement uses its category's (docs/editing.md). */
+typedef enum cat_mount_to {
+    CAT_MOUNT_NONE = 0,
+    CAT_MOUNT_BOTTOM,
+    CAT_MOUNT_TOP,
+    CAT_MOUNT_RIM,
+    CAT_MOUNT_SEAT,
+    CAT_MOUNT_COUNT
+} cat_mount_to;
+
 /* Names: "taps_mixers", "piece"/"m2"/"box", "mix"/"add"/"fresnel", "glossy"/"matt"/"structured",
  * "UNI"/"BOR"/"DEK"/"EIN"; "" for a value out of range (CAT_CATEGORY_ANY too). Never NULL. */
 const char *cat_category_name(cat_category c);
@@ -102,6 +115,7 @@ const char *cat_unit_name(cat_unit u);
 const char *cat_blend_name(cat_blend b);
 const char *cat_surface_name(cat_tile_surface s);
 const char *cat_tile_type_name(cat_tile_type t);
+const char *cat_mount_to_name(cat_mount_to m); /* "bottom", "top", "rim", "seat"; NONE: "" */
 
 /* Parse the names above (categories, units, blends and surfaces ignore case; tile types too).
  * Return 1 and set *out when known, else 0 and leave *out alone. */
@@ -110,6 +124,7 @@ int cat_unit_parse(const char *text, cat_unit *out);
 int cat_blend_parse(const char *text, cat_blend *out);
 int cat_surface_parse(const char *text, cat_tile_surface *out);
 int cat_tile_type_parse(const char *text, cat_tile_type *out);
+int cat_mount_to_parse(const char *text, cat_mount_to *out); /* not "" */
 
 /* 1 when text is a GTIN-8, -12 (UPC-A), -13 (EAN) or -14: only digits, and the last is the
  * GS1 mod-10 check digit of the others. */
@@ -131,6 +146,13 @@ int cat_gtin_valid(const char *text);
 #define CAT_VARIANT_CODE_BYTES 16
 #define CAT_VARIANT_NAME_BYTES 64
 #define CAT_CALIBRE_BYTES 16
+#define CAT_COMPANIONS_BYTES 400
+
+/* A mounting height above this (mm) is refused on import: no room is that high. The room a
+ * product is placed in is checked again at placement. */
+#define CAT_MOUNTING_MAX_MM 4000.0
+/* Companions one product may name. */
+#define CAT_MAX_COMPANIONS 8
 
 /* A variant's material: the renderer's parameters (render.h rd_material, RENDERING.md). */
 typedef struct cat_render_material {
@@ -180,12 +202,26 @@ typedef struct cat_product {
     cat_unit unit;
     char discount_group[CAT_DISCOUNT_GROUP_BYTES + 1];
     char model[CAT_PATH_BYTES + 1]; /* GLB file relative to the assets folder, may be "" */
-    int shipped;                    /* 1: from the shipped data, 0: from a user's import */
-    cat_variant *variants;          /* ordered by code; owned, freed by cat_product_free */
+    /* Where it is mounted: mounting_height_mm above the floor to what mounting_to says
+     * (CAT_MOUNT_NONE and 0: not given). */
+    double mounting_height_mm;
+    cat_mount_to mounting_to;
+    /* Products that go with it, placed with it as a group (a vanity's basin, tap and mirror):
+     * "ARTICLE" of the same manufacturer or "MANUFACTURER:ARTICLE", separated by ";", in the
+     * order they are placed; "" when none. Every one is in the catalog (checked on import). */
+    char companions[CAT_COMPANIONS_BYTES + 1];
+    int shipped;           /* 1: from the shipped data, 0: from a user's import */
+    cat_variant *variants; /* ordered by code; owned, freed by cat_product_free */
     int variant_count;
     int has_tile; /* tile is filled in for category tiles */
     cat_tile tile;
 } cat_product;
+
+/* Entry k (from 0) of a companions text (cat_product.companions): its manufacturer ("" when
+ * the entry names none: the product's own) and article, blanks around each trimmed. Returns 1,
+ * 0 when there is no entry k, -1 when entry k is empty or a part does not fit. */
+int cat_companion_get(const char *companions, int k, char *manufacturer, size_t manufacturer_size,
+                      char *article, size_t article_size);
 
 /* Frees what *p owns and zeroes it. Safe on a zeroed product and on NULL. */
 void cat_product_free(cat_product *p);

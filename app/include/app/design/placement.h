@@ -35,6 +35,14 @@ typedef struct app_product_info {
     float ambient[3], diffuse[3], specular[3], emissive[3];
     float shininess, reflectivity, glossiness, transparency, ior;
     int blend; /* APP_BLEND_* */
+    /* The product's own mounting (catalog columns mounting_height_mm, mounting_to): when
+     * has_mounting, mounting_height_mm above the floor to its underside (mounting_of
+     * APP_MOUNT_BOTTOM) or top (APP_MOUNT_TOP: top, rim, seat); else its category's. */
+    int has_mounting;
+    double mounting_height_mm;
+    int mounting_of; /* app_mount_of */
+    /* Its companions (catalog/catalog.h cat_product.companions, cat_companion_get), "" = none. */
+    char companions[512];
 } app_product_info;
 
 /* Returns APP_OK and fills *out, or APP_ERR_NOT_FOUND (or another error) with a message. */
@@ -203,6 +211,9 @@ const app_mounting *app_mounting_of(int category);
  * freely: 850 - 170 = 680 for a 170 mm basin. 0 for a category without a mounting, and for
  * a product taller than its mounting height (it stands on the floor). */
 double app_mounting_z(int category, double height_mm);
+/* The same for a product: its own mounting when the catalog gives one (info->has_mounting),
+ * else its category's (app_mounting_z). */
+double app_product_mounting_z(const app_product_info *info);
 /* The fixture of fx a product of that category dropped at plan point `at` is carried by: the
  * nearest one of the mounting's `onto` category within max_distance_mm of the point (a basin
  * dropped over or beside a vanity unit), or -1. */
