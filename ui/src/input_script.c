@@ -68,6 +68,21 @@ static int locate_fixture(planner *p, const char *name)
     return 1;
 }
 
+/* Where plan point "X Y" (mm) shows in the plan view. */
+static int locate_plan_point(planner *p, const char *xy)
+{
+    double x, y;
+    if (p->view != UI_VIEW_PLAN || sscanf(xy, "%lf %lf", &x, &y) != 2) {
+        snprintf(p->status, sizeof p->status,
+                 "locate plan X Y needs the plan view and two numbers");
+        return 1;
+    }
+    float sx, sy;
+    ui_plan_to_screen(&p->plan_t, x, y, &sx, &sy);
+    fprintf(stderr, "tessera: locate plan %.0f %.0f at %.0f %.0f\n", x, y, sx, sy);
+    return 0;
+}
+
 /* The box around the selection's outline in the 3D view (selection_3d.c). */
 static int locate_selection(planner *p)
 {
@@ -120,8 +135,12 @@ int planner_input_action(planner *p, const ui_action *a)
             return locate_widget(p, a->text + 7, 1);
         if (!strcmp(a->text, "selection"))
             return locate_selection(p);
+        if (!strncmp(a->text, "handle ", 7))
+            return planner_handles_locate(p, a->text + 7);
+        if (!strncmp(a->text, "plan ", 5))
+            return locate_plan_point(p, a->text + 5);
         snprintf(p->status, sizeof p->status,
-                 "locate widget LABEL, locate fixture NAME or locate selection");
+                 "locate widget LABEL, fixture NAME, selection, handle NAME or plan X Y");
         return 1;
     }
     return 0; /* wait-file runs in planner_wait_file */

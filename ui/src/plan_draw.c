@@ -185,10 +185,10 @@ static void draw_prewalls(const ui_plan_transform *t, const app_project *p,
     }
 }
 
-static void rect_corners(const app_fixture *f, double cx, double cy, double hw, double hd,
-                         double off_y, const ui_plan_transform *t, float xy[8])
+static void rect_corners(double angle_deg, double cx, double cy, double hw, double hd, double off_y,
+                         const ui_plan_transform *t, float xy[8])
 {
-    double c = cos(f->angle_deg * DEG), s = sin(f->angle_deg * DEG);
+    double c = cos(angle_deg * DEG), s = sin(angle_deg * DEG);
     static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
     for (int k = 0; k < 4; k++) {
         double lx = sx[k] * hw, ly = sy[k] * hd + off_y;
@@ -208,13 +208,18 @@ static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx,
 {
     for (int i = 0; i < n; i++) {
         const app_fixture *f = &fx[i];
-        double cx = f->centre[0], cy = f->centre[1];
+        double cx = f->centre[0], cy = f->centre[1], angle = f->angle_deg;
         if (f->object == o->drag_object) {
             cx = o->drag_mm[0];
             cy = o->drag_mm[1];
+            if (o->snap_shown) { /* where the release will put it */
+                cx = o->snap.centre[0];
+                cy = o->snap.centre[1];
+                angle = o->snap.angle_deg;
+            }
         }
         float xy[8];
-        if (areas && areas[i].has_area) {
+        if (areas && areas[i].has_area && fabs(angle - f->angle_deg) < 0.5) {
             /* Where the checks placed it (app_free_areas), so the drawing shows what was
              * checked; a fixture being dragged carries its area along until it is dropped and
              * checked again. */
@@ -223,7 +228,7 @@ static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx,
                 to_screen(t, areas[i].corners[k][0] + dx, areas[i].corners[k][1] + dy, &xy[2 * k]);
             outline(xy, rgba(60, 120, 220, 160), 1.0f);
         }
-        rect_corners(f, cx, cy, f->half[0], f->half[1], 0, t, xy);
+        rect_corners(angle, cx, cy, f->half[0], f->half[1], 0, t, xy);
         int sel = f->object == o->selected_object;
         ui_gui_draw_quad_filled(xy, sel              ? rgba(250, 215, 150, 255)
                                     : f->has_product ? rgba(255, 255, 255, 255)
@@ -251,6 +256,56 @@ static void draw_findings(const ui_plan_transform *t, const app_findings *f)
     }
 }
 
+/* A dashed line, DASH_PX on and GAP_PX off in window pixels whatever the zoom. */
+static void dashed(const ui_plan_transform *t, const double a[2], const double b[2],
+                   unsigned colour)
+{
+    enum { DASH_PX = 8, GAP_PX = 5 };
+    float s0[2], s1[2];
+    to_screen(t, a[0], a[1], s0);
+    to_screen(t, b[0], b[1], s1);
+    float len = hypotf(s1[0] - s0[0], s1[1] - s0[1]);
+    for (float d = 0; d < len; d += DASH_PX + GAP_PX) {
+        float e = fminf(d + DASH_PX, len), u0 = d / len, u1 = e / len;
+        ui_gui_draw_line(s0[0] + u0 * (s1[0] - s0[0]), s0[1] + u0 * (s1[1] - s0[1]),
+                         s0[0] + u1 * (s1[0] - s0[0]), s0[1] + u1 * (s1[1] - s0[1]), colour, 1.5f);
+    }
+}
+
+/* A dimension line with end ticks and its length in mm written at its middle on a white
+ * ground, as a drawing dimensions a clearance. */
+static void dimension(const ui_plan_transform *t, const app_snap_dimension *d, unsigned colour)
+{
+    float a[2], b[2];
+    to_screen(t, d->a[0], d->a[1], a);
+    to_screen(t, d->b[0], d->b[1], b);
+    float len = hypotf(b[0] - a[0], b[1] - a[1]);
+    float nx = len > 0 ? -(b[1] - a[1]) / len * 5 : 0, ny = len > 0 ? (b[0] - a[0]) / len * 5 : 5;
+    ui_gui_draw_line(a[0], a[1], b[0], b[1], colour, 1.5f);
+    ui_gui_draw_line(a[0] - nx, a[1] - ny, a[0] + nx, a[1] + ny, colour, 1.5f);
+    ui_gui_draw_line(b[0] - nx, b[1] - ny, b[0] + nx, b[1] + ny, colour, 1.5f);
+    char label[32];
+    snprintf(label, sizeof label, "%.0f", d->mm);
+    float w = ui_gui_text_width(label), mx = 0.5f * (a[0] + b[0]), my = 0.5f * (a[1] + b[1]);
+    float bg[8] = {mx - w / 2 - 3, my - 9, mx + w / 2 + 3, my - 9,
+                   mx + w / 2 + 3, my + 9, mx - w / 2 - 3, my + 9};
+    ui_gui_draw_quad_filled(bg, rgba(255, 255, 255, 235));
+    ui_gui_draw_text(mx - w / 2, my - 7, colour, label);
+}
+
+/* The dragged fixture's snap: the wall face and the corner or neighbour it lines up with,
+ * dashed, and its clear distances to the left, right and front. */
+static void draw_snap(const ui_plan_transform *t, const ui_plan_overlay *o)
+{
+    if (!o->snap_shown)
+        return;
+    for (int g = 0; g < o->snap.guide_count; g++)
+        dashed(t, o->snap.guides[g].a, o->snap.guides[g].b, UI_PLAN_GUIDE_COLOUR);
+    for (int s = 0; s < APP_SNAP_SIDES; s++)
+        if (o->snap.sides[s].found)
+            dimension(t, &o->snap.sides[s], UI_PLAN_GUIDE_COLOUR);
+}
+
 void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fixture *fx,
                   const app_free_area *areas, int fixture_count, const app_findings *findings,
                   const ui_plan_overlay *o)
@@ -265,6 +320,7 @@ void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fi
     draw_walls(t, p, o);
     draw_openings(t, p, o);
     draw_findings(t, findings);
+    draw_snap(t, o);
     /* A scale bar of one metre. */
     float x0 = t->x0 + 20, y0 = t->y0 + t->height - 20, len = (float)(1000 * t->px_per_mm);
     ui_gui_draw_line(x0, y0, x0 + len, y0, rgba(20, 20, 20, 255), 2.0f);
