@@ -67,6 +67,7 @@ undo
 save $out/undone.json
 view 3d
 camera basin
+pick -
 wait 3
 screenshot $out/unpicked.png
 pick vanity

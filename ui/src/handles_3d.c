@@ -152,6 +152,9 @@ static void draw_turn(const pane_view *v, const ui_handles *h, const app_fixture
     if (project(v, at, &x, &y)) {
         char label[32];
         snprintf(label, sizeof label, "%+.0f deg", turn_deg);
+        float w = ui_gui_text_width(label);
+        float bg[8] = {x + 3, y - 20, x + w + 9, y - 20, x + w + 9, y - 2, x + 3, y - 2};
+        ui_gui_draw_quad_filled(bg, 0xebffffffu); /* white, as the plan's labels */
         ui_gui_draw_text(x + 6, y - 18, UI_PLAN_GUIDE_COLOUR, label);
     }
 }
