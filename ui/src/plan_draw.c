@@ -2,10 +2,12 @@
  * tiler would recognise, north up, walls hatched dark, free areas dashed blue, findings red. */
 #include "plan_draw.h"
 
+#include "app/project/commands.h"
 #include "gui.h"
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define DEG (3.14159265358979323846 / 180.0)
@@ -203,20 +205,65 @@ static void outline(const float xy[8], unsigned colour, float thickness)
                          thickness);
 }
 
-static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx,
+/* The dragged fixture's motion in the plan: its object's position goes from `from` to `to` and
+ * it turns by `turn_deg` about it (the snap preview's pose, else the pointer's translation);
+ * what is mounted on it moves along, as the release's move edit takes it along. */
+typedef struct drag_motion {
+    int active;
+    double from[2], to[2], turn_deg;
+    int *members; /* the dragged object and its group, by object index (1: moves) */
+} drag_motion;
+
+static drag_motion motion_of(const app_project *p, const app_fixture *fx, int n,
+                             const ui_plan_overlay *o)
+{
+    drag_motion m = {0};
+    const app_fixture *d = NULL;
+    for (int i = 0; i < n && !d; i++)
+        d = fx[i].object == o->drag_object ? &fx[i] : NULL;
+    if (!d || o->drag_object >= p->object_count)
+        return m;
+    const double *at = p->objects[o->drag_object].position_mm;
+    m.from[0] = at[0];
+    m.from[1] = at[1];
+    m.to[0] = at[0] + o->drag_mm[0] - d->centre[0];
+    m.to[1] = at[1] + o->drag_mm[1] - d->centre[1];
+    if (o->snap_shown) {
+        m.to[0] = o->snap.pose.x;
+        m.to[1] = o->snap.pose.y;
+        m.turn_deg = o->snap.angle_deg - d->angle_deg;
+    }
+    m.members = calloc((size_t)p->object_count, sizeof *m.members);
+    int *list = malloc((size_t)p->object_count * sizeof *list);
+    if (m.members && list) {
+        int k = app_group_members(p, o->drag_object, list);
+        for (int j = 0; j < k; j++)
+            m.members[list[j]] = 1;
+    }
+    free(list);
+    if (m.members)
+        m.members[o->drag_object] = 1;
+    m.active = 1;
+    return m;
+}
+
+static void draw_fixtures(const ui_plan_transform *t, const app_project *p, const app_fixture *fx,
                           const app_free_area *areas, int n, const ui_plan_overlay *o)
 {
+    drag_motion m = motion_of(p, fx, n, o);
+    double c = cos(m.turn_deg * DEG), s = sin(m.turn_deg * DEG);
     for (int i = 0; i < n; i++) {
         const app_fixture *f = &fx[i];
         double cx = f->centre[0], cy = f->centre[1], angle = f->angle_deg;
-        if (f->object == o->drag_object) {
-            cx = o->drag_mm[0];
-            cy = o->drag_mm[1];
-            if (o->snap_shown) { /* where the release will put it */
-                cx = o->snap.centre[0];
-                cy = o->snap.centre[1];
-                angle = o->snap.angle_deg;
-            }
+        int moves =
+            m.active &&
+            (f->object == o->drag_object ||
+             (m.members && f->object >= 0 && f->object < p->object_count && m.members[f->object]));
+        if (moves) { /* where the release will put it */
+            double rx = cx - m.from[0], ry = cy - m.from[1];
+            cx = m.to[0] + rx * c - ry * s;
+            cy = m.to[1] + rx * s + ry * c;
+            angle += m.turn_deg;
         }
         float xy[8];
         if (areas && areas[i].has_area && fabs(angle - f->angle_deg) < 0.5) {
@@ -234,12 +281,13 @@ static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx,
                                     : f->has_product ? rgba(255, 255, 255, 255)
                                                      : rgba(225, 225, 220, 255));
         outline(xy, sel ? rgba(220, 110, 0, 255) : rgba(30, 30, 30, 255), sel ? 2.5f : 1.2f);
-        float c[2];
-        to_screen(t, cx, cy, c);
+        float label[2];
+        to_screen(t, cx, cy, label);
         if (t->px_per_mm * 2 * f->half[0] > 60)
-            ui_gui_draw_text(c[0] - 3.5f * (float)strlen(f->name), c[1] - 7, rgba(40, 40, 40, 255),
-                             f->name);
+            ui_gui_draw_text(label[0] - 3.5f * (float)strlen(f->name), label[1] - 7,
+                             rgba(40, 40, 40, 255), f->name);
     }
+    free(m.members);
 }
 
 static void draw_findings(const ui_plan_transform *t, const app_findings *f)
@@ -316,7 +364,7 @@ void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fi
     if (p->plan.corner_count < 3)
         return;
     draw_prewalls(t, p, o);
-    draw_fixtures(t, fx, areas, fixture_count, o);
+    draw_fixtures(t, p, fx, areas, fixture_count, o);
     draw_walls(t, p, o);
     draw_openings(t, p, o);
     draw_findings(t, findings);
