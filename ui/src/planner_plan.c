@@ -242,6 +242,8 @@ static void update_snap_preview(planner *p)
     if (k == p->fixture_count || o->drag_object >= p->project.object_count)
         return;
     const app_fixture *f = &p->fixtures[k];
+    if (hypot(f->centre[0] - o->drag_mm[0], f->centre[1] - o->drag_mm[1]) <= 1)
+        return; /* a click, not a drag: the release leaves it where it is */
     const app_object *ob = &p->project.objects[o->drag_object];
     app_pose in = {ui_plan_snap_grid(ob->position_mm[0] + o->drag_mm[0] - f->centre[0], GRID_MM),
                    ui_plan_snap_grid(ob->position_mm[1] + o->drag_mm[1] - f->centre[1], GRID_MM),
