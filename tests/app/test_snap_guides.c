@@ -1,7 +1,8 @@
 /* The drag's snap preview (app/design/snap_guides.h) on the designed demo: it lands where the
  * drag's `move ... snap wall corner neighbour` edit lands, draws the wall and corner guides,
  * and measures the box's clear distances to the walls; away from every wall it moves freely
- * with no guides. */
+ * with no guides; beside a neighbour it keeps the 200 mm gap, its guide on the neighbour's
+ * side. */
 #include "test_util.h"
 
 #include "app/design/snap_guides.h"
@@ -76,8 +77,65 @@ static int guides_of(const app_snap_preview *s, app_snap_guide_kind kind)
     return n;
 }
 
+/* A neighbour: in a 3000 x 2500 room, a basin dragged 300 mm beside a WC on the same wall
+ * slides to the 200 mm gap; its left distance is that gap and the neighbour guide runs along
+ * the WC's side. */
+static void neighbour_case(void)
+{
+    app_project p;
+    memset(&p, 0, sizeof p);
+    p.version = p.file_version = 2;
+    p.plan.corner_count = 4;
+    p.plan.corners = calloc(4, sizeof *p.plan.corners);
+    p.plan.corners[1].x = p.plan.corners[2].x = 3000;
+    p.plan.corners[2].y = p.plan.corners[3].y = 2500;
+    p.plan.height_mm = p.room.height_mm = 2500;
+    p.plan.wall_thickness_mm = 120;
+    p.room.width_mm = 3000;
+    p.room.depth_mm = 2500;
+    p.material_count = 1;
+    p.materials = calloc(1, sizeof *p.materials);
+    snprintf(p.materials[0].name, sizeof p.materials[0].name, "default");
+    const char *text = "place Cerana CE413701 WH at 1000 0 0 snap wall as wc\n"
+                       "place Cerana CE410401 WH at 2200 0 680 snap wall as basin\n";
+    app_history *h = app_history_create(0);
+    app_script_env env = {ptc_lookup, (void *)csv, NULL, NULL};
+    char err[1024] = "";
+    CHECK_MSG(app_script_run(&p, h, text, strlen(text), "test.edit", &env, NULL, err, sizeof err) ==
+                  APP_OK,
+              "%s", err);
+    app_fixture *fx = NULL;
+    int n = 0;
+    CHECK_MSG(app_placement_fixtures(&p, ptc_lookup, (void *)csv, &fx, &n, err, sizeof err) ==
+                  APP_OK,
+              "%s", err);
+    int wc = object_named(&p, "wc"), basin = object_named(&p, "basin");
+    int kw = fixture_of(fx, n, wc), kb = fixture_of(fx, n, basin);
+    CHECK(kw >= 0 && kb >= 0);
+    if (kw >= 0 && kb >= 0) {
+        double wc_right = fx[kw].centre[0] + fx[kw].half[0];
+        app_pose in = {wc_right + 300 + fx[kb].half[0], 0, 680, 0};
+        app_snap_preview s;
+        app_snap_preview_of(&p, fx, n, kb, in, &s);
+        CHECK_MSG(s.wall == 0 && s.neighbour == wc, "wall %d neighbour %d", s.wall, s.neighbour);
+        CHECK_NEAR(s.pose.x, wc_right + 200 + fx[kb].half[0], 1e-6);
+        CHECK(s.sides[APP_SNAP_LEFT].found);
+        CHECK_NEAR(s.sides[APP_SNAP_LEFT].mm, 200, 1e-6);
+        CHECK(guides_of(&s, APP_SNAP_GUIDE_NEIGHBOUR) == 1);
+        for (int g = 0; g < s.guide_count; g++)
+            if (s.guides[g].kind == APP_SNAP_GUIDE_NEIGHBOUR) {
+                CHECK_NEAR(s.guides[g].a[0], wc_right, 1e-6);
+                CHECK_NEAR(s.guides[g].b[0], wc_right, 1e-6);
+            }
+    }
+    free(fx);
+    app_history_destroy(h);
+    app_project_free_all(&p);
+}
+
 int main(void)
 {
+    neighbour_case();
     app_snap_preview s;
     double at[3], rot;
 

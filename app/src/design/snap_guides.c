@@ -82,15 +82,17 @@ static void measure(const app_project *p, const app_fixture *fx, int count, cons
     out->mm = t;
 }
 
-/* A guide along the box's side (sign -1 left, +1 right) from the back face to beyond the
+/* A guide parallel to the box's side (sign -1 left, +1 right), `beyond` mm out from it (the
+ * neighbour's edge the gap away, 0: the side itself), from the back face to beyond the
  * front. */
-static app_snap_guide side_guide(const app_snap_preview *s, int sign, app_snap_guide_kind kind)
+static app_snap_guide side_guide(const app_snap_preview *s, int sign, double beyond,
+                                 app_snap_guide_kind kind)
 {
     double a = s->angle_deg * M_PI / 180;
     double ax[2] = {cos(a), sin(a)}, ay[2] = {-sin(a), cos(a)};
     app_snap_guide g = {.kind = kind};
     for (int k = 0; k < 2; k++) {
-        double side = s->centre[k] + sign * s->half[0] * ax[k];
+        double side = s->centre[k] + sign * (s->half[0] + beyond) * ax[k];
         g.a[k] = side - s->half[1] * ay[k];
         g.b[k] = side + (s->half[1] + GUIDE_REACH_MM) * ay[k];
     }
@@ -196,8 +198,8 @@ void app_snap_preview_of(const app_project *p, const app_fixture *fx, int count,
     free(skip);
     free(members);
 
-    /* The guides: the face the back stands on, then the side lined up with what it snapped
-     * to (the side whose clear distance is the snap's). */
+    /* The guides: the face the back stands on, then the side lined up with the corner, and the
+     * neighbour's edge the gap away (on the side whose clear distance is the snap's). */
     pl_face face;
     if (out->wall >= 0 && pl_face_of_pose(pl, pose, &face) >= 0) {
         app_snap_guide *g = &out->guides[out->guide_count++];
@@ -208,8 +210,10 @@ void app_snap_preview_of(const app_project *p, const app_fixture *fx, int count,
         }
     }
     if (out->corner)
-        out->guides[out->guide_count++] = side_guide(out, side_at(out, 0), APP_SNAP_GUIDE_CORNER);
+        out->guides[out->guide_count++] =
+            side_guide(out, side_at(out, 0), 0, APP_SNAP_GUIDE_CORNER);
     if (out->neighbour >= 0)
         out->guides[out->guide_count++] =
-            side_guide(out, side_at(out, APP_SNAP_NEIGHBOUR_GAP_MM), APP_SNAP_GUIDE_NEIGHBOUR);
+            side_guide(out, side_at(out, APP_SNAP_NEIGHBOUR_GAP_MM), APP_SNAP_NEIGHBOUR_GAP_MM,
+                       APP_SNAP_GUIDE_NEIGHBOUR);
 }
