@@ -98,6 +98,21 @@ static int locate_eye(planner *p)
     return 0;
 }
 
+/* Where plan point "X Y" (mm) shows in the plan view. */
+static int locate_plan_point(planner *p, const char *xy)
+{
+    double x, y;
+    if (p->view != UI_VIEW_PLAN || sscanf(xy, "%lf %lf", &x, &y) != 2) {
+        snprintf(p->status, sizeof p->status,
+                 "locate plan X Y needs the plan view and two numbers");
+        return 1;
+    }
+    float sx, sy;
+    ui_plan_to_screen(&p->plan_t, x, y, &sx, &sy);
+    fprintf(stderr, "tessera: locate plan %.0f %.0f at %.0f %.0f\n", x, y, sx, sy);
+    return 0;
+}
+
 /* The box around the selection's outline in the 3D view (selection_3d.c). */
 static int locate_selection(planner *p)
 {
@@ -154,9 +169,13 @@ int planner_input_action(planner *p, const ui_action *a)
             return locate_box(p, a->text + 4);
         if (!strcmp(a->text, "eye"))
             return locate_eye(p);
+        if (!strncmp(a->text, "handle ", 7))
+            return planner_handles_locate(p, a->text + 7);
+        if (!strncmp(a->text, "plan ", 5))
+            return locate_plan_point(p, a->text + 5);
         snprintf(p->status, sizeof p->status,
-                 "locate widget LABEL, locate fixture NAME, locate box NAME, locate eye or "
-                 "locate selection");
+                 "locate widget LABEL, fixture NAME, box NAME, eye, selection, handle NAME or "
+                 "plan X Y");
         return 1;
     }
     return 0; /* wait-file runs in planner_wait_file */

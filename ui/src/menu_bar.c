@@ -17,6 +17,7 @@ static const char *const shortcuts[][2] = {
     {"Ctrl+Z", "Edit > Undo"},
     {"Ctrl+Y, Ctrl+Shift+Z", "Edit > Redo"},
     {"Delete", "Edit > Delete the selected fixture"},
+    {"Ctrl+R", "Edit > Rotate the selected fixture by 90 degrees"},
     {"V", "View > Switch plan / 3D"},
     {"Tab", "View > Walk (else orbit)"},
     {"F1 .. F9", "View > Viewpoints: fly to viewpoint 1 .. 9"},
@@ -103,7 +104,8 @@ static void edit_menu(planner *p)
     ui_gui_separator();
     if (ui_gui_menu_item("Delete the selected fixture", "Delete", -1, has_selection(p)))
         planner_delete_selected(p);
-    if (ui_gui_menu_item("Rotate the selected fixture by 90 degrees", NULL, -1, has_selection(p)))
+    if (ui_gui_menu_item("Rotate the selected fixture by 90 degrees", "Ctrl+R", -1,
+                         has_selection(p)))
         planner_rotate_selected(p);
     ui_gui_end_menu();
 }

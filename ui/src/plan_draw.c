@@ -2,10 +2,12 @@
  * tiler would recognise, north up, walls hatched dark, free areas dashed blue, findings red. */
 #include "plan_draw.h"
 
+#include "app/project/commands.h"
 #include "gui.h"
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define DEG (3.14159265358979323846 / 180.0)
@@ -185,10 +187,10 @@ static void draw_prewalls(const ui_plan_transform *t, const app_project *p,
     }
 }
 
-static void rect_corners(const app_fixture *f, double cx, double cy, double hw, double hd,
-                         double off_y, const ui_plan_transform *t, float xy[8])
+static void rect_corners(double angle_deg, double cx, double cy, double hw, double hd, double off_y,
+                         const ui_plan_transform *t, float xy[8])
 {
-    double c = cos(f->angle_deg * DEG), s = sin(f->angle_deg * DEG);
+    double c = cos(angle_deg * DEG), s = sin(angle_deg * DEG);
     static const double sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
     for (int k = 0; k < 4; k++) {
         double lx = sx[k] * hw, ly = sy[k] * hd + off_y;
@@ -203,18 +205,68 @@ static void outline(const float xy[8], unsigned colour, float thickness)
                          thickness);
 }
 
-static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx,
+/* The dragged fixture's motion in the plan: its object's position goes from `from` to `to` and
+ * it turns by `turn_deg` about it (the snap preview's pose, else the pointer's translation);
+ * what is mounted on it moves along, as the release's move edit takes it along. */
+typedef struct drag_motion {
+    int active;
+    double from[2], to[2], turn_deg;
+    int *members; /* the dragged object and its group, by object index (1: moves) */
+} drag_motion;
+
+static drag_motion motion_of(const app_project *p, const app_fixture *fx, int n,
+                             const ui_plan_overlay *o)
+{
+    drag_motion m = {0};
+    const app_fixture *d = NULL;
+    for (int i = 0; i < n && !d; i++)
+        d = fx[i].object == o->drag_object ? &fx[i] : NULL;
+    if (!d || o->drag_object >= p->object_count)
+        return m;
+    const double *at = p->objects[o->drag_object].position_mm;
+    m.from[0] = at[0];
+    m.from[1] = at[1];
+    m.to[0] = at[0] + o->drag_mm[0] - d->centre[0];
+    m.to[1] = at[1] + o->drag_mm[1] - d->centre[1];
+    if (o->snap_shown) {
+        m.to[0] = o->snap.pose.x;
+        m.to[1] = o->snap.pose.y;
+        m.turn_deg = o->snap.angle_deg - d->angle_deg;
+    }
+    m.members = calloc((size_t)p->object_count, sizeof *m.members);
+    int *list = malloc((size_t)p->object_count * sizeof *list);
+    if (m.members && list) {
+        int k = app_group_members(p, o->drag_object, list);
+        for (int j = 0; j < k; j++)
+            m.members[list[j]] = 1;
+    }
+    free(list);
+    if (m.members)
+        m.members[o->drag_object] = 1;
+    m.active = 1;
+    return m;
+}
+
+static void draw_fixtures(const ui_plan_transform *t, const app_project *p, const app_fixture *fx,
                           const app_free_area *areas, int n, const ui_plan_overlay *o)
 {
+    drag_motion m = motion_of(p, fx, n, o);
+    double c = cos(m.turn_deg * DEG), s = sin(m.turn_deg * DEG);
     for (int i = 0; i < n; i++) {
         const app_fixture *f = &fx[i];
-        double cx = f->centre[0], cy = f->centre[1];
-        if (f->object == o->drag_object) {
-            cx = o->drag_mm[0];
-            cy = o->drag_mm[1];
+        double cx = f->centre[0], cy = f->centre[1], angle = f->angle_deg;
+        int moves =
+            m.active &&
+            (f->object == o->drag_object ||
+             (m.members && f->object >= 0 && f->object < p->object_count && m.members[f->object]));
+        if (moves) { /* where the release will put it */
+            double rx = cx - m.from[0], ry = cy - m.from[1];
+            cx = m.to[0] + rx * c - ry * s;
+            cy = m.to[1] + rx * s + ry * c;
+            angle += m.turn_deg;
         }
         float xy[8];
-        if (areas && areas[i].has_area) {
+        if (areas && areas[i].has_area && fabs(angle - f->angle_deg) < 0.5) {
             /* Where the checks placed it (app_free_areas), so the drawing shows what was
              * checked; a fixture being dragged carries its area along until it is dropped and
              * checked again. */
@@ -223,18 +275,19 @@ static void draw_fixtures(const ui_plan_transform *t, const app_fixture *fx,
                 to_screen(t, areas[i].corners[k][0] + dx, areas[i].corners[k][1] + dy, &xy[2 * k]);
             outline(xy, rgba(60, 120, 220, 160), 1.0f);
         }
-        rect_corners(f, cx, cy, f->half[0], f->half[1], 0, t, xy);
+        rect_corners(angle, cx, cy, f->half[0], f->half[1], 0, t, xy);
         int sel = f->object == o->selected_object;
         ui_gui_draw_quad_filled(xy, sel              ? rgba(250, 215, 150, 255)
                                     : f->has_product ? rgba(255, 255, 255, 255)
                                                      : rgba(225, 225, 220, 255));
         outline(xy, sel ? rgba(220, 110, 0, 255) : rgba(30, 30, 30, 255), sel ? 2.5f : 1.2f);
-        float c[2];
-        to_screen(t, cx, cy, c);
+        float label[2];
+        to_screen(t, cx, cy, label);
         if (t->px_per_mm * 2 * f->half[0] > 60)
-            ui_gui_draw_text(c[0] - 3.5f * (float)strlen(f->name), c[1] - 7, rgba(40, 40, 40, 255),
-                             f->name);
+            ui_gui_draw_text(label[0] - 3.5f * (float)strlen(f->name), label[1] - 7,
+                             rgba(40, 40, 40, 255), f->name);
     }
+    free(m.members);
 }
 
 static void draw_findings(const ui_plan_transform *t, const app_findings *f)
@@ -251,6 +304,56 @@ static void draw_findings(const ui_plan_transform *t, const app_findings *f)
     }
 }
 
+/* A dashed line, DASH_PX on and GAP_PX off in window pixels whatever the zoom. */
+static void dashed(const ui_plan_transform *t, const double a[2], const double b[2],
+                   unsigned colour)
+{
+    enum { DASH_PX = 8, GAP_PX = 5 };
+    float s0[2], s1[2];
+    to_screen(t, a[0], a[1], s0);
+    to_screen(t, b[0], b[1], s1);
+    float len = hypotf(s1[0] - s0[0], s1[1] - s0[1]);
+    for (float d = 0; d < len; d += DASH_PX + GAP_PX) {
+        float e = fminf(d + DASH_PX, len), u0 = d / len, u1 = e / len;
+        ui_gui_draw_line(s0[0] + u0 * (s1[0] - s0[0]), s0[1] + u0 * (s1[1] - s0[1]),
+                         s0[0] + u1 * (s1[0] - s0[0]), s0[1] + u1 * (s1[1] - s0[1]), colour, 1.5f);
+    }
+}
+
+/* A dimension line with end ticks and its length in mm written at its middle on a white
+ * ground, as a drawing dimensions a clearance. */
+static void dimension(const ui_plan_transform *t, const app_snap_dimension *d, unsigned colour)
+{
+    float a[2], b[2];
+    to_screen(t, d->a[0], d->a[1], a);
+    to_screen(t, d->b[0], d->b[1], b);
+    float len = hypotf(b[0] - a[0], b[1] - a[1]);
+    float nx = len > 0 ? -(b[1] - a[1]) / len * 5 : 0, ny = len > 0 ? (b[0] - a[0]) / len * 5 : 5;
+    ui_gui_draw_line(a[0], a[1], b[0], b[1], colour, 1.5f);
+    ui_gui_draw_line(a[0] - nx, a[1] - ny, a[0] + nx, a[1] + ny, colour, 1.5f);
+    ui_gui_draw_line(b[0] - nx, b[1] - ny, b[0] + nx, b[1] + ny, colour, 1.5f);
+    char label[32];
+    snprintf(label, sizeof label, "%.0f", d->mm);
+    float w = ui_gui_text_width(label), mx = 0.5f * (a[0] + b[0]), my = 0.5f * (a[1] + b[1]);
+    float bg[8] = {mx - w / 2 - 3, my - 9, mx + w / 2 + 3, my - 9,
+                   mx + w / 2 + 3, my + 9, mx - w / 2 - 3, my + 9};
+    ui_gui_draw_quad_filled(bg, rgba(255, 255, 255, 235));
+    ui_gui_draw_text(mx - w / 2, my - 7, colour, label);
+}
+
+/* The dragged fixture's snap: the wall face and the corner or neighbour it lines up with,
+ * dashed, and its clear distances to the left, right and front. */
+static void draw_snap(const ui_plan_transform *t, const ui_plan_overlay *o)
+{
+    if (!o->snap_shown)
+        return;
+    for (int g = 0; g < o->snap.guide_count; g++)
+        dashed(t, o->snap.guides[g].a, o->snap.guides[g].b, UI_PLAN_GUIDE_COLOUR);
+    for (int s = 0; s < APP_SNAP_SIDES; s++)
+        if (o->snap.sides[s].found)
+            dimension(t, &o->snap.sides[s], UI_PLAN_GUIDE_COLOUR);
+}
+
 void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fixture *fx,
                   const app_free_area *areas, int fixture_count, const app_findings *findings,
                   const ui_plan_overlay *o)
@@ -261,10 +364,11 @@ void ui_plan_draw(const ui_plan_transform *t, const app_project *p, const app_fi
     if (p->plan.corner_count < 3)
         return;
     draw_prewalls(t, p, o);
-    draw_fixtures(t, fx, areas, fixture_count, o);
+    draw_fixtures(t, p, fx, areas, fixture_count, o);
     draw_walls(t, p, o);
     draw_openings(t, p, o);
     draw_findings(t, findings);
+    draw_snap(t, o);
     /* A scale bar of one metre. */
     float x0 = t->x0 + 20, y0 = t->y0 + t->height - 20, len = (float)(1000 * t->px_per_mm);
     ui_gui_draw_line(x0, y0, x0 + len, y0, rgba(20, 20, 20, 255), 2.0f);

@@ -183,6 +183,10 @@ static int frame(planner *p)
         if (vw > 0)
             planner_selection_3d(p);
         if (vw > 0)
+            planner_handles_3d(p);
+        if (vw > 0)
+            planner_snap_guides_3d(p);
+        if (vw > 0)
             planner_findings_3d(p, fw, fh);
         if (vw > 0)
             planner_live_overlay(p, pane);

@@ -161,6 +161,14 @@ typedef struct planner {
 
     /* A placed fixture dragged in the 3D view (fixture_drag.c). */
     ui_fixture_drag fixture_drag;
+    /* A move or rotate handle held in the 3D view (handles_3d.c). */
+    struct {
+        int active;
+        int kind;        /* ui_handle (handle_geometry.h) */
+        double plane_z;  /* the height the pointer is followed on, mm */
+        double grab[2];  /* the plan point grabbed on it */
+        double turn_deg; /* a ring drag's turn, whole 15-degree steps */
+    } handle_drag;
 
     /* File dialogs, recent files and long jobs (planner_actions.c), made on first use. */
     struct planner_files *files;
@@ -271,6 +279,18 @@ void planner_findings_3d(planner *p, int width, int height);
  * pixels x0 y0 x1 y1 around that outline inside the pane (0 when none shows). */
 void planner_selection_3d(planner *p);
 int planner_selection_3d_bounds(const planner *p, float bounds[4]);
+/* handles_3d.c: the selected fixture's move arrows and rotation ring over the 3D view. press
+ * grabs the handle under window pixel (sx, sy) (1) or none (0); pointer follows the pointer;
+ * release commits the move or the turn (one edit, one undo step). locate logs where a
+ * handle (move-x, move-y, rotate) is grabbed and where a drag of it goes (scripts). */
+void planner_handles_3d(planner *p);
+int planner_handles_press(planner *p, double sx, double sy);
+void planner_handles_pointer(planner *p, double sx, double sy);
+int planner_handles_dragging(const planner *p);
+void planner_handles_release(planner *p);
+int planner_handles_locate(planner *p, const char *name);
+/* snap_guides_3d.c: a 3D drag's snap guides and distance labels at the fixture's foot. */
+void planner_snap_guides_3d(planner *p);
 /* "STEM-N" with the smallest N no opening, pre-wall or niche of the plan is named (a static
  * buffer, valid until the next call). */
 const char *planner_unique_name(const planner *p, const char *stem);

@@ -3,7 +3,8 @@
  * (shift: 2.5 m/s), Tab switches orbit and walk, 1-4 pick the quality, F1-F9 fly to stored
  * viewpoints, V switches the 3D and the plan view, Ctrl+Z undo, Ctrl+Y (or Ctrl+Shift+Z) redo,
  * Ctrl+O, Ctrl+S, Ctrl+Shift+S,
- * Ctrl+P, Ctrl+E and Esc as planner_actions.h says, Delete removes the selected fixture.
+ * Ctrl+P, Ctrl+E and Esc as planner_actions.h says, Delete removes the selected fixture, Ctrl+R
+ * turns it by 90 degrees.
  * Presentation: P shows or hides the UI, T starts or stops the tour, R the turntable, F11
  * fullscreen, F12 a print-quality screenshot. The events come from the frame's share of the input
  * queue (gui.h, input_queue.h): Dear ImGui sees every one of them; the planner acts only on those
@@ -50,6 +51,8 @@ static void on_key(planner *p, int key, int mods)
         planner_undo(p, (mods & GLFW_MOD_SHIFT) != 0);
     else if (ctrl && key == GLFW_KEY_Y)
         planner_undo(p, 1);
+    else if (ctrl && key == GLFW_KEY_R)
+        planner_rotate_selected(p); /* 90 degrees, as Edit > Rotate */
     else if (ctrl)
         return; /* Ctrl+A, Ctrl+C, ... are the widgets' */
     else if (key == GLFW_KEY_V)
@@ -139,15 +142,19 @@ static void drag_3d_view(planner *p)
     int down = ui_gui_mouse_down(GLFW_MOUSE_BUTTON_LEFT);
     if (down && !p->dragging && !ui_gui_wants_mouse()) {
         p->dragging = 1;
-        /* A press on a fixture (orbit mode) drags it; elsewhere it turns the view. */
-        if (p->mode == UI_MODE_ORBIT && !p->presenting)
+        /* A press on the selection's handles moves or turns it, on a fixture (orbit mode)
+         * drags it; elsewhere it turns the view. */
+        if (p->mode == UI_MODE_ORBIT && !p->presenting && !planner_handles_press(p, x, y))
             planner_fixture_drag_press(p, x, y);
     } else if (!down) {
+        planner_handles_release(p);
         if (p->fixture_drag.active && p->fixture_drag.by_pointer)
             planner_fixture_drag_end(p, 1);
         p->dragging = 0;
     }
-    if (p->fixture_drag.active && p->fixture_drag.by_pointer)
+    if (planner_handles_dragging(p))
+        planner_handles_pointer(p, x, y);
+    else if (p->fixture_drag.active && p->fixture_drag.by_pointer)
         planner_fixture_drag_pointer(p, x, y);
     else if (p->dragging) {
         double dx = x - p->mouse_x, dy = y - p->mouse_y;

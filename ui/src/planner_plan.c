@@ -234,6 +234,43 @@ const char *planner_unique_name(const planner *p, const char *stem)
     return name;
 }
 
+/* The dragged fixture's snap preview (app/design/snap_guides.h) from the pose the release's
+ * edit will ask for (planner_drag_object). While a script runs, each new preview is logged:
+ * tests that drag with real events read the labels back. */
+static void update_snap_preview(planner *p)
+{
+    ui_plan_overlay *o = &p->plan_o;
+    o->snap_shown = 0;
+    int k = 0;
+    while (k < p->fixture_count && p->fixtures[k].object != o->drag_object)
+        k++;
+    if (k == p->fixture_count || o->drag_object >= p->project.object_count)
+        return;
+    const app_fixture *f = &p->fixtures[k];
+    if (hypot(f->centre[0] - o->drag_mm[0], f->centre[1] - o->drag_mm[1]) <= 1)
+        return; /* a click, not a drag: the release leaves it where it is */
+    const app_object *ob = &p->project.objects[o->drag_object];
+    app_pose in = {ui_plan_snap_grid(ob->position_mm[0] + o->drag_mm[0] - f->centre[0], GRID_MM),
+                   ui_plan_snap_grid(ob->position_mm[1] + o->drag_mm[1] - f->centre[1], GRID_MM),
+                   ob->position_mm[2], ob->rotation_deg[2]};
+    app_snap_preview_of(&p->project, p->fixtures, p->fixture_count, k, in, &o->snap);
+    o->snap_shown = 1;
+    if (!p->script.count)
+        return;
+    static char last[256];
+    char line[256], side[3][16];
+    const app_snap_preview *s = &o->snap;
+    for (int i = 0; i < APP_SNAP_SIDES; i++)
+        snprintf(side[i], sizeof side[i], s->sides[i].found ? "%.0f" : "-", s->sides[i].mm);
+    snprintf(line, sizeof line, "wall %d%s%s; left %s right %s front %s; box %.0f x %.0f", s->wall,
+             s->corner ? " corner" : "", s->neighbour >= 0 ? " neighbour" : "", side[0], side[1],
+             side[2], 2 * s->half[0], 2 * s->half[1]);
+    if (strcmp(line, last)) {
+        fprintf(stderr, "tessera: snap \"%s\" %s\n", ob->name, line);
+        snprintf(last, sizeof last, "%s", line);
+    }
+}
+
 static void handle_plan_input(planner *p)
 {
     double mx, my;
@@ -292,6 +329,7 @@ static void handle_plan_input(planner *p)
         } else if (o->drag_object >= 0) {
             o->drag_mm[0] = x - p->drag_start_mm[0];
             o->drag_mm[1] = y - p->drag_start_mm[1];
+            update_snap_preview(p);
         } else if (o->wall_dragging) {
             o->drag_wall_mm = ui_plan_snap_grid(ui_plan_wall_offset(&p->project.plan, o->drag_wall,
                                                                     x - p->drag_start_mm[0],
@@ -319,7 +357,7 @@ static void handle_plan_input(planner *p)
             planner_move_wall(p, o->drag_wall, o->drag_wall_mm);
         }
         o->drag_corner = o->drag_object = -1;
-        o->wall_dragging = 0;
+        o->wall_dragging = o->snap_shown = 0;
     }
     p->mouse_x = mx;
     p->mouse_y = my;

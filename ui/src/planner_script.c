@@ -285,6 +285,15 @@ static int apply(planner *p, const ui_action *a)
     return 0;
 }
 
+/* 1 while the hand holds a drag (an outside driver pressed and has not let go): a script action
+ * run meanwhile, such as a screenshot of the drag, leaves it held. */
+static int pointer_drag_held(const planner *p)
+{
+    const ui_plan_overlay *o = &p->plan_o;
+    return o->drag_object >= 0 || o->drag_corner >= 0 || o->wall_dragging ||
+           p->handle_drag.active || (p->fixture_drag.active && p->fixture_drag.by_pointer);
+}
+
 int planner_script_step(planner *p)
 {
     if (p->action >= p->script.count)
@@ -292,7 +301,8 @@ int planner_script_step(planner *p)
     const ui_action *a = &p->script.actions[p->action];
     if (a->kind == UI_ACT_WAIT_FILE) /* the hand drives the window meanwhile */
         return planner_wait_file(p, a);
-    p->dragging = 0;
+    if (!pointer_drag_held(p))
+        p->dragging = 0;
     /* wait N spreads nothing over N frames; every other action takes at least one. */
     int frames = a->kind == UI_ACT_WAIT ? (int)a->a : a->frames;
     int r = frames > 0 ? apply(p, a) : 0;

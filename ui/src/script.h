@@ -71,6 +71,10 @@
  *   locate eye             log the view's eye in plan mm and the camera mode (walk|orbit)
  *   locate selection       log the window-pixel box around the selection's outline in the
  *                          3D view (selection_3d.c), or that none shows
+ *   locate handle NAME     log where the selection's move-x, move-y or rotate handle in the 3D
+ *                          view is grabbed and where a drag of it goes: 500 mm along an arrow,
+ *                          52 degrees round the ring (handles_3d.c)
+ *   locate plan X Y        log where plan point X Y (mm) shows in the plan view
  *   pick NAME              select a fixture by its object's name, as a click on it in the
  *                          plan or the 3D view does ("-": clear the selection)
  *   expect-search TEXT...  fail unless the catalog browser's search field holds exactly TEXT

@@ -5,6 +5,7 @@
 #include "planner.h"
 
 #include "gui.h"
+#include "handle_geometry.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -39,13 +40,18 @@ static const char *mode_name(int mode)
 
 const char *planner_tool_hint(const planner *p)
 {
+    if (p->handle_drag.active && p->handle_drag.kind == UI_HANDLE_ROTATE)
+        return "turning the fixture by 15-degree steps: let go to turn it (one undo step)";
+    if (p->handle_drag.active)
+        return "moving the fixture along the arrow: let go to place it (one undo step)";
     if (p->fixture_drag.active)
         return "moving the fixture: let go to place it (one undo step)";
     if (p->drop.active)
         return "release over the plan or the 3D view to place the product";
     switch (current_mode(p)) {
     case 0:
-        return "drag: orbit, wheel: zoom, drag a fixture: move it, Tab: walk";
+        return "drag: orbit, wheel: zoom, drag a fixture or an arrow: move it, the ring: turn "
+               "it, Tab: walk";
     case 1:
         return "W A S D: walk (Shift: faster), drag: look, Tab: orbit";
     case 2:

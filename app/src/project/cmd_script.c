@@ -1,5 +1,6 @@
 /* Edit scripts: one command per line, replayed through an app_history (`tessera edit`). The
  * format is documented in docs/editing.md; every error names the script line. */
+#include "app/design/snap_guides.h"
 #include "app/project/commands.h"
 #include "cmd_internal.h" /* cmd_probe_words */
 
@@ -336,6 +337,7 @@ static int snap(sctx *c, int from, double width, double depth, int self, app_pos
                                        c->env ? c->env->user : NULL, &fx, &n, err,
                                        sizeof err) != APP_OK)
                 return fail(c, "%s: %s", c->tok[0], err);
+            n = app_fixtures_without_group(c->p, self, fx, n); /* it moves with them */
             app_snap_to_neighbour(fx, n, self, width, depth, *pose, SNAP_NEIGHBOUR_MM,
                                   NEIGHBOUR_GAP_MM, &out);
             free(fx);
