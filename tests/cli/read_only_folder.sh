@@ -2,22 +2,31 @@
 # Writing into a folder the user may not write: every writer exits non-zero with a message that
 # names the file (or folder) and the reason, and leaves nothing in the folder; an existing file
 # there keeps its bytes. The catalog in such a folder is still searched (read-only).
-# Tests run as root, who writes into any folder, so the commands run as user 65534 (nobody)
-# through setpriv (util-linux). A broken expectation exits 99 with the reason; a machine without
-# setpriv or that user, or whose build tree that user cannot read, exits 77 (ctest: skipped).
+# Root writes into any folder, so under root the commands run as user 65534 (nobody) through
+# setpriv (util-linux), in a folder root owns (mode 0755); any other user runs them itself in
+# a folder of mode 0555. A broken expectation exits 99 with the reason; under root, a machine
+# without setpriv or that user, or whose build tree that user cannot read, exits 77 (ctest:
+# skipped).
 # usage: read_only_folder.sh TESSERA DATA DIR
 tessera=$1 data=$2 dir=$3
 fail() { echo "read_only_folder.sh: $*" >&2; exit 99; }
 skip() { echo "read_only_folder.sh: skipped: $*"; exit 77; }
-uid=65534
-command -v setpriv >/dev/null 2>&1 || skip "no setpriv (util-linux) to run as an unprivileged user"
-getent passwd $uid >/dev/null 2>&1 || skip "no user $uid"
-[ "$(id -u)" -eq 0 ] || skip "not run as root: setpriv cannot change the user"
+uid=$(id -u)
+if [ "$uid" -eq 0 ]; then
+    uid=65534
+    command -v setpriv >/dev/null 2>&1 || skip "no setpriv (util-linux) to run as an unprivileged user"
+    getent passwd $uid >/dev/null 2>&1 || skip "no user $uid"
+    run_as() { setpriv --reuid=$uid --regid=$uid --clear-groups "$@"; }
+    ro_mode=0755
+else
+    run_as() { "$@"; }
+    ro_mode=0555
+fi
+[ -d "$dir" ] && chmod -R u+w "$dir" 2>/dev/null
 rm -rf "$dir" && mkdir -p "$dir/ro" "$dir/home" || fail "cannot make $dir"
 as_user() {
-    setpriv --reuid=$uid --regid=$uid --clear-groups env HOME="$dir/home" \
-        XDG_CACHE_HOME="$dir/home" XDG_STATE_HOME="$dir/home" XDG_CONFIG_HOME="$dir/home" \
-        TESSERA_CATALOG="$dir/home/catalog.sqlite" "$@"
+    run_as env HOME="$dir/home" XDG_CACHE_HOME="$dir/home" XDG_STATE_HOME="$dir/home" \
+        XDG_CONFIG_HOME="$dir/home" TESSERA_CATALOG="$dir/home/catalog.sqlite" "$@"
 }
 as_user test -x "$tessera" -a -r "$data/minimal.json" ||
     skip "user $uid cannot run $tessera or read $data (a private build tree)"
@@ -29,7 +38,8 @@ TESSERA_CATALOG="$dir/home/catalog.sqlite" "$tessera" catalog info >/dev/null 2>
 cp "$dir/home/catalog.sqlite" "$dir/ro/catalog.sqlite" || fail "cannot copy the catalog"
 cp "$data/edit-room.json" "$dir/ro/project.json" && cp "$dir/ro/project.json" "$dir/good.json" ||
     fail "cannot copy the project"
-chown -R $uid:$uid "$dir/home" && chmod 0755 "$dir/ro" && chmod 0644 "$dir/ro/"* ||
+{ [ "$(id -u)" -ne 0 ] || chown -R $uid:$uid "$dir/home"; } && chmod 0644 "$dir/ro/"* &&
+    chmod $ro_mode "$dir/ro" ||
     fail "cannot set the owners"
 p="$dir/home/minimal.json"
 
