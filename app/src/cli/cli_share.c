@@ -247,12 +247,17 @@ int cli_cmd_share(const cli_options *o)
         rc = run(cli_cmd_panorama, "panorama", &r);
         uint8_t *jpeg = NULL;
         size_t n = 0;
+        /* A panorama that cannot be written fails the share (a full disk must not leave a
+         * folder that looks complete without it). */
+        snprintf(err, sizeof err, "%.900s: cannot read the panorama back", pano);
         if (!rc && !read_file(pano, &jpeg, &n) &&
             app_share_write_panorama(dir, jpeg, n, "image/jpeg", err, sizeof err) == APP_OK &&
             app_share_copy_viewer(dir, app_placement_assets_dir(), err, sizeof err) == APP_OK)
             has_pano = 1;
-        else if (!rc)
+        else if (!rc) {
             fprintf(stderr, "tessera share: %s\n", err);
+            rc = 1;
+        }
         free(jpeg);
     }
     /* 3. the print set, its pages also as SVG for the page */
