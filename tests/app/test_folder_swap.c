@@ -1,16 +1,31 @@
 /* A folder replaced whole (app/output/folder_swap.h): a new folder, an old one replaced with
  * nothing of it left, a discarded write leaving the old folder as it was, a file in the way,
- * and a symbolic link to a folder kept a link. */
-#define _DEFAULT_SOURCE /* mkdtemp, symlink */
+ * a symbolic link to a folder kept a link, and a file system without RENAME_EXCHANGE. */
+#define _GNU_SOURCE /* mkdtemp, symlink, renameat2, syscall */
 #include "../common/check.h"
 #include "app/output/folder_swap.h"
 
 #include <dirent.h>
+#include <errno.h>
+#include <sys/syscall.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+
+/* This definition takes the place of glibc's for the whole program (the executable's symbols
+ * come first), so a file system that refuses RENAME_EXCHANGE can be played. */
+static int no_exchange;
+int renameat2(int olddirfd, const char *oldpath, int newdirfd, const char *newpath,
+              unsigned int flags)
+{
+    if (no_exchange && (flags & RENAME_EXCHANGE)) {
+        errno = EINVAL;
+        return -1;
+    }
+    return (int)syscall(SYS_renameat2, olddirfd, oldpath, newdirfd, newpath, flags);
+}
 
 static void put(const char *dir, const char *name, const char *text)
 {
@@ -100,6 +115,16 @@ int main(void)
     CHECK(lstat(link, &st) == 0 && S_ISLNK(st.st_mode));
     CHECK(has(target, "index.html", "four"));
     CHECK(entries(root) == 3);
+
+    /* No RENAME_EXCHANGE: the old folder moved aside, the new one in, the old one removed. */
+    no_exchange = 1;
+    CHECK(app_folder_swap_begin(&s, target, err, sizeof err) == APP_OK);
+    put(s.temp, "index.html", "five");
+    CHECK_MSG(app_folder_swap_commit(&s, err, sizeof err) == APP_OK, "%s", err);
+    CHECK(has(target, "index.html", "five"));
+    CHECK(entries(target) == 1);
+    CHECK(entries(root) == 3);
+    no_exchange = 0;
 
     CHECK(app_remove_tree(root) == 0);
     CHECK(access(root, F_OK) != 0);
