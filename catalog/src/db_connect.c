@@ -70,7 +70,7 @@ static void forget_statements(cat_db *db)
 
 void catdb_reconnect(cat_db *db)
 {
-    if (!db || !db->sql)
+    if (!db || !db->sql || db->read_only)
         return;
     sqlite3 *fresh = NULL;
     if (catdb_connect(db->path, SQLITE_OPEN_READWRITE, &fresh, NULL, 0) != CAT_DB_OK)

@@ -491,6 +491,15 @@ void cat_import_report_free(cat_import_report *r)
     memset(r, 0, sizeof *r);
 }
 
+/* An import into a catalog opened read-only (cat_catalog_open's fallback) is refused up
+ * front, with the reason the catalog could not be written. */
+static cat_db_result read_only_fail(const cat_db *db, char *err, size_t err_size)
+{
+    return catdb_fail(err, err_size, CAT_DB_ERR_IO,
+                      "%s: cannot import: the catalog could only be opened read-only (%s)",
+                      db->path, db->read_only);
+}
+
 cat_db_result cat_import_csv_buffer(cat_db *db, const char *name, const void *data, size_t size,
                                     const cat_import_desc *desc, cat_import_report *report,
                                     char *err, size_t err_size)
@@ -500,6 +509,8 @@ cat_db_result cat_import_csv_buffer(cat_db *db, const char *name, const void *da
     if (!db || (!data && size))
         return catdb_fail(err, err_size, CAT_DB_ERR_INVALID, "%s: no catalog or no data",
                           name ? name : "(import)");
+    if (db->read_only)
+        return read_only_fail(db, err, err_size);
     catdb_recover(db);
     cat_db_result r =
         catdb_import_buffer(db->sql, db->path, CATDB_ORIGIN_IMPORT, name ? name : "(import)",
@@ -516,6 +527,8 @@ cat_db_result cat_import_csv(cat_db *db, const char *path, const cat_import_desc
         memset(report, 0, sizeof *report);
     if (!db || !path)
         return catdb_fail(err, err_size, CAT_DB_ERR_INVALID, "cat_import_csv: no catalog or path");
+    if (db->read_only)
+        return read_only_fail(db, err, err_size);
     catdb_recover(db);
     unsigned char *data;
     size_t size;

@@ -29,6 +29,7 @@ struct cat_db {
     sqlite3_stmt *known_synonym, *known_word; /* compound splitting (db_compound.c) */
     catdb_query_words *words;                 /* made on first use */
     char *match;                              /* the FTS5 query, made on first use */
+    char *read_only;                          /* why it was opened read-only; NULL: writable */
 };
 
 /* 'TESS': PRAGMA application_id of a Tessera catalog. */

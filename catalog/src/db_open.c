@@ -78,6 +78,66 @@ static void use_wal(sqlite3 *sql)
     sqlite3_exec(sql, "PRAGMA journal_mode = WAL", NULL, NULL, NULL);
 }
 
+/* "file:PATH?immutable=1" (https://sqlite.org/uri.html): '%', '?' and '#' in the path are
+ * percent-encoded, the rest is taken as it is. 0 when it does not fit. */
+static int immutable_uri(const char *path, char *uri, size_t size)
+{
+    size_t n = (size_t)snprintf(uri, size, "file:");
+    for (const unsigned char *c = (const unsigned char *)path; *c && n + 4 < size; c++) {
+        if (*c == '%' || *c == '?' || *c == '#')
+            n += (size_t)snprintf(uri + n, size - n, "%%%02X", *c);
+        else
+            uri[n++] = (char)*c;
+    }
+    uri[n] = 0;
+    return n + sizeof "?immutable=1" <= size &&
+           snprintf(uri + n, size - n, "?immutable=1") == (int)sizeof "?immutable=1" - 1;
+}
+
+/* The catalog when it cannot be opened for writing (a read-only folder, a full disk): a reader
+ * of a WAL database needs the -shm index, which it makes or grows by writing
+ * (https://sqlite.org/wal.html, "Read-Only Databases"). With no -wal file, or an empty one,
+ * every committed page is in the main file (the last connection checkpointed it), so the file
+ * is read as immutable=1, which never touches -wal or -shm. A -wal file with frames holds pages
+ * the main file lacks: then only a plain read-only opening can read it, and that needs -shm.
+ * Catalog writes are refused on such a handle (db->read_only). */
+static cat_db_result open_read_only(const char *path, sqlite3 **out, char *err, size_t err_size)
+{
+    *out = NULL;
+    char wal[4200], uri[13000];
+    snprintf(wal, sizeof wal, "%s-wal", path);
+    struct stat st;
+    int has_wal = stat(wal, &st) == 0 && st.st_size > 0;
+    if (!has_wal && !immutable_uri(path, uri, sizeof uri))
+        return catdb_fail(err, err_size, CAT_DB_ERR_IO, "the path is too long");
+    sqlite3 *sql = NULL;
+    cat_db_result r =
+        catdb_connect(has_wal ? path : uri, SQLITE_OPEN_READONLY | (has_wal ? 0 : SQLITE_OPEN_URI),
+                      &sql, err, err_size);
+    /* Sorts spill to memory, never to a temporary file on the full disk. */
+    if (r == CAT_DB_OK)
+        r = catdb_exec(sql, path, "cannot set up the connection", "PRAGMA temp_store = MEMORY", err,
+                       err_size);
+    int version = 0;
+    if (r == CAT_DB_OK)
+        r = catdb_schema_check(sql, path, &version, err, err_size);
+    if (r == CAT_DB_OK && version < CAT_DB_SCHEMA_VERSION)
+        r = catdb_fail(err, err_size, CAT_DB_ERR_IO,
+                       "its schema %d needs an update to %d, which needs writing", version,
+                       CAT_DB_SCHEMA_VERSION);
+    if (r != CAT_DB_OK && has_wal)
+        r = catdb_fail(err, err_size, r,
+                       "%s holds changes not yet in the catalog file, and reading them needs "
+                       "%s-shm",
+                       wal, path);
+    if (r != CAT_DB_OK) {
+        sqlite3_close(sql);
+        return r;
+    }
+    *out = sql;
+    return CAT_DB_OK;
+}
+
 cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db **out, char *err,
                                size_t err_size)
 {
@@ -107,6 +167,7 @@ cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db 
     }
 
     struct stat st;
+    int existed = 0;
     if (stat(path, &st) != 0) {
         if (errno != ENOENT)
             r = catdb_fail(err, err_size, CAT_DB_ERR_IO, "%s: cannot open the catalog: %s", path,
@@ -118,6 +179,8 @@ cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db 
     } else if (!S_ISREG(st.st_mode)) {
         r = catdb_fail(err, err_size, CAT_DB_ERR_IO, "%s: cannot open the catalog: not a file",
                        path);
+    } else {
+        existed = 1;
     }
     sqlite3 *sql = NULL;
     if (r == CAT_DB_OK)
@@ -139,6 +202,19 @@ cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db 
     if (r == CAT_DB_OK)
         r = catdb_words_check(sql, path, err, err_size);
 
+    /* A file that cannot be written (or whose -shm cannot be made) is still read. */
+    char *read_only = NULL;
+    if (r == CAT_DB_ERR_IO && existed) {
+        sqlite3_close(sql);
+        char why[1024], ro_err[1024] = "";
+        snprintf(why, sizeof why, "%s", err && err_size ? err : "cannot write");
+        r = open_read_only(path, &sql, ro_err, sizeof ro_err);
+        if (r == CAT_DB_OK && !(read_only = strdup(why)))
+            r = catdb_fail(err, err_size, CAT_DB_ERR_OUT_OF_MEMORY, "%s: out of memory", path);
+        else if (r != CAT_DB_OK)
+            r = catdb_fail(err, err_size, CAT_DB_ERR_IO, "%s; read-only: %s", why, ro_err);
+    }
+
     cat_db *db = NULL;
     if (r == CAT_DB_OK) {
         db = calloc(1, sizeof *db);
@@ -152,9 +228,11 @@ cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db 
         if (db)
             free(db->path);
         free(db);
+        free(read_only);
         return r;
     }
     db->sql = sql;
+    db->read_only = read_only;
     *out = db;
     return CAT_DB_OK;
 }
@@ -175,7 +253,13 @@ void cat_db_close(cat_db *db)
     free(db->match);
     sqlite3_close(db->sql);
     free(db->path);
+    free(db->read_only);
     free(db);
+}
+
+const char *cat_db_read_only_reason(const cat_db *db)
+{
+    return db ? db->read_only : NULL;
 }
 
 const char *cat_db_path(const cat_db *db)

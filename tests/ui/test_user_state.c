@@ -203,6 +203,41 @@ static void test_jobs(void)
     s = run_job("echo half > \"$3\"; echo 'it broke' >&2; exit 3\n", out, 0, &progress);
     CHECK(s == UI_JOB_FAILED);
     CHECK(!exists(out) && count_entries(part_dir, "partial") == 0);
+
+    /* A cancelled folder job (tessera share): the folder it was writing beside OUT goes,
+     * another folder of a like name stays. */
+    char share[1300], other[1400];
+    snprintf(share, sizeof share, "%s/share", part_dir);
+    snprintf(other, sizeof other, "%s.tmp-kept", share);
+    mkdir(other, 0700);
+    ui_job_desc d = {.label = "share",
+                     .command = "",
+                     .project = "none.json",
+                     .output = share,
+                     .program = "/bin/sh",
+                     .is_folder = 1};
+    char script[1200], err[256];
+    snprintf(script, sizeof script, "%s/job.sh", root);
+    FILE *f = fopen(script, "w");
+    fprintf(f, "mkdir \"$3.tmp-Ab12Cd\" && echo x > \"$3.tmp-Ab12Cd/index.html\"; sleep 30\n");
+    fclose(f);
+    d.command = script;
+    ui_job *j = ui_job_start(&d, err, sizeof err);
+    CHECK_MSG(j != NULL, "%s", err);
+    ui_job_status st = {0};
+    for (int waited = 0; j && waited < 20000; waited += 10) {
+        usleep(10000);
+        if (waited == 300)
+            ui_job_cancel(j);
+        ui_job_status_get(j, &st);
+        if (st.state != UI_JOB_RUNNING)
+            break;
+    }
+    ui_job_free(j);
+    CHECK_MSG(st.state == UI_JOB_CANCELLED, "state %d", st.state);
+    CHECK_MSG(count_entries(part_dir, "share.tmp-") == 1, "the cancelled share left its folder");
+    CHECK(exists(other));
+    rmdir(other);
 }
 
 int main(void)

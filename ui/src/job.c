@@ -3,6 +3,7 @@
 
 #include "job.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <ftw.h>
@@ -94,6 +95,30 @@ static int remove_entry(const char *path, const struct stat *st, int flag, struc
     (void)ftw;
     remove(path);
     return 0;
+}
+
+/* A folder command stopped midway (cancelled: SIGTERM) leaves the folder it was writing,
+ * OUT.tmp-XXXXXX beside OUT (app/output/folder_swap.h): removed with the job. */
+static void remove_folder_temps(const char *output)
+{
+    const char *slash = strrchr(output, '/');
+    char dir[1100], prefix[1100];
+    snprintf(dir, sizeof dir, "%.*s", slash ? (slash == output ? 1 : (int)(slash - output)) : 1,
+             slash ? output : ".");
+    int n = snprintf(prefix, sizeof prefix, "%s.tmp-", slash ? slash + 1 : output);
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    while (d && n > 0 && (size_t)n < sizeof prefix && (e = readdir(d))) {
+        struct stat st;
+        char path[2300];
+        if (strncmp(e->d_name, prefix, (size_t)n) != 0 || strlen(e->d_name) != (size_t)n + 6)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (lstat(path, &st) == 0 && S_ISDIR(st.st_mode))
+            nftw(path, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+    }
+    if (d)
+        closedir(d);
 }
 
 /* Opens the result in the desktop's viewer without waiting for the viewer: sh starts the
@@ -218,6 +243,8 @@ static void *work(void *arg)
             unlink(j->partial);
         else if (!j->folder_existed)
             nftw(j->output, remove_entry, 16, FTW_DEPTH | FTW_PHYS);
+        if (j->is_folder)
+            remove_folder_temps(j->output);
     }
     if (j->owns_project) {
         char bak[1100], *slash;

@@ -26,8 +26,8 @@ typedef struct ui_job_desc {
     const char *project; /* the project file the command reads (the job deletes it and its
                             folder when done when owns_project) */
     int owns_project;
-    const char *output;      /* the result: a file, or a folder for is_folder */
-    int is_folder;           /* the share folder: written in place, removed on cancel when new */
+    const char *output; /* the result: a file, or a folder for is_folder */
+    int is_folder;      /* the share folder: removed on cancel when new, with its OUT.tmp-XXXXXX */
     const char *const *args; /* further arguments, NULL-terminated (may be NULL) */
     const char *program;     /* the tessera executable (NULL: /proc/self/exe) */
     int open_result;         /* open the result when done */

@@ -236,6 +236,9 @@ int planner_doc_open(planner *p);
 void planner_doc_close(planner *p);
 /* Runs one edit line (docs/editing.md) as one undo step; 0 ok, else the status says why. */
 int planner_edit(planner *p, const char *line);
+/* 1 when the edit line would make a fixture that is inside the room reach through a wall
+ * (planner_edit_guard.c); why gets "NAME would reach through a wall: VERB refused". */
+int planner_edit_reaches_out(planner *p, const char *line, char *why, size_t why_size);
 int planner_undo(planner *p, int redo);
 void planner_doc_changed(planner *p);
 int planner_rebuild_scene(planner *p);

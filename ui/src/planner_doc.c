@@ -140,6 +140,10 @@ int planner_edit(planner *p, const char *line)
                           .user = &p->catalog,
                           .assets_dir = app_placement_assets_dir()};
     char err[1024];
+    if (planner_edit_reaches_out(p, line, err, sizeof err)) {
+        planner_status(p, "%s", err);
+        return 1;
+    }
     if (app_script_run(&p->project, p->history, line, strlen(line), "edit", &env, NULL, err,
                        sizeof err) != APP_OK) {
         planner_status(p, "%s", err);

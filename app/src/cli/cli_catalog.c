@@ -57,6 +57,8 @@ static int open_catalog(const cli_options *o, cat_db **db)
         fprintf(stderr, "tessera: %s\n", err);
         return CLI_FAILED;
     }
+    if (cat_db_read_only_reason(*db))
+        fprintf(stderr, "tessera catalog: opened read-only (%s)\n", cat_db_read_only_reason(*db));
     double ms = cli_now_ms() - t0;
     if (ms > 1000)
         fprintf(stderr, "tessera catalog: opened %s in %.1f s\n", path, ms / 1000);

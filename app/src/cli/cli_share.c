@@ -11,6 +11,7 @@
 #include "app/design/quantities.h"
 #include "app/design/room_surfaces.h"
 #include "app/design/trims.h"
+#include "app/output/folder_swap.h"
 #include "app/output/share.h"
 #include "catalog/catalog.h"
 
@@ -22,6 +23,35 @@
 #include <sys/stat.h>
 
 #define MAX_FILES 64
+
+/* What a share folder holds: an existing folder with anything else in it is not replaced (a
+ * mistyped -o naming a folder of the user's must not be swapped away). */
+static const char *const share_entries[] = {
+    "index.html", "panorama.jpg", "panorama.js", "pano-viewer.js", "print.pdf", "renders", "plan"};
+
+/* 1 when path is missing, or a folder holding only what a share folder holds; else says why. */
+static int replaceable(const char *path)
+{
+    DIR *d = opendir(path);
+    if (!d)
+        return 1; /* missing (or a file: the swap names that) */
+    struct dirent *e;
+    int ok = 1;
+    while (ok && (e = readdir(d))) {
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, ".."))
+            continue;
+        ok = 0;
+        for (size_t i = 0; i < sizeof share_entries / sizeof share_entries[0]; i++)
+            ok |= !strcmp(e->d_name, share_entries[i]);
+        if (!ok)
+            fprintf(stderr,
+                    "tessera share: %s holds %s, which a share folder does not: it is not "
+                    "replaced (give a new folder, an empty one or an earlier share folder)\n",
+                    path, e->d_name);
+    }
+    closedir(d);
+    return ok;
+}
 
 static int make_dir(const char *path)
 {
@@ -174,12 +204,26 @@ int cli_cmd_share(const cli_options *o)
         fprintf(stderr, "tessera: %s\n", err);
         return 2;
     }
+    /* The folder is written whole beside the old one and swapped in at the end, so a failure
+     * midway (a full disk) leaves the old folder as it was and nothing new. */
+    app_folder_swap swap;
+    if (!replaceable(out)) {
+        app_project_free(&p);
+        return 2;
+    }
+    if (app_folder_swap_begin(&swap, out, err, sizeof err) != APP_OK) {
+        fprintf(stderr, "tessera share: %s\n", err);
+        app_project_free(&p);
+        return 1;
+    }
+    const char *dir = swap.temp;
+    fprintf(stderr, "tessera share: writing %s (it replaces %s when complete)\n", dir, out);
     char renders[4096], plan[4096], pano[4096], pdf[4096];
-    snprintf(renders, sizeof renders, "%s/renders", out);
-    snprintf(plan, sizeof plan, "%s/plan", out);
-    snprintf(pano, sizeof pano, "%s/panorama.jpg", out);
-    snprintf(pdf, sizeof pdf, "%s/print.pdf", out);
-    int rc = make_dir(out) || make_dir(renders) || make_dir(plan) ? 2 : 0;
+    snprintf(renders, sizeof renders, "%s/renders", dir);
+    snprintf(plan, sizeof plan, "%s/plan", dir);
+    snprintf(pano, sizeof pano, "%s/panorama.jpg", dir);
+    snprintf(pdf, sizeof pdf, "%s/print.pdf", dir);
+    int rc = make_dir(renders) || make_dir(plan) ? 2 : 0;
 
     /* 1. every stored viewpoint */
     fprintf(stderr, "tessera share: renders of %d viewpoints\n", p.camera_count);
@@ -203,12 +247,17 @@ int cli_cmd_share(const cli_options *o)
         rc = run(cli_cmd_panorama, "panorama", &r);
         uint8_t *jpeg = NULL;
         size_t n = 0;
+        /* A panorama that cannot be written fails the share (a full disk must not leave a
+         * folder that looks complete without it). */
+        snprintf(err, sizeof err, "%.900s: cannot read the panorama back", pano);
         if (!rc && !read_file(pano, &jpeg, &n) &&
-            app_share_write_panorama(out, jpeg, n, "image/jpeg", err, sizeof err) == APP_OK &&
-            app_share_copy_viewer(out, app_placement_assets_dir(), err, sizeof err) == APP_OK)
+            app_share_write_panorama(dir, jpeg, n, "image/jpeg", err, sizeof err) == APP_OK &&
+            app_share_copy_viewer(dir, app_placement_assets_dir(), err, sizeof err) == APP_OK)
             has_pano = 1;
-        else if (!rc)
+        else if (!rc) {
             fprintf(stderr, "tessera share: %s\n", err);
+            rc = 1;
+        }
         free(jpeg);
     }
     /* 3. the print set, its pages also as SVG for the page */
@@ -243,7 +292,8 @@ int cli_cmd_share(const cli_options *o)
                                .rows = rows,
                                .totals = table ? (const char *const *)totals : NULL,
                                .total_count = table ? 3 : 0};
-        if (app_share_write_page(out, &page, err, sizeof err) != APP_OK) {
+        if (app_share_write_page(dir, &page, err, sizeof err) != APP_OK ||
+            app_folder_swap_commit(&swap, err, sizeof err) != APP_OK) {
             fprintf(stderr, "tessera share: %s\n", err);
             rc = 1;
         } else {
@@ -262,6 +312,7 @@ int cli_cmd_share(const cli_options *o)
     free(cells);
     for (int i = 0; i < 6; i++)
         free(totals[i]);
+    app_folder_swap_discard(&swap); /* after a failure: the new folder goes, the old stays */
     app_project_free(&p);
     return rc;
 }

@@ -243,7 +243,9 @@ int cat_default_path(char *buf, size_t size);
  * data it was built from (a content hash kept in the file), a copy is brought up to date
  * (shipped products replaced, products of users' imports kept) and renamed over it.
  * source_dir NULL: no shipped data; a missing file becomes an empty catalog. A source_dir
- * without CSV files is an error only when the file has to be built. */
+ * without CSV files is an error only when the file has to be built. An existing file that
+ * cannot be opened for writing (a read-only folder, a full disk) is opened read-only, as it is
+ * (no migration, no update): see cat_db_read_only_reason. */
 cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db **out, char *err,
                                size_t err_size);
 
@@ -252,6 +254,11 @@ void cat_db_close(cat_db *db);
 
 /* The file the database was opened from. */
 const char *cat_db_path(const cat_db *db);
+
+/* NULL when the catalog was opened for writing; else why it could only be read (a read-only
+ * folder, a full disk: cat_catalog_open falls back to reading it, and imports are refused with
+ * this reason). */
+const char *cat_db_read_only_reason(const cat_db *db);
 
 typedef struct cat_db_stats {
     int schema_version;
