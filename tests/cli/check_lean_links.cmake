@@ -8,7 +8,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "ldd ${PROGRAM} failed (${rc}): ${err}")
 endif()
 set(heavy "OpenImageIO|libGL|libEGL|OSMesa|glfw|gtk|gdk|cairo|pango|embree|OpenMesh|imgui"
-          "|xlsxwriter|cjson|tbb|libX11|wayland")
+          "|xlsxwriter|tbb|libX11|wayland")
 string(JOIN "" heavy ${heavy})
 string(REGEX MATCHALL "[^\n]*(${heavy})[^\n]*" found "${libs}")
 if(found)

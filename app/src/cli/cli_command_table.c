@@ -161,7 +161,7 @@ const cli_command cli_commands[] = {
              "  It saves to OUT (default: PROJECT itself), atomically. SCRIPT - reads standard\n"
              "  input.\n"},
     {.name = "check",
-     .run = IN_FULL(cli_cmd_check),
+     .run = cli_cmd_check,
      .synopsis = "PROJECT",
      .min_args = 1,
      .max_args = 1,
@@ -191,7 +191,7 @@ const cli_command cli_commands[] = {
      .options = "csv-table",
      .summary = "the room's tileable surfaces: frames, holes (openings, covered) and net m2"},
     {.name = "generate-flat",
-     .run = IN_FULL(cli_cmd_generate_flat),
+     .run = cli_cmd_generate_flat,
      .synopsis = "-o FLAT.json",
      .options = "rooms seed output",
      .summary = "a synthetic flat of N rooms from catalog products (tests, benchmarks)",

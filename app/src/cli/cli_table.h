@@ -40,9 +40,9 @@ typedef struct cli_option_spec {
 const cli_option_spec *cli_option_find(const char *key);
 
 /* A command function that only the full program links (the renderer, the window, image files,
- * models, print). `tessera` itself is the lean program (TESSERA_CLI_LEAN: the command line and
- * the catalog, no renderer): there such a command has no function, and the lean program runs
- * the full one beside it with the same arguments (cli_full_program.c). */
+ * models, print). `tessera` itself is the lean program (TESSERA_CLI_LEAN: the command line, the
+ * app core and the catalog, no renderer): there such a command has no function, and the lean
+ * program runs the full one beside it with the same arguments (cli_full_program.c). */
 #ifdef TESSERA_CLI_LEAN
 #define IN_FULL(fn) NULL
 #else
