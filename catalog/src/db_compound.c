@@ -236,11 +236,15 @@ int catdb_compound_split_query(cat_db *db, const char *word, size_t n, catdb_wor
 
 /* ---- keeping the index in step with the lexicon ------------------------------------------- */
 
+void catdb_words_stamp(char *buf, size_t size)
+{
+    snprintf(buf, size, "%016llx", (unsigned long long)catdb_synonyms_hash(CATDB_HASH64_INIT));
+}
+
 cat_db_result catdb_words_check(sqlite3 *sql, const char *path, char *err, size_t err_size)
 {
     char want[32], have[32];
-    snprintf(want, sizeof want, "%016llx",
-             (unsigned long long)catdb_synonyms_hash(CATDB_HASH64_INIT));
+    catdb_words_stamp(want, sizeof want);
     cat_db_result r = catdb_meta_get(sql, path, "index_words", have, sizeof have, err, err_size);
     if (r != CAT_DB_OK || !strcmp(have, want))
         return r;

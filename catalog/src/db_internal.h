@@ -116,6 +116,8 @@ int catdb_compound_split_query(cat_db *db, const char *word, size_t n, catdb_wor
  * made with another list (meta "index_words", the list's hash) has it rebuilt, in one
  * transaction. */
 cat_db_result catdb_words_check(sqlite3 *sql, const char *path, char *err, size_t err_size);
+/* What meta "index_words" holds once the index is made with this build's list. */
+void catdb_words_stamp(char *buf, size_t size);
 
 /* The shipped synonym list's text (db_synonyms.inc). */
 const char *catdb_synonym_list(void);

@@ -26,6 +26,14 @@ add_test(NAME catalog.db_search_compounds COMMAND test_db_search_finishes compou
 set_tests_properties(catalog.db_search_finishes catalog.db_search_compounds
                      PROPERTIES LABELS "catalog;unit" TIMEOUT 60)
 
+# The readers' open: read-only when current, brought up to date otherwise.
+add_executable(test_db_open_read ${CMAKE_CURRENT_LIST_DIR}/test_db_open_read.c)
+target_link_libraries(test_db_open_read PRIVATE tessera_catalog_db)
+target_include_directories(test_db_open_read PRIVATE ${CMAKE_SOURCE_DIR}/tests/common)
+target_compile_definitions(test_db_open_read PRIVATE TESSERA_CATALOG_SOURCE="${CAT_DB_SOURCE}")
+add_test(NAME catalog.db_open_read COMMAND test_db_open_read)
+set_tests_properties(catalog.db_open_read PROPERTIES LABELS "catalog;unit" TIMEOUT 60)
+
 # A search in this process while `tessera catalog import` runs in another; racing builds.
 add_executable(test_db_concurrent ${CMAKE_CURRENT_LIST_DIR}/test_db_concurrent.c)
 target_link_libraries(test_db_concurrent PRIVATE tessera_catalog)

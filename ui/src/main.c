@@ -1,5 +1,6 @@
-/* The `tessera` program: the command line (app/src/cli/), with the planner window behind
- * `tessera open` and `tessera` alone. */
+/* The full `tessera` program, tessera-full: the command line (app/src/cli/) with every command
+ * and the planner window behind `tessera open` and `tessera` alone. The lean `tessera`
+ * (app/lean/main.c) runs it for everything but the catalog commands. */
 #include "app/cli/cli.h"
 #include "ui/ui.h"
 

@@ -37,7 +37,11 @@ static int exit_code(cat_db_result r)
     }
 }
 
-static int open_catalog(const cli_options *o, cat_db **db)
+/* Search, show, export, info and bench only read: a current catalog is opened read-only,
+ * without schema work (cat_catalog_open_read); import writes. */
+enum catalog_use { CATALOG_READ, CATALOG_WRITE };
+
+static int open_catalog(const cli_options *o, cat_db **db, enum catalog_use use)
 {
     char path[4096], src[4096], err[4096];
     if (o->db)
@@ -52,7 +56,8 @@ static int open_catalog(const cli_options *o, cat_db **db)
     if (stat(path, &st) != 0 && errno == ENOENT)
         fprintf(stderr, "tessera catalog: building %s from %s (first use)\n", path, src);
     double t0 = cli_now_ms();
-    cat_db_result r = cat_catalog_open(path, src, db, err, sizeof err);
+    cat_db_result r = use == CATALOG_READ ? cat_catalog_open_read(path, src, db, err, sizeof err)
+                                          : cat_catalog_open(path, src, db, err, sizeof err);
     if (r != CAT_DB_OK) {
         fprintf(stderr, "tessera: %s\n", err);
         return CLI_FAILED;
@@ -126,7 +131,7 @@ int cli_cmd_catalog_search(const cli_options *o)
         snprintf(text + n, sizeof text - n, "%s%s", n ? " " : "", o->args[i]);
     }
     cat_db *db;
-    int rc = open_catalog(o, &db);
+    int rc = open_catalog(o, &db, CATALOG_READ);
     if (rc != CLI_OK)
         return rc;
     cat_search_filter f = {.max_width_mm = o->max_width, .manufacturer = o->manufacturer};
@@ -187,7 +192,7 @@ int cli_cmd_catalog_show(const cli_options *o)
     if (o->arg_count != 1)
         return cli_usage_error(o);
     cat_db *db;
-    int rc = open_catalog(o, &db);
+    int rc = open_catalog(o, &db, CATALOG_READ);
     if (rc != CLI_OK)
         return rc;
     cat_product p;
@@ -278,7 +283,7 @@ int cli_cmd_catalog_import(const cli_options *o)
     if (o->arg_count != 1)
         return cli_usage_error(o);
     cat_db *db;
-    int rc = open_catalog(o, &db);
+    int rc = open_catalog(o, &db, CATALOG_WRITE);
     if (rc != CLI_OK)
         return rc;
     const char *file = o->args[0];
@@ -322,7 +327,7 @@ int cli_cmd_catalog_export(const cli_options *o)
     if (o->arg_count != 0)
         return cli_usage_error(o);
     cat_db *db;
-    int rc = open_catalog(o, &db);
+    int rc = open_catalog(o, &db, CATALOG_READ);
     if (rc != CLI_OK)
         return rc;
     long rows = 0;
@@ -344,7 +349,7 @@ int cli_cmd_catalog_info(const cli_options *o)
     if (o->arg_count != 0)
         return cli_usage_error(o);
     cat_db *db;
-    int rc = open_catalog(o, &db);
+    int rc = open_catalog(o, &db, CATALOG_READ);
     if (rc != CLI_OK)
         return rc;
     cat_db_stats s;
@@ -422,7 +427,7 @@ static int pick_word(const char *text, unsigned k, size_t min_len, char *out, si
 int cli_cmd_catalog_bench(const cli_options *o)
 {
     cat_db *db;
-    int rc = open_catalog(o, &db);
+    int rc = open_catalog(o, &db, CATALOG_READ);
     if (rc != CLI_OK)
         return rc;
     char err[1024];

@@ -72,6 +72,8 @@ static int check_stdout(int rc)
 
 static int run(const cli_command *c, int argc, char **argv, int first, app_open_fn open_window)
 {
+    if (cli_command_in_full(c))
+        return cli_run_full_program(argc, argv);
     if (c->subcommands)
         return run_subcommand(c, argc, argv, first, open_window);
     cli_options o = {0};
@@ -134,7 +136,7 @@ int cli_cmd_open(const cli_options *o)
 int app_cli_run(int argc, char **argv, app_open_fn open_window)
 {
     const cli_command *open = cli_command_find(cli_commands, "open");
-    if (argc < 2 && open_window)
+    if (argc < 2 && (open_window || cli_command_in_full(open)))
         return run(open, argc, argv, 1, open_window);
     if (argc < 2) {
         print_overview(stderr);

@@ -13,6 +13,9 @@
 
 #define FIELD(f) offsetof(cli_options, f)
 
+/* The render, daylight and print options: only the full program's commands take them, and
+ * some of their parsers call into the renderer and the print code (IN_FULL, cli_table.h). */
+#ifndef TESSERA_CLI_LEAN
 static int parse_quality(const char *v, cli_options *o)
 {
     return (o->quality = app_quality_find(v)) != NULL;
@@ -92,6 +95,8 @@ static int parse_scale(const char *v, cli_options *o)
 {
     return app_print_scale_parse(v, &o->scale);
 }
+
+#endif
 
 static int parse_category(const char *v, cli_options *o)
 {
@@ -213,7 +218,7 @@ static const cli_option_spec options[] = {
      .hint = "the thumbnails' side in pixels (default: 256)"},
 
     /* The renderer's settings: a preset, then the switches that refine it. */
-    CUSTOM("quality", parse_quality, "Q", "draft, interactive, final or print",
+    CUSTOM("quality", IN_FULL(parse_quality), "Q", "draft, interactive, final or print",
            "a preset: draft|interactive|final|print"),
     SWITCH("adaptive", adaptive, "adaptive supersampling (default: the preset's)"),
     SWITCH("planar-mirrors", planar_mirrors, "flat mirrors as planar reflections"),
@@ -222,22 +227,23 @@ static const cli_option_spec options[] = {
     SWITCH("bake", bake, "baked indirect light, cached (default on; TESSERA_BAKE=off)"),
     INT("bake-bounces", bake_bounces, 1, 64, "N",
         "bounces of the baked light (default 4, as `reference --bounces`)"),
-    CUSTOM("self-reflections", parse_self_reflections, "on|off|N", "on, off or 1 to 16",
+    CUSTOM("self-reflections", IN_FULL(parse_self_reflections), "on|off|N", "on, off or 1 to 16",
            "fixtures trace their own reflections (N lobe directions a sample)"),
     INT("probe-resolution", probe_resolution, 16, 2048, "N", "probe texels a face side"),
-    CUSTOM("backend", parse_backend, "egl|osmesa", "egl or osmesa",
+    CUSTOM("backend", IN_FULL(parse_backend), "egl|osmesa", "egl or osmesa",
            "the OpenGL backend (default: $TESSERA_GL, else EGL)"),
     ENUM("probes", probes, probe_names, "when probes are captured"),
     ENUM("blur", blur, blur_names, "how probes are blurred for rough surfaces"),
     ENUM("ambient", ambient, ambient_names, "the ambient light's model"),
     ENUM("shadows", shadows, shadow_names, "shadows from every light"),
-    CUSTOM("sky", parse_sky, "overcast|clear", "overcast or clear",
+    CUSTOM("sky", IN_FULL(parse_sky), "overcast|clear", "overcast or clear",
            "the sky through the windows (default: the project's daylight)"),
-    CUSTOM("time", parse_time, "HH:MM", "a local time HH:MM",
+    CUSTOM("time", IN_FULL(parse_time), "HH:MM", "a local time HH:MM",
            "the time of day of the daylight (default: the project's)"),
-    CUSTOM("tone", parse_tone, "neutral|agx|reinhard|clamp", "neutral, agx, reinhard or clamp",
+    CUSTOM("tone", IN_FULL(parse_tone), "neutral|agx|reinhard|clamp",
+           "neutral, agx, reinhard or clamp",
            "the tone curve (default: the project's, else neutral)"),
-    CUSTOM("exposure", parse_exposure, "auto|EV", "auto or a number of EV in (-64, 64)",
+    CUSTOM("exposure", IN_FULL(parse_exposure), "auto|EV", "auto or a number of EV in (-64, 64)",
            "exposure: chosen from the scene, or fixed in EV (default: the project's)"),
     FLOAT("white-balance", white_balance, 1000, 40000, "K",
           "the colour temperature shown as white (default: the project's, else none)"),
@@ -298,8 +304,8 @@ static const cli_option_spec options[] = {
     FLAG("offcuts", offcuts, "list the offcuts and where they are reused"),
     INT("bench", bench_repeats, 1, 100000, "N", "time the layout N times"),
     FLAG("bench-mosaic", bench_mosaic, "time a 30 x 30 mm mosaic on 10 surfaces"),
-    CUSTOM("paper", parse_paper, "A4|A3", "A4 or A3", "the paper size"),
-    CUSTOM("scale", parse_scale, "1:N|fit", "1:20, 1:25, 1:50, 1:100, 1:200 or fit",
+    CUSTOM("paper", IN_FULL(parse_paper), "A4|A3", "A4 or A3", "the paper size"),
+    CUSTOM("scale", IN_FULL(parse_scale), "1:N|fit", "1:20, 1:25, 1:50, 1:100, 1:200 or fit",
            "the drawings' scale (default: fit)"),
     FLAG("landscape", landscape, "landscape pages"),
     FLAG("no-clearances", no_clearances, "leave the clearance areas out of the plan"),

@@ -127,7 +127,7 @@ static int store(const cli_option_spec *s, const char *v, cli_options *o)
             }
         return 0;
     case CLI_CUSTOM:
-        return s->parse(v, o);
+        return s->parse && s->parse(v, o);
     }
     return 0;
 }

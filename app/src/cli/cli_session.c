@@ -15,13 +15,6 @@
 #include <time.h>
 #include <unistd.h>
 
-double cli_now_ms(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
-}
-
 int cli_check_output_path(const char *path)
 {
     if (rd_image_format_is_float(path) < 0) {

@@ -39,9 +39,19 @@ typedef struct cli_option_spec {
 /* The spec for `key`, NULL if there is none. */
 const cli_option_spec *cli_option_find(const char *key);
 
+/* A command function that only the full program links (the renderer, the window, image files,
+ * models, print). `tessera` itself is the lean program (TESSERA_CLI_LEAN: the command line, the
+ * app core and the catalog, no renderer): there such a command has no function, and the lean
+ * program runs the full one beside it with the same arguments (cli_full_program.c). */
+#ifdef TESSERA_CLI_LEAN
+#define IN_FULL(fn) NULL
+#else
+#define IN_FULL(fn) fn
+#endif
+
 typedef struct cli_command {
     const char *name;
-    int (*run)(const cli_options *o); /* NULL: has sub-commands */
+    int (*run)(const cli_options *o); /* NULL: has sub-commands, or is IN_FULL in the lean one */
     const char *synopsis; /* positional arguments and required options: "PROJECT -o OUT" */
     int min_args, max_args;
     const char *options;                   /* the option keys it takes, space-separated */
@@ -54,6 +64,13 @@ typedef struct cli_command {
 
 /* The top-level commands, terminated by an entry with a NULL name. */
 extern const cli_command cli_commands[];
+
+/* 1 if `c` runs in the full program only (its function is IN_FULL and this is the lean one). */
+int cli_command_in_full(const cli_command *c);
+
+/* Runs the full program beside this one (tessera-full, found next to /proc/self/exe) with the
+ * same argv; returns only when it cannot be run, with CLI_FAILED after saying why. */
+int cli_run_full_program(int argc, char **argv);
 
 /* The command called `name` in `table` (NULL-name terminated), or NULL. */
 const cli_command *cli_command_find(const cli_command *table, const char *name);

@@ -249,6 +249,15 @@ int cat_default_path(char *buf, size_t size);
 cat_db_result cat_catalog_open(const char *path, const char *source_dir, cat_db **out, char *err,
                                size_t err_size);
 
+/* cat_catalog_open for a reader (search, show, export, info, bench). A catalog that is current
+ * (this schema version, in WAL mode, built from the shipped data in source_dir, its search index
+ * made with this build's words) is opened read-only: no lock for writing, no schema work,
+ * nothing written. Any other (missing, older, built from other shipped data) goes through
+ * cat_catalog_open, which brings it up to date. Imports through a read-only handle fail with
+ * SQLite's "readonly database" error. */
+cat_db_result cat_catalog_open_read(const char *path, const char *source_dir, cat_db **out,
+                                    char *err, size_t err_size);
+
 /* Closes the database; NULL is fine. */
 void cat_db_close(cat_db *db);
 
