@@ -75,7 +75,7 @@ int planner_rebuild_scene(planner *p)
     if (p->scene_ready)
         app_scene_release(p->ctx, &p->scene);
     p->scene_ready = 0;
-    if (app_scene_build(p->ctx, &p->project, &p->scene, err, sizeof err) != APP_OK) {
+    if (planner_scene_build(p, err, sizeof err)) {
         planner_status(p, "%s", err);
         return 1;
     }
