@@ -67,9 +67,8 @@ for i, r in enumerate(rows + [{"state": "end"}]):
     elif r["state"] != "bake" and start is not None:
         runs.append((start, i))
         start = None
-assert len(runs) >= 2, f"{len(runs)} runs of bake frames, want the first light's and the edit's"
-last = runs[-1][1]
-edit = runs[1][0]
+assert runs, "no frames logged while a bake waited or ran"
+edit, last = runs[-1]  # the edit's: held, run, faded in
 timed = [i for i in range(edit + 2, min(last + 1, len(rows)))]
 assert len(timed) > 20, f"only {len(timed)} frames from the edit to the new light"
 worst = max(float(rows[i]["frame_ms"]) for i in timed)

@@ -35,7 +35,8 @@ struct planner_bake {
     int fading;
     unsigned char *mix;
     size_t mix_size;
-    int hold; /* a script keeps the bake from starting */
+    int hold;       /* a script keeps the bake from starting */
+    int from_cache; /* the light was just read whole from the cache */
 };
 
 static void wake_window(void *user)
@@ -87,6 +88,33 @@ void planner_bake_free(planner *p)
     p->bake = NULL;
 }
 
+/* A document's first light, when the cache holds its whole scene: read on this thread without
+ * a ray (a few milliseconds), so the window opens lit. */
+static void light_from_cache(struct planner_bake *b, const app_render_list *l)
+{
+    app_bake_settings s = *app_bake_current();
+    s.cache_only = 1;
+    s.progress = 0;
+    app_bake_stats stats;
+    char err[1100];
+    uint64_t *keys = calloc((size_t)l->item_count + 1, sizeof *keys);
+    if (!keys || app_bake_list(l, &s, &b->light, &stats, err, sizeof err) != APP_OK) {
+        free(keys);
+        return;
+    }
+    app_bake_item_keys(l, &s, keys);
+    b->keys = keys;
+    b->has_light = 1;
+    b->from_cache = 1;
+    fprintf(stderr, "tessera: light: %d elements from the cache\n", stats.elements);
+}
+
+void planner_bake_forget(planner *p)
+{
+    if (p->bake)
+        forget_light(p->bake);
+}
+
 int planner_scene_build(planner *p, char *err, size_t err_size)
 {
     struct planner_bake *b = p->bake;
@@ -104,6 +132,8 @@ int planner_scene_build(planner *p, char *err, size_t err_size)
         return 1;
     ref_bake carried = {0};
     int carry = 0;
+    if (!b->has_light)
+        light_from_cache(b, &l);
     if (b->has_light) {
         uint64_t *keys = calloc((size_t)l.item_count + 1, sizeof *keys);
         if (keys) {
@@ -119,6 +149,11 @@ int planner_scene_build(planner *p, char *err, size_t err_size)
     if (failed) {
         app_render_list_free(&l);
         return 1;
+    }
+    if (b->from_cache) { /* the whole light is there: nothing to bake */
+        b->from_cache = 0;
+        app_render_list_free(&l);
+        return 0;
     }
     b->waiting = l;
     b->has_waiting = 1;

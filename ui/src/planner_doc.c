@@ -289,6 +289,7 @@ int planner_recover(planner *p, int accept)
  * selection forgotten, the views framed on the new room. */
 static void adopt(planner *p, app_project *project)
 {
+    planner_bake_forget(p); /* the old room's light is no light for this one */
     app_project_free_all(&p->project);
     p->project = *project;
     app_history_clear(p->history);

@@ -17,7 +17,9 @@
 #include <unistd.h>
 
 static app_bake_settings g_settings;
-static app_bake_stats g_stats;
+/* Per thread: a window bakes on a worker while its own thread may read a whole scene from the
+ * cache. */
+static _Thread_local app_bake_stats g_stats;
 
 void app_bake_configure(const app_bake_settings *s)
 {
@@ -363,6 +365,14 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
         if (r != APP_OK)
             snprintf(err, err_size, "%s: bake: out of memory", l->path);
         return r;
+    }
+    if (s->cache_only) {
+        cache_free(&c);
+        free(keys);
+        free(lightmapped);
+        free(keep);
+        snprintf(err, err_size, "%s: bake: not in the cache", l->path);
+        return APP_ERR_NOT_FOUND;
     }
     ref_scene *rs = NULL;
     r = app_ref_scene_from_list(l, &rs, err, err_size);

@@ -22,6 +22,9 @@ typedef struct app_bake_settings {
      * non-zero return stops the bake (APP_ERR_CANCELLED, nothing cached). NULL = none. */
     int (*progress_fn)(void *user, long long done, long long total);
     void *progress_user;
+    /* 1: only a whole scene from the cache, without a ray (else APP_ERR_NOT_FOUND): what a
+     * window can afford on its own thread. */
+    int cache_only;
 } app_bake_settings;
 
 void app_bake_configure(const app_bake_settings *s);
@@ -36,7 +39,7 @@ typedef struct app_bake_stats {
     char cache_path[1024];
 } app_bake_stats;
 
-/* The statistics of the last app_bake_list in this process (zero before any). */
+/* The statistics of the last app_bake_list on this thread (zero before any). */
 const app_bake_stats *app_bake_last_stats(void);
 
 /* How far a change reaches: points within this many metres of a changed element's bounding box
