@@ -35,8 +35,7 @@ struct planner_bake {
     int fading;
     unsigned char *mix;
     size_t mix_size;
-    int hold;       /* a script keeps the bake from starting */
-    int from_cache; /* the light was just read whole from the cache */
+    int hold; /* a script keeps the bake from starting */
 };
 
 static void wake_window(void *user)
@@ -89,8 +88,8 @@ void planner_bake_free(planner *p)
 }
 
 /* A document's first light, when the cache holds its whole scene: read on this thread without
- * a ray (a few milliseconds), so the window opens lit. */
-static void light_from_cache(struct planner_bake *b, const app_render_list *l)
+ * a ray (a few milliseconds), so the window opens lit. 1 when it did. */
+static int light_from_cache(struct planner_bake *b, const app_render_list *l)
 {
     app_bake_settings s = *app_bake_current();
     s.cache_only = 1;
@@ -100,13 +99,13 @@ static void light_from_cache(struct planner_bake *b, const app_render_list *l)
     uint64_t *keys = calloc((size_t)l->item_count + 1, sizeof *keys);
     if (!keys || app_bake_list(l, &s, &b->light, &stats, err, sizeof err) != APP_OK) {
         free(keys);
-        return;
+        return 0;
     }
     app_bake_item_keys(l, &s, keys);
     b->keys = keys;
     b->has_light = 1;
-    b->from_cache = 1;
     fprintf(stderr, "tessera: light: %d elements from the cache\n", stats.elements);
+    return 1;
 }
 
 void planner_bake_forget(planner *p)
@@ -132,8 +131,7 @@ int planner_scene_build(planner *p, char *err, size_t err_size)
         return 1;
     ref_bake carried = {0};
     int carry = 0;
-    if (!b->has_light)
-        light_from_cache(b, &l);
+    int whole = !b->has_light && light_from_cache(b, &l); /* then nothing to bake */
     if (b->has_light) {
         uint64_t *keys = calloc((size_t)l.item_count + 1, sizeof *keys);
         if (keys) {
@@ -150,8 +148,7 @@ int planner_scene_build(planner *p, char *err, size_t err_size)
         app_render_list_free(&l);
         return 1;
     }
-    if (b->from_cache) { /* the whole light is there: nothing to bake */
-        b->from_cache = 0;
+    if (whole) {
         app_render_list_free(&l);
         return 0;
     }

@@ -28,7 +28,7 @@ typedef struct app_bake_done {
     ref_bake bake;
     uint64_t *keys; /* list.item_count keys (app_bake_item_keys), for app_bake_carry */
     app_bake_stats stats;
-    char error[1024];
+    char error[1200]; /* the list's path and why */
 } app_bake_done;
 
 /* A worker baking with settings s (samples, bounces; its own progress). wake(user) is called
