@@ -2,8 +2,9 @@
  * (app_bake_carry), on a small room (tests/cli/data/minimal.json: walls, a ball, a lamp) at a
  * few rays a point: a job's light comes back with its list; a newer job replaces one that
  * waits and only the newest result is handed back; a running bake stops soon after it is
- * superseded and hands nothing back; destroying a worker in the middle of a bake returns. No
- * GL: runs in the sanitizer build (and under ThreadSanitizer by hand, docs/rendering.md). */
+ * superseded (within 5 s, where the whole bake takes minutes) and hands nothing back; destroying a
+ * worker in the middle of a bake returns. No GL: runs in the sanitizer build (and under
+ * ThreadSanitizer by hand, docs/rendering.md). */
 #define _GNU_SOURCE /* mkdtemp, setenv */
 #include "app/project/commands.h"
 #include "app/project/project.h"
@@ -202,7 +203,7 @@ int main(void)
         CHECK(wait_idle(w, 10.0));
         double stop_s = now_s() - t0;
         printf("a superseded bake stopped in %.3f s (at %.0f %% done)\n", stop_s, 100.0 * done);
-        CHECK_MSG(stop_s < 2.0, "%.3f s to stop", stop_s);
+        CHECK_MSG(stop_s < 5.0, "%.3f s to stop", stop_s);
         CHECK(!app_bake_worker_take(w, &d));
     }
     /* Destroyed in the middle of a bake: it stops and returns. */
@@ -214,7 +215,7 @@ int main(void)
             usleep(2000);
         double t0 = now_s();
         app_bake_worker_destroy(w);
-        CHECK_MSG(now_s() - t0 < 2.0, "%.3f s to destroy", now_s() - t0);
+        CHECK_MSG(now_s() - t0 < 5.0, "%.3f s to destroy", now_s() - t0);
     } else {
         app_bake_worker_destroy(w);
     }

@@ -319,7 +319,7 @@ static void *work(void *arg)
         if (start >= job->point_count)
             break;
         int end = start + CHUNK < job->point_count ? start + CHUNK : job->point_count;
-        for (int i = start; i < end; i++)
+        for (int i = start; i < end && !atomic_load_explicit(w->stop, memory_order_relaxed); i++)
             gather_point(job, &job->points[i], &w->rays);
         long long done = atomic_fetch_add(w->done, end - start) + (end - start);
         if (job->progress_fn &&
