@@ -345,6 +345,8 @@ int planner_bake_status(const planner *p, char *out, size_t size);
  * a moment after a bake arrived (a buffer of the bake's), else image itself. */
 const unsigned char *planner_bake_fade(planner *p, const unsigned char *image, int w, int h);
 void planner_bake_fade_stop(planner *p);
+/* 1 while the still view crossfades to a new light (the window draws every frame). */
+int planner_bake_fading(const planner *p);
 /* Another document: its scene takes no light from the one before. */
 void planner_bake_forget(planner *p);
 /* Scripts: hold = 1 keeps bakes from starting until hold = 0. */

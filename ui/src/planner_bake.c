@@ -261,6 +261,11 @@ int planner_bake_status(const planner *p, char *out, size_t size)
     return 1;
 }
 
+int planner_bake_fading(const planner *p)
+{
+    return p->bake && p->bake->fading;
+}
+
 void planner_bake_fade_stop(planner *p)
 {
     if (p->bake)

@@ -244,8 +244,10 @@ void planner_live_overlay(planner *p, ui_rect pane)
 
 int planner_live_idle(const planner *p)
 {
+    /* A bake under way is no reason to draw: the status bar's share is redrawn when the wait
+     * times out, and the worker wakes the window when the light is there. A crossfade is. */
     return p->layout.pane_3d.w > 0 && p->live.still && ui_live_done(&p->live.ladder) &&
-           planner_bake_settled(p);
+           !planner_bake_fading(p);
 }
 
 void planner_live_restart(planner *p)

@@ -32,8 +32,9 @@ typedef struct app_bake_done {
 } app_bake_done;
 
 /* A worker baking with settings s (samples, bounces; its own progress). wake(user) is called
- * from the worker's thread whenever the progress moved or a job ended (a window posts itself
- * an event); NULL = none. NULL when the thread cannot start. */
+ * from the worker's thread whenever a job ended (a window posts itself an event, so a window
+ * waiting for input takes the light at once); NULL = none. NULL when the thread cannot
+ * start. */
 app_bake_worker *app_bake_worker_create(const app_bake_settings *s, void (*wake)(void *user),
                                         void *wake_user);
 /* Stops the running job, waits for the thread and frees everything it holds. */
