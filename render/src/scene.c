@@ -165,6 +165,20 @@ rd_result rd_scene_set_transform(rd_scene *s, int index, const float transform[1
     return RD_OK;
 }
 
+rd_result rd_scene_set_object_mesh(rd_scene *s, int index, rd_mesh mesh)
+{
+    if (!s || index < 0 || index >= s->object_count)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_set_object_mesh: no object %d", index);
+    if (!rd_mesh_lookup(s->ctx, mesh))
+        return rd_fail(RD_ERR_STALE_HANDLE, "rd_scene_set_object_mesh: mesh %u is not live",
+                       mesh.id);
+    if (s->objects[index].mesh.id != mesh.id) {
+        s->objects[index].mesh = mesh;
+        s->object_stamps[index] = ++s->change_counter;
+    }
+    return RD_OK;
+}
+
 void rd_scene_set_reflection_defaults(rd_scene *s, const rd_reflection_defaults *d)
 {
     if (s && d) {

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 const char *const ui_quality_names[4] = {"draft", "interactive", "final", "print"};
 
@@ -115,7 +116,11 @@ static int open_project(planner *p, const ui_options *o)
     const char *bake_env = getenv("TESSERA_BAKE");
     app_bake_configure(
         &(app_bake_settings){.on = !(bake_env && !strcmp(bake_env, "off")), .progress = 1});
-    if (app_scene_build(p->ctx, &p->project, &p->scene, err, sizeof err) != APP_OK) {
+    /* The window bakes on a thread of its own and draws the plain ambient until the first
+     * light arrives (from the cache at once when the scene is unchanged). */
+    if (planner_bake_start(p))
+        return 1;
+    if (planner_scene_build(p, err, sizeof err)) {
         fprintf(stderr, "tessera: %s\n", err);
         return 1;
     }
@@ -145,6 +150,13 @@ static void window_target(planner *p, const char *after, int width, int height)
     rd_bind_window(p->ctx, width, height);
 }
 
+static double thread_cpu_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 static int frame(planner *p)
 {
     int fw, fh;
@@ -156,8 +168,13 @@ static int frame(planner *p)
     double now = glfwGetTime();
     double dt = now - p->last_time;
     p->last_time = now;
+    /* The window thread's own work in the last frame: a frame can be long on a loaded machine
+     * while it did little (the bake's threads and other programs take the cores). */
+    double cpu = thread_cpu_seconds(), cpu_dt = cpu - p->last_cpu;
+    p->last_cpu = cpu;
     planner_layout_frame(p, fw, fh); /* window_panes.c: the panes for this size */
     planner_handle_input(p, dt);
+    planner_bake_frame(p); /* a finished bake swapped in before this frame draws */
     planner_animate(p, p->fixed_dt > 0 ? p->fixed_dt : dt);
     planner_camera_sync(p);
 
@@ -209,16 +226,18 @@ static int frame(planner *p)
     if (p->frame_log && p->frame_count > 0) {
         double eye[3], target[3];
         planner_view_points(p, eye, target);
-        fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d,%s,%.3f,%.0f,%.0f,%.0f\n",
+        fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d,%s,%.3f,%.0f,%.0f,%.0f,%.3f\n",
                 p->frame_count, ui_quality_names[p->quality],
-                p->dragging              ? "drag"
-                : planner_job_running(p) ? "job"
-                                         : "idle",
+                p->dragging                ? "drag"
+                : planner_job_running(p)   ? "job"
+                : !planner_bake_settled(p) ? "bake"
+                                           : "idle",
                 dt * 1e3, render_ms, p->render_scale, rw, rh,
                 !p->live.still                  ? "moving"
                 : ui_live_done(&p->live.ladder) ? "still"
                                                 : "refining",
-                p->live.still ? ui_live_progress(&p->live.ladder) : 0.0f, eye[0], eye[1], eye[2]);
+                p->live.still ? ui_live_progress(&p->live.ladder) : 0.0f, eye[0], eye[1], eye[2],
+                cpu_dt * 1e3);
     }
     p->frame_count++;
     return 0;
@@ -245,7 +264,7 @@ int ui_run(const ui_options *o)
             return 1;
         }
         fprintf(p.frame_log, "frame,quality,state,frame_ms,render_ms,render_scale,width,height,"
-                             "live,progress,eye_x,eye_y,eye_z\n");
+                             "live,progress,eye_x,eye_y,eye_z,cpu_ms\n");
     }
     glfwSetErrorCallback(glfw_error);
     if (!glfwInit()) {
@@ -300,6 +319,7 @@ int ui_run(const ui_options *o)
             qi = i;
     planner_set_quality(&p, qi);
     p.last_time = glfwGetTime();
+    p.last_cpu = thread_cpu_seconds();
     rc = 0;
     while (!p.quit && !glfwWindowShouldClose(p.window)) {
         /* A finished still view waits for input instead of drawing the same frame again (the
@@ -318,6 +338,7 @@ int ui_run(const ui_options *o)
     if (!rc)
         rc = p.exit_code;
 done:
+    planner_bake_free(&p); /* stops a running bake first */
     planner_files_free(&p);
     planner_doc_close(&p);
     planner_tiles_free(&p);

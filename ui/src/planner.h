@@ -55,6 +55,7 @@ typedef struct planner {
     int frame_index;
     long frame_count;
     double last_time;
+    double last_cpu;          /* this thread's CPU seconds at the last frame's start */
     long stray_target_frames; /* frames whose panels found an off-screen target bound */
     double heap_logged_at;    /* heap_log.c: the last TESSERA_HEAP_LOG line */
     FILE *frame_log;
@@ -169,6 +170,10 @@ typedef struct planner {
         double grab[2];  /* the plan point grabbed on it */
         double turn_deg; /* a ring drag's turn, whole 15-degree steps */
     } handle_drag;
+
+    /* The baked light, baked on a worker thread once edits settle (planner_bake.c); NULL when
+     * the bake is off (TESSERA_BAKE=off). */
+    struct planner_bake *bake;
 
     /* File dialogs, recent files and long jobs (planner_actions.c), made on first use. */
     struct planner_files *files;
@@ -341,6 +346,34 @@ void planner_live_overlay(planner *p, ui_rect pane);
 /* 1 when the still view is complete (the frame loop may wait for events). */
 int planner_live_idle(const planner *p);
 void planner_live_free(planner *p);
+/* The scene's light changed in place (a bake applied): the still view is refined again from
+ * the picture it shows. */
+void planner_live_restart(planner *p);
+
+/* planner_bake.c: the baked light in the background. start makes the worker when the bake is
+ * on (0 ok); scene_build builds p->scene from the document with the light it had and hands
+ * its render list to the worker once the edits settle (0 ok, else why in err); bake_frame
+ * submits it and swaps a finished bake in (each frame, on the GL thread). */
+int planner_bake_start(planner *p);
+void planner_bake_free(planner *p);
+int planner_scene_build(planner *p, char *err, size_t err_size);
+void planner_bake_frame(planner *p);
+/* 1 while a bake waits for edits to settle or runs. */
+int planner_bake_busy(const planner *p);
+/* 1 when no bake waits or runs and no crossfade is under way (scripts wait for it). */
+int planner_bake_settled(const planner *p);
+/* The status bar's "Light: baking 40 %" (1), or 0 when there is nothing to say. */
+int planner_bake_status(const planner *p, char *out, size_t size);
+/* The still view's w x h picture as shown: crossfaded from the picture with the old light for
+ * a moment after a bake arrived (a buffer of the bake's), else image itself. */
+const unsigned char *planner_bake_fade(planner *p, const unsigned char *image, int w, int h);
+void planner_bake_fade_stop(planner *p);
+/* 1 while the still view crossfades to a new light (the window draws every frame). */
+int planner_bake_fading(const planner *p);
+/* Another document: its scene takes no light from the one before. */
+void planner_bake_forget(planner *p);
+/* Scripts: hold = 1 keeps bakes from starting until hold = 0. */
+void planner_bake_hold(planner *p, int hold);
 /* planner_camera.c: switches orbit and walk; walking starts from the view on screen. */
 void planner_set_mode(planner *p, int mode);
 /* Catches a mode changed by assignment (a widget, a key) and sets its camera up. */

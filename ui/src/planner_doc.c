@@ -75,7 +75,7 @@ int planner_rebuild_scene(planner *p)
     if (p->scene_ready)
         app_scene_release(p->ctx, &p->scene);
     p->scene_ready = 0;
-    if (app_scene_build(p->ctx, &p->project, &p->scene, err, sizeof err) != APP_OK) {
+    if (planner_scene_build(p, err, sizeof err)) {
         planner_status(p, "%s", err);
         return 1;
     }
@@ -293,6 +293,7 @@ int planner_recover(planner *p, int accept)
  * selection forgotten, the views framed on the new room. */
 static void adopt(planner *p, app_project *project)
 {
+    planner_bake_forget(p); /* the old room's light is no light for this one */
     app_project_free_all(&p->project);
     p->project = *project;
     app_history_clear(p->history);

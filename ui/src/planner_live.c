@@ -201,7 +201,8 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
             ui_accum_restart(&p->live.accum);
         }
     }
-    if (rd_present_rgba8(p->ctx, fw, fh, p->live.accum.image, p->live.window_w, p->live.window_h,
+    const unsigned char *shown = planner_bake_fade(p, p->live.accum.image, fw, fh);
+    if (rd_present_rgba8(p->ctx, fw, fh, shown, p->live.window_w, p->live.window_h,
                          (int)p->live.pane.x, (int)p->live.pane.y) != RD_OK)
         return render_failed();
     return 0;
@@ -219,6 +220,8 @@ int planner_live_frame(planner *p, int window_w, int window_h, ui_rect pane, flo
     view_key(p, fw, fh, key);
     int moving = memcmp(key, p->live.key, sizeof key) != 0 || p->fixture_drag.active;
     memcpy(p->live.key, key, sizeof key);
+    if (moving)
+        planner_bake_fade_stop(p); /* the old picture no longer matches the view */
     if (moving || p->live.last_w == 0)
         return moving_frame(p, fw, fh, render_ms, rw, rh);
     if (!p->live.still && begin_still(p, fw, fh))
@@ -241,7 +244,23 @@ void planner_live_overlay(planner *p, ui_rect pane)
 
 int planner_live_idle(const planner *p)
 {
-    return p->layout.pane_3d.w > 0 && p->live.still && ui_live_done(&p->live.ladder);
+    /* A bake under way is no reason to draw: the status bar's share is redrawn when the wait
+     * times out, and the worker wakes the window when the light is there. A crossfade is. */
+    return p->layout.pane_3d.w > 0 && p->live.still && ui_live_done(&p->live.ladder) &&
+           !planner_bake_fading(p);
+}
+
+void planner_live_restart(planner *p)
+{
+    if (!p->live.still)
+        return; /* a moving view draws the new light on its next frame */
+    float rows = p->live.last_h > 0 ? (float)p->live.last_h : 1.0f;
+    float px_scale = p->live.last_w > 0 && p->live.accum.width > 0
+                         ? (float)p->live.accum.width / (float)p->live.last_w
+                         : 1.0f;
+    ui_live_begin(&p->live.ladder, p->quality, p->live.last_ms / rows * px_scale);
+    ui_accum_restart(&p->live.accum); /* shows the old picture until strips replace it */
+    apply_preset(p, p->live.ladder.steps[0].preset);
 }
 
 void planner_live_free(planner *p)

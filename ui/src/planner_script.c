@@ -278,6 +278,13 @@ static int apply(planner *p, const ui_action *a)
     case UI_ACT_LOCATE:
     case UI_ACT_EXPECT_SEARCH:
         return planner_input_action(p, a) ? fail(a, p->status) : 0;
+    case UI_ACT_WAIT_BAKE:
+        return planner_bake_settled(p) ? 0 : 2;
+    case UI_ACT_BAKE_HOLD:
+        if (strcmp(a->text, "on") && strcmp(a->text, "off"))
+            return fail(a, "bake-hold takes on or off");
+        planner_bake_hold(p, !strcmp(a->text, "on"));
+        return 0;
     case UI_ACT_QUIT:
         p->quit = 1;
         return 0;

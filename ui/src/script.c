@@ -85,6 +85,8 @@ static const struct {
     {"expect-recent", UI_ACT_FILES, 0, 3},
     {"open-recent", UI_ACT_FILES, 0, 3},
     {"dialog", UI_ACT_FILES, 0, 3},
+    {"wait-bake", UI_ACT_WAIT_BAKE, 0, 0},
+    {"bake-hold", UI_ACT_BAKE_HOLD, 0, 1},
     {"quit", UI_ACT_QUIT, 0, 0},
 };
 

@@ -96,6 +96,11 @@
  *   open-recent N          open the N-th recent file (from 1)
  *   dialog open|save-as|print-pdf|export-glb  the native file dialog; the script waits until
  *                          it is answered (a person, or xdotool in a test), then acts on it
+ *   wait-bake              hold the script until the baked light is up to date: no bake
+ *                          settling or running and the crossfade to the new light done
+ *                          (at once when the bake is off)
+ *   bake-hold on|off       keep edits' bakes from starting (on) until off: a test sees the
+ *                          light carried over from before the edit, refined, then the new
  *   quit                   close the window (exit 0)
  * Any action may be followed by `frames N` to spread it over N frames (orbit, zoom, walk). */
 #ifndef UI_SCRIPT_H
@@ -157,8 +162,10 @@ typedef enum ui_action_kind {
     UI_ACT_EXPECT_SEARCH,
     UI_ACT_PANES, /* the window's layout (panel_layout.h) */
     UI_ACT_SPLIT,
-    UI_ACT_PICK,  /* the selection, by name */
-    UI_ACT_FILES, /* planner_actions.h: text is "VERB ARGUMENT" */
+    UI_ACT_PICK,      /* the selection, by name */
+    UI_ACT_FILES,     /* planner_actions.h: text is "VERB ARGUMENT" */
+    UI_ACT_WAIT_BAKE, /* planner_bake.c */
+    UI_ACT_BAKE_HOLD,
     UI_ACT_QUIT
 } ui_action_kind;
 

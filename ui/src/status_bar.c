@@ -105,12 +105,17 @@ void planner_status_bar(planner *p, double now)
     const ui_rect *r = &p->layout.status;
     if (ui_gui_begin_bar("##status", r->x, r->y, r->w, r->h, 4.0f)) {
         float ms = mean(p->frame_ms, p->frame_count), rms = mean(p->render_ms, p->frame_count);
-        char right[160], left[800];
-        snprintf(right, sizeof right, "%s  |  3D %.1f ms at %.0f %%  |  %.1f ms %.0f fps",
-                 ui_quality_names[p->quality], rms, p->render_scale * 100.0f, ms,
+        char right[240], left[800], light[96];
+        /* A bake in the background says how far it is, before the speed. */
+        int baking = planner_bake_status(p, light, sizeof light);
+        const char *sep = baking ? "  |  " : "";
+        if (!baking)
+            light[0] = 0;
+        snprintf(right, sizeof right, "%s%s%s  |  3D %.1f ms at %.0f %%  |  %.1f ms %.0f fps",
+                 light, sep, ui_quality_names[p->quality], rms, p->render_scale * 100.0f, ms,
                  ms > 0 ? 1000.0f / ms : 0.0f);
         if (r->w < 1100) /* a narrow window keeps the hint and the speed only */
-            snprintf(right, sizeof right, "%.0f fps", ms > 0 ? 1000.0f / ms : 0.0f);
+            snprintf(right, sizeof right, "%s%s%.0f fps", light, sep, ms > 0 ? 1000.0f / ms : 0.0f);
         /* Said on every frame: a read-only window must not look like one that saves. */
         const char *ro = p->read_only ? "READ-ONLY (open in another window)  |  " : "";
         if (now < p->mode_message_until)

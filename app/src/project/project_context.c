@@ -169,6 +169,8 @@ const char *app_result_name(app_result r)
         return "APP_ERR_OUT_OF_MEMORY";
     case APP_ERR_NOT_FOUND:
         return "APP_ERR_NOT_FOUND";
+    case APP_ERR_CANCELLED:
+        return "APP_ERR_CANCELLED";
     }
     return "APP_ERR_UNKNOWN";
 }

@@ -17,7 +17,9 @@
 #include <unistd.h>
 
 static app_bake_settings g_settings;
-static app_bake_stats g_stats;
+/* Per thread: a window bakes on a worker while its own thread may read a whole scene from the
+ * cache. */
+static _Thread_local app_bake_stats g_stats;
 
 void app_bake_configure(const app_bake_settings *s)
 {
@@ -330,8 +332,8 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
         return APP_ERR_OUT_OF_MEMORY;
     }
     uint64_t scene = fnv(base, "scene", 5), room = fnv(base, "room", 4);
+    app_bake_item_keys(l, s, keys);
     for (int i = 0; i < l->item_count; i++) {
-        keys[i] = item_hash(l, i, base);
         /* Planar meshes get texels: the room's surfaces, and boxes and planes among the
          * objects (a bath panel, a vanity, a block), whose few vertices would stretch one
          * value over a whole face and lose the light bounced from the floor near its foot. */
@@ -364,8 +366,18 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
             snprintf(err, err_size, "%s: bake: out of memory", l->path);
         return r;
     }
+    if (s->cache_only) {
+        cache_free(&c);
+        free(keys);
+        free(lightmapped);
+        free(keep);
+        snprintf(err, err_size, "%s: bake: not in the cache", l->path);
+        return APP_ERR_NOT_FOUND;
+    }
     ref_scene *rs = NULL;
     r = app_ref_scene_from_list(l, &rs, err, err_size);
+    if (r == APP_OK && s->progress_fn && s->progress_fn(s->progress_user, 0, 1))
+        r = APP_ERR_CANCELLED; /* superseded while the tracer's scene was made */
     ref_bake prev = {0};
     float(*boxes)[6] = NULL;
     int box_count = 0;
@@ -373,7 +385,9 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
                        .passes = s->bounces,
                        .progress = s->progress,
                        .lightmapped = lightmapped,
-                       .reach_m = APP_BAKE_REACH_M};
+                       .reach_m = APP_BAKE_REACH_M,
+                       .progress_fn = s->progress_fn,
+                       .progress_user = s->progress_user};
     if (r == APP_OK && cached) {
         boxes = calloc((size_t)(l->item_count + c.entry_count) + 1, sizeof *boxes);
         if (!boxes || partial_setup(l, keys, &c, &prev, keep, boxes, &box_count,
@@ -396,7 +410,9 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
         }
         if (rr != REF_OK) {
             snprintf(err, err_size, "%s: bake: %s", l->path, ref_last_error());
-            r = rr == REF_ERR_OUT_OF_MEMORY ? APP_ERR_OUT_OF_MEMORY : APP_ERR_SCHEMA;
+            r = rr == REF_ERR_OUT_OF_MEMORY ? APP_ERR_OUT_OF_MEMORY
+                : rr == REF_ERR_CANCELLED   ? APP_ERR_CANCELLED
+                                            : APP_ERR_SCHEMA;
         }
     }
     if (r == APP_OK) {
@@ -418,5 +434,87 @@ app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, r
     free(lightmapped);
     free(keep);
     g_stats = *stats;
+    return r;
+}
+
+void app_bake_item_keys(const app_render_list *l, const app_bake_settings *s, uint64_t *keys)
+{
+    uint64_t base = settings_hash(s, l);
+    for (int i = 0; i < l->item_count; i++)
+        keys[i] = item_hash(l, i, base);
+}
+
+static int carry_floats(const ref_bake_mesh *m)
+{
+    return m->kind == REF_BAKE_VERTEX ? 4 : m->kind == REF_BAKE_LIGHTMAP ? 2 : 0;
+}
+
+app_result app_bake_carry(const ref_bake *old, const uint64_t *old_keys, int new_count,
+                          const uint64_t *keys, ref_bake *out)
+{
+    memset(out, 0, sizeof *out);
+    size_t texels = (size_t)old->atlas_width * (size_t)old->atlas_height;
+    unsigned char *taken = calloc((size_t)old->mesh_count + 1, 1);
+    out->meshes = calloc((size_t)new_count + 1, sizeof *out->meshes);
+    out->atlas = malloc(4 * texels * sizeof(float) + 4);
+    if (!taken || !out->meshes || !out->atlas) {
+        free(taken);
+        ref_bake_free(out);
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    out->mesh_count = new_count;
+    out->atlas_width = old->atlas_width;
+    out->atlas_height = old->atlas_height;
+    if (texels)
+        memcpy(out->atlas, old->atlas, 4 * texels * sizeof(float));
+    int *source = malloc(((size_t)new_count + 1) * sizeof *source);
+    if (!source) {
+        free(taken);
+        ref_bake_free(out);
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    /* Same key first, for every item, so an item that only moved in the list is not taken by
+     * the index rule of another. */
+    for (int i = 0; i < new_count; i++) {
+        source[i] = -1;
+        for (int j = 0; j < old->mesh_count; j++)
+            if (!taken[j] && old_keys[j] == keys[i] && carry_floats(&old->meshes[j])) {
+                source[i] = j;
+                taken[j] = 1;
+                break;
+            }
+    }
+    app_result r = APP_OK;
+    for (int i = 0; i < new_count && r == APP_OK; i++) {
+        int j = source[i];
+        if (j < 0 && i < old->mesh_count && !taken[i] && carry_floats(&old->meshes[i])) {
+            j = i;
+            taken[i] = 1;
+        }
+        if (j < 0)
+            continue;
+        const ref_bake_mesh *from = &old->meshes[j];
+        ref_bake_mesh *to = &out->meshes[i];
+        size_t n = (size_t)carry_floats(from) * (size_t)from->vertex_count;
+        float *copy = malloc(n * sizeof(float) + 4);
+        if (!copy) {
+            r = APP_ERR_OUT_OF_MEMORY;
+            break;
+        }
+        memcpy(copy, from->kind == REF_BAKE_VERTEX ? from->vertex : from->lightmap_uv,
+               n * sizeof(float));
+        to->kind = from->kind;
+        to->vertex_count = from->vertex_count;
+        if (from->kind == REF_BAKE_VERTEX)
+            to->vertex = copy;
+        else
+            to->lightmap_uv = copy;
+        memcpy(to->bounds_min, from->bounds_min, sizeof to->bounds_min);
+        memcpy(to->bounds_max, from->bounds_max, sizeof to->bounds_max);
+    }
+    free(source);
+    free(taken);
+    if (r != APP_OK)
+        ref_bake_free(out);
     return r;
 }

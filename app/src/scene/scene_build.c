@@ -105,18 +105,19 @@ static rd_mesh mesh_of(rd_context *ctx, const app_render_list *l, app_scene *s, 
     return s->meshes[i];
 }
 
-/* Item i's own mesh carrying its baked light (per vertex or lightmap coordinates); the list
- * mesh when the item has none. */
-static rd_mesh baked_mesh_of(rd_context *ctx, const app_render_list *l, app_scene *s,
-                             const ref_bake *bake, int i)
+/* Item i's own mesh carrying its baked light (per vertex or lightmap coordinates), id 0 when
+ * the bake has none for it (or failed to upload: rd_last_error says). */
+static rd_mesh new_baked_mesh(rd_context *ctx, const app_render_list *l, const ref_bake *bake,
+                              int i, int *failed)
 {
     const app_render_item *it = &l->items[i];
     const ref_bake_mesh *bm = bake && i < bake->mesh_count ? &bake->meshes[i] : NULL;
     const app_render_mesh *m = &l->meshes[it->mesh];
+    *failed = 0;
     if (!bm || bm->kind == REF_BAKE_NONE || bm->vertex_count != m->vertex_count ||
         (bm->kind == REF_BAKE_LIGHTMAP && !bake->atlas_width))
-        return mesh_of(ctx, l, s, it->mesh);
-    s->baked_meshes[i] = rd_mesh_create(
+        return (rd_mesh){0};
+    rd_mesh mesh = rd_mesh_create(
         ctx,
         &(rd_mesh_desc){.positions = m->positions,
                         .normals = m->normals,
@@ -126,7 +127,21 @@ static rd_mesh baked_mesh_of(rd_context *ctx, const app_render_list *l, app_scen
                         .index_count = m->index_count,
                         .baked_light = bm->kind == REF_BAKE_VERTEX ? bm->vertex : NULL,
                         .lightmap_uvs = bm->kind == REF_BAKE_LIGHTMAP ? bm->lightmap_uv : NULL});
-    return s->baked_meshes[i];
+    *failed = !mesh.id;
+    return mesh;
+}
+
+/* Item i's baked mesh, or the list mesh when the item has no baked light. */
+static rd_mesh baked_mesh_of(rd_context *ctx, const app_render_list *l, app_scene *s,
+                             const ref_bake *bake, int i)
+{
+    int failed;
+    rd_mesh m = new_baked_mesh(ctx, l, bake, i, &failed);
+    if (failed)
+        return m;
+    if (!m.id)
+        return mesh_of(ctx, l, s, l->items[i].mesh);
+    return s->baked_meshes[i] = m;
 }
 
 static app_result add_items(rd_context *ctx, const app_render_list *l, app_scene *s,
@@ -178,11 +193,12 @@ static app_result scene_from_list(rd_context *ctx, const app_render_list *l, app
     out->meshes = calloc((size_t)l->mesh_count + 1, sizeof *out->meshes);
     if (!out->meshes)
         return APP_ERR_OUT_OF_MEMORY;
+    /* Every scene has room for baked meshes: a bake may be applied later. */
+    out->baked_mesh_count = l->item_count;
+    out->baked_meshes = calloc((size_t)l->item_count + 1, sizeof *out->baked_meshes);
+    if (!out->baked_meshes)
+        return APP_ERR_OUT_OF_MEMORY;
     if (bake) {
-        out->baked_mesh_count = l->item_count;
-        out->baked_meshes = calloc((size_t)l->item_count + 1, sizeof *out->baked_meshes);
-        if (!out->baked_meshes)
-            return APP_ERR_OUT_OF_MEMORY;
         if (bake->atlas_width && bake->atlas_height &&
             rd_scene_set_lightmap(out->scene, bake->atlas_width, bake->atlas_height, bake->atlas) !=
                 RD_OK) {
@@ -231,6 +247,73 @@ app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out
     if (r != APP_OK)
         app_scene_release(ctx, out);
     return r;
+}
+
+app_result app_scene_build_from_list(rd_context *ctx, const app_render_list *l,
+                                     const ref_bake *bake, app_scene *out, char *err,
+                                     size_t err_size)
+{
+    memset(out, 0, sizeof *out);
+    if (!ctx) {
+        snprintf(err, err_size, "%s: rd_scene_create: no context", l->path);
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    app_result r = scene_from_list(ctx, l, out, bake, err, err_size);
+    if (r == APP_ERR_OUT_OF_MEMORY && err && err_size && !err[0])
+        snprintf(err, err_size, "%s: out of memory", l->path);
+    if (r != APP_OK)
+        app_scene_release(ctx, out);
+    return r;
+}
+
+app_result app_scene_apply_bake(rd_context *ctx, app_scene *s, const app_render_list *l,
+                                const ref_bake *bake, char *err, size_t err_size)
+{
+    if (!s->scene || rd_scene_object_count(s->scene) != l->item_count ||
+        s->baked_mesh_count != l->item_count || s->mesh_count != l->mesh_count) {
+        snprintf(err, err_size, "%s: the baked light is of another scene", l->path);
+        return APP_ERR_SCHEMA;
+    }
+    rd_mesh *next = calloc((size_t)l->item_count + 1, sizeof *next);
+    if (!next) {
+        snprintf(err, err_size, "%s: out of memory", l->path);
+        return APP_ERR_OUT_OF_MEMORY;
+    }
+    app_result r = APP_OK;
+    for (int i = 0; i < l->item_count && r == APP_OK; i++) {
+        int failed;
+        next[i] = new_baked_mesh(ctx, l, bake, i, &failed);
+        if (failed || (!next[i].id && !mesh_of(ctx, l, s, l->items[i].mesh).id)) {
+            snprintf(err, err_size, "%s: %s: %s", l->path, l->items[i].label, rd_last_error());
+            r = APP_ERR_OUT_OF_MEMORY;
+        }
+    }
+    /* The atlas first: a lightmapped mesh drawn without one would read none. */
+    if (r == APP_OK && bake && bake->atlas_width && bake->atlas_height &&
+        rd_scene_set_lightmap(s->scene, bake->atlas_width, bake->atlas_height, bake->atlas) !=
+            RD_OK) {
+        snprintf(err, err_size, "%s: %s", l->path, rd_last_error());
+        r = APP_ERR_OUT_OF_MEMORY;
+    }
+    if (r != APP_OK) {
+        for (int i = 0; i < l->item_count; i++)
+            if (next[i].id)
+                rd_mesh_destroy(ctx, next[i]);
+        free(next);
+        return r;
+    }
+    for (int i = 0; i < l->item_count; i++) {
+        rd_mesh m = next[i].id ? next[i] : s->meshes[l->items[i].mesh];
+        rd_scene_set_object_mesh(s->scene, i, m);
+    }
+    if (!bake || !bake->atlas_width || !bake->atlas_height)
+        rd_scene_set_lightmap(s->scene, 0, 0, NULL);
+    for (int i = 0; i < s->baked_mesh_count; i++)
+        if (s->baked_meshes[i].id)
+            rd_mesh_destroy(ctx, s->baked_meshes[i]);
+    free(s->baked_meshes);
+    s->baked_meshes = next;
+    return APP_OK;
 }
 
 void app_scene_release(rd_context *ctx, app_scene *s)

@@ -257,6 +257,9 @@ rd_result rd_scene_object_desc(const rd_scene *scene, int index, rd_object_desc 
 /* Moves object `index` (in the order added); probes that see it are captured again under
  * RD_PROBE_ON_CHANGE. */
 rd_result rd_scene_set_transform(rd_scene *scene, int index, const float transform[16]);
+/* Draws object `index` with another mesh of the same shape (the same geometry carrying newer
+ * baked light); the caller keeps owning both meshes. Probes that see it are captured again. */
+rd_result rd_scene_set_object_mesh(rd_scene *scene, int index, rd_mesh mesh);
 
 /* The ambient term (RENDERING.md section 7): the constant I_a, or the irradiance of nine
  * spherical-harmonic coefficients projected from a probe at the centre of the box proxy (the

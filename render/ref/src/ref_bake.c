@@ -247,7 +247,9 @@ static ref_result bake(ref_scene *s, const ref_bake_desc *d, ref_bake *b)
                            .ao_distance = ao,
                            .threads = d->threads,
                            .progress = d->progress && isatty(2),
-                           .progress_total = (long long)point_count * passes};
+                           .progress_total = (long long)point_count * passes,
+                           .progress_fn = d->progress_fn,
+                           .progress_user = d->progress_user};
     if (r == REF_OK && point_count > 0)
         r = ref_scene_commit(s);
     for (int pass = 0; r == REF_OK && point_count > 0 && pass < passes; pass++) {

@@ -38,8 +38,7 @@ static void bake_filter(const struct RTCFilterFunctionNArguments *a)
             continue;
         const ref_mesh *m = &c->scene->meshes[hit[6 * n + i]];
         const float *e = m->material.emissive;
-        if (m->glass ||
-            (c->shadow && (m->background || e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f)))
+        if (m->glass || (c->shadow && (m->background || e[0] > 0.0f || e[1] > 0.0f || e[2] > 0.0f)))
             a->valid[i] = 0;
     }
 }
@@ -288,6 +287,7 @@ typedef struct worker {
     bake_gather_job *job;
     atomic_int *next;
     atomic_llong *done;
+    atomic_int *stop; /* the caller's progress_fn asked to stop */
     long long rays;
     int index;
 } worker;
@@ -313,13 +313,18 @@ static void *work(void *arg)
     bake_gather_job *job = w->job;
     struct timespec last = {0, 0};
     for (;;) {
+        if (atomic_load(w->stop))
+            break;
         int start = atomic_fetch_add(w->next, CHUNK);
         if (start >= job->point_count)
             break;
         int end = start + CHUNK < job->point_count ? start + CHUNK : job->point_count;
-        for (int i = start; i < end; i++)
+        for (int i = start; i < end && !atomic_load_explicit(w->stop, memory_order_relaxed); i++)
             gather_point(job, &job->points[i], &w->rays);
         long long done = atomic_fetch_add(w->done, end - start) + (end - start);
+        if (job->progress_fn &&
+            job->progress_fn(job->progress_user, job->progress_done + done, job->progress_total))
+            atomic_store(w->stop, 1);
         if (w->index == 0 && job->progress) {
             struct timespec now;
             clock_gettime(CLOCK_MONOTONIC, &now);
@@ -339,11 +344,12 @@ ref_result ref_bake_gather(bake_gather_job *job)
     threads = threads < 1 ? 1 : threads > 64 ? 64 : threads;
     atomic_int next = 0;
     atomic_llong done = 0;
+    atomic_int stop = 0;
     worker workers[64];
     pthread_t ids[64];
     int started = 0;
     for (int i = 0; i < threads; i++) {
-        workers[i] = (worker){job, &next, &done, 0, i};
+        workers[i] = (worker){job, &next, &done, &stop, 0, i};
         if (i > 0 && pthread_create(&ids[i], NULL, work, &workers[i]) == 0)
             started++;
         else if (i > 0)
@@ -357,6 +363,8 @@ ref_result ref_bake_gather(bake_gather_job *job)
     for (int i = 0; i < threads; i++)
         job->rays += workers[i].rays;
     job->progress_done += job->point_count;
+    if (atomic_load(&stop))
+        return ref_fail(REF_ERR_CANCELLED, "ref_bake: cancelled");
     if (job->progress)
         progress_draw(job, job->progress_done);
     return REF_OK;

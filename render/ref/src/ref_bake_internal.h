@@ -44,6 +44,8 @@ typedef struct bake_gather_job {
     int progress;                            /* a bar on stderr */
     long long progress_done, progress_total; /* over every pass */
     long long rays;
+    int (*progress_fn)(void *user, long long done, long long total); /* ref_bake_desc's */
+    void *progress_user;
 } bake_gather_job;
 
 ref_result ref_bake_gather(bake_gather_job *job);

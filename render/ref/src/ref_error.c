@@ -24,6 +24,7 @@ static const char *const RESULT_NAMES[] = {
     [REF_ERR_OUT_OF_MEMORY] = "out of memory",
     [REF_ERR_TOO_LARGE] = "too large",
     [REF_ERR_EMBREE] = "Embree error",
+    [REF_ERR_CANCELLED] = "cancelled",
 };
 
 const char *ref_result_name(ref_result r)

@@ -37,6 +37,7 @@ typedef enum app_result {
     APP_ERR_VERSION, /* "version" missing, not an integer >= 1, or newer than this build */
     APP_ERR_OUT_OF_MEMORY,
     APP_ERR_NOT_FOUND, /* a referenced file (model, texture) does not exist */
+    APP_ERR_CANCELLED, /* the caller stopped it (a superseded background bake) */
 } app_result;
 
 /* "APP_OK", "APP_ERR_IO", ... (never NULL). */

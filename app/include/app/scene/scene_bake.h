@@ -18,6 +18,13 @@ typedef struct app_bake_settings {
     int progress; /* a progress bar on stderr */
     int samples;  /* hemisphere rays per point and pass; 0 = ref_bake's default */
     int bounces;  /* gathering passes; 0 = REF_DEFAULT_BOUNCES, the reference's default */
+    /* ref_bake_desc's: called from the bake's threads with the points done and to do; a
+     * non-zero return stops the bake (APP_ERR_CANCELLED, nothing cached). NULL = none. */
+    int (*progress_fn)(void *user, long long done, long long total);
+    void *progress_user;
+    /* 1: only a whole scene from the cache, without a ray (else APP_ERR_NOT_FOUND): what a
+     * window can afford on its own thread. */
+    int cache_only;
 } app_bake_settings;
 
 void app_bake_configure(const app_bake_settings *s);
@@ -32,7 +39,7 @@ typedef struct app_bake_stats {
     char cache_path[1024];
 } app_bake_stats;
 
-/* The statistics of the last app_bake_list in this process (zero before any). */
+/* The statistics of the last app_bake_list on this thread (zero before any). */
 const app_bake_stats *app_bake_last_stats(void);
 
 /* How far a change reaches: points within this many metres of a changed element's bounding box
@@ -43,6 +50,19 @@ const app_bake_stats *app_bake_last_stats(void);
  * owns the result (ref_bake_free). */
 app_result app_bake_list(const app_render_list *l, const app_bake_settings *s, ref_bake *out,
                          app_bake_stats *stats, char *err, size_t err_size);
+
+/* The cache's key of each item of l under settings s (l->item_count values): equal keys, equal
+ * geometry, placement, material and light. */
+void app_bake_item_keys(const app_render_list *l, const app_bake_settings *s, uint64_t *keys);
+
+/* An earlier bake's light for a newer list (the window shows it until the newer list's own bake
+ * arrives): item i of the new list (key keys[i]) takes the values of the old item with the same
+ * key, or else of the old item at index i when it holds the same kind of data for as many
+ * vertices (a moved fixture keeps the light of where it was); other items get none (the plain
+ * ambient). The atlas is copied whole, as the carried lightmap coordinates point into it. On
+ * success *out owns its arrays (ref_bake_free). */
+app_result app_bake_carry(const ref_bake *old, const uint64_t *old_keys, int new_count,
+                          const uint64_t *keys, ref_bake *out);
 
 #ifdef __cplusplus
 }

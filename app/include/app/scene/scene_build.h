@@ -4,6 +4,8 @@
 #define APP_SCENE_BUILD_H
 
 #include "app/project/project.h"
+#include "app/scene/render_list.h"
+#include "ref/ref_bake.h"
 #include "render/render.h"
 
 #ifdef __cplusplus
@@ -33,6 +35,20 @@ typedef struct app_scene {
 app_result app_scene_build(rd_context *ctx, const app_project *p, app_scene *out, char *err,
                            size_t err_size);
 void app_scene_release(rd_context *ctx, app_scene *s);
+
+/* The GPU scene of a render list already built (app_render_list_build with
+ * APP_RENDER_LIST_PROBE_MESHES), with the baked light `bake` (its meshes in the list's item
+ * order; NULL = none: the plain ambient) and no bake of its own; the list stays the caller's.
+ * The window builds so, and bakes the list on another thread (docs/rendering.md). */
+app_result app_scene_build_from_list(rd_context *ctx, const app_render_list *l,
+                                     const ref_bake *bake, app_scene *out, char *err,
+                                     size_t err_size);
+
+/* Gives scene s, built from list l, the light of bake (of the same list; NULL = none) in place
+ * of what it drew: new meshes carrying it and the atlas, swapped in object by object; the old
+ * ones are destroyed. On failure s draws as before. */
+app_result app_scene_apply_bake(rd_context *ctx, app_scene *s, const app_render_list *l,
+                                const ref_bake *bake, char *err, size_t err_size);
 
 /* Moves project object `object` to position_mm (its document position, millimetres): in the
  * document p and in the scene s built from p, whose renderer objects for it take the

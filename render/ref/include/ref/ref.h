@@ -30,7 +30,8 @@ typedef enum ref_result {
     REF_ERR_INVALID_ARGUMENT,
     REF_ERR_OUT_OF_MEMORY,
     REF_ERR_TOO_LARGE,
-    REF_ERR_EMBREE, /* the Embree device or scene could not be made */
+    REF_ERR_EMBREE,    /* the Embree device or scene could not be made */
+    REF_ERR_CANCELLED, /* the caller asked to stop (ref_bake_desc.progress_fn) */
 } ref_result;
 
 /* The message of the last failure on this thread ("" if none). */

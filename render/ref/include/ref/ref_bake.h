@@ -82,6 +82,12 @@ typedef struct ref_bake_desc {
     int dirty_box_count;
     float reach_m;
     const unsigned char *keep;
+    /* Called from the bake's threads after every few points with the points done and to do
+     * over all passes (so it must be cheap and thread-safe); a non-zero return stops the bake,
+     * which then fails with REF_ERR_CANCELLED (a window's bake superseded by a newer edit).
+     * NULL = none. */
+    int (*progress_fn)(void *user, long long done, long long total);
+    void *progress_user;
 } ref_bake_desc;
 
 /* Bakes scene s (committed here if needed). On success *out owns its arrays (ref_bake_free);
