@@ -8,7 +8,9 @@
 # 2. in the 3D view the picked vanity shows its arrows and ring; its along-the-wall arrow
 #    dragged 500 mm and held shows the guides and labels there too; let go, it has moved (and
 #    its group) 500 mm in the saved project;
-# 3. its ring dragged 52 degrees round turns it by 45 (whole 15-degree steps), group and all.
+# 3. moved by an edit 500 mm out from its wall (at its walls a turn would reach through one,
+#    which the window refuses), its ring dragged 52 degrees round turns it by 45 (whole
+#    15-degree steps), group and all.
 #   usage: handles_session.sh TESSERA OUTDIR SCREENSHOT_CHECK PROJECT
 # Exit 77 (skipped) without xdotool (.ci/setup installs it).
 set -e
@@ -80,6 +82,8 @@ wait-file $out/moved
 wait 3
 screenshot $out/moved.png
 save $out/moved.json
+edit move "vanity" 2100 1850 160
+wait 3
 locate handle rotate
 wait-file $out/turning
 screenshot $out/turning.png

@@ -68,6 +68,11 @@ static int project(const pane_view *v, const double pt[3], float *x, float *y)
 }
 
 /* Where the pointer's ray meets the plane z = height, plan mm. */
+static int inside_pane(const pane_view *v, float x, float y)
+{
+    return x >= v->r.x && y >= v->r.y && x < v->r.x + v->r.w && y < v->r.y + v->r.h;
+}
+
 static int pointer_on_plane(const pane_view *v, double sx, double sy, double height, double q[2])
 {
     double dir[3];
@@ -286,13 +291,23 @@ int planner_handles_locate(planner *p, const char *name)
      * on the ring in front of the fixture and 52 degrees round it (a 45-degree turn once
      * snapped to whole steps). */
     double from[3], to[3];
+    float x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int shown = 0;
     if (kind == UI_HANDLE_ROTATE) {
-        double a0 = atan2(h.axis[1][1], h.axis[1][0]), a1 = a0 + 52 * 3.14159265358979323846 / 180;
-        for (int k = 0; k < 2; k++) {
-            from[k] = h.pivot[k] + h.ring_mm * (k ? sin(a0) : cos(a0));
-            to[k] = h.pivot[k] + h.ring_mm * (k ? sin(a1) : cos(a1));
+        /* The front of the ring first; where that lies outside the pane (a fixture near the
+         * camera), the first of its sides and back that does, both ends of the drag. */
+        static const double starts_deg[] = {0, -90, 90, 180, -45, 45, -135, 135};
+        const double deg = 3.14159265358979323846 / 180;
+        for (size_t s = 0; s < sizeof starts_deg / sizeof starts_deg[0] && !shown; s++) {
+            double a0 = atan2(h.axis[1][1], h.axis[1][0]) + starts_deg[s] * deg, a1 = a0 + 52 * deg;
+            for (int k = 0; k < 2; k++) {
+                from[k] = h.pivot[k] + h.ring_mm * (k ? sin(a0) : cos(a0));
+                to[k] = h.pivot[k] + h.ring_mm * (k ? sin(a1) : cos(a1));
+            }
+            from[2] = to[2] = h.pivot[2];
+            shown = project(&v, from, &x0, &y0) && project(&v, to, &x1, &y1) &&
+                    inside_pane(&v, x0, y0) && inside_pane(&v, x1, y1);
         }
-        from[2] = to[2] = h.pivot[2];
     } else {
         int k = kind == UI_HANDLE_MOVE_Y;
         for (int j = 0; j < 2; j++) {
@@ -300,10 +315,10 @@ int planner_handles_locate(planner *p, const char *name)
             to[j] = from[j] + 500 * h.axis[k][j];
         }
         from[2] = to[2] = h.centre[2];
+        shown = project(&v, from, &x0, &y0) && project(&v, to, &x1, &y1);
     }
-    float x0, y0, x1, y1;
-    if (!project(&v, from, &x0, &y0) || !project(&v, to, &x1, &y1)) {
-        snprintf(p->status, sizeof p->status, "the %s handle is behind the camera", name);
+    if (!shown) {
+        snprintf(p->status, sizeof p->status, "the %s handle is not in the view", name);
         return 1;
     }
     fprintf(stderr, "tessera: locate handle %s at %.0f %.0f to %.0f %.0f\n", name, x0, y0, x1, y1);
