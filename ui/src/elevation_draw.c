@@ -8,6 +8,7 @@
  * edit line, one undo step). */
 #include "tiles.h"
 
+#include "elevation_header.h"
 #include "gui.h"
 #include "panel_layout.h"
 
@@ -16,6 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#define HEADER_LINE_PX 14.0f   /* the 13-pixel default font and a pixel of air */
 #define FIXTURE_DEPTH_MM 450.0 /* fixtures this near the face are drawn (as the print set) */
 
 static unsigned rgba(unsigned r, unsigned g, unsigned b, unsigned a)
@@ -314,7 +316,6 @@ static void elevation_in_pane(planner *p, ui_rect r)
                  t->surface);
     else
         snprintf(title, sizeof title, "%s, seen from the room", t->surface);
-    ui_gui_draw_text(left + 10, top + 8, ink, title);
     char line[1200];
     if (tilings)
         snprintf(line, sizeof line,
@@ -323,10 +324,21 @@ static void elevation_in_pane(planner *p, ui_rect r)
                  whole, cut, t->refresh_ms);
     else
         snprintf(line, sizeof line, "not tiled%s%s", t->error[0] ? ": " : "", t->error);
-    ui_gui_draw_text(left + 10, top + 24, rgba(60, 60, 60, 255), line);
-    if (t->hovering) {
-        char at[64];
+    char at[64] = "";
+    if (t->hovering)
         snprintf(at, sizeof at, "s %.0f  t %.0f mm", t->hover[0], t->hover[1]);
-        ui_gui_draw_text(right_x - 150, top + 8, rgba(60, 60, 60, 255), at);
-    }
+    /* One line each, elided to the pane's width, so the pointer's readout never covers the
+     * title and no text runs past the pane's edge. */
+    ui_elev_header header;
+    ui_elev_header_layout(left, top, r.w, HEADER_LINE_PX, ui_gui_text_width, title, line, at,
+                          &header);
+    /* A band of the pane's paper behind the header keeps it readable over a zoomed surface. */
+    float band[8] = {
+        r.x, r.y, r.x + r.w, r.y, r.x + r.w, header.bottom + 2, r.x, header.bottom + 2};
+    ui_gui_draw_quad_filled(band, rgba(246, 244, 238, 220));
+    const unsigned colours[UI_ELEV_HEADER_LINES] = {ink, rgba(60, 60, 60, 255),
+                                                    rgba(60, 60, 60, 255)};
+    for (int i = 0; i < UI_ELEV_HEADER_LINES; i++)
+        if (header.line[i].text[0])
+            ui_gui_draw_text(header.line[i].x, header.line[i].y, colours[i], header.line[i].text);
 }
