@@ -247,9 +247,11 @@ static int by_centre(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* Node layout (lit.frag's self_trace): texel 0 = bounds min, w = first triangle of a leaf or
- * the right child of an inner node (the left one follows it); texel 1 = bounds max, w = the
- * leaf's triangle count, 0 for an inner node. Indices are stored as floats: exact to 2^24. */
+/* Node layout (lit.frag's self_trace): nodes in depth-first order, so a node's subtree is the
+ * run of nodes from it up to its skip index; texel 0 = bounds min, w = first triangle of a
+ * leaf or an inner node's skip index (the node after its subtree: where a ray that misses its
+ * box goes on; a leaf's is the next node); texel 1 = bounds max, w = the leaf's triangle
+ * count, 0 for an inner node. Indices are stored as floats: exact to 2^24. */
 static int build_node(builder *b, int first, int count)
 {
     int node = b->node_count++;
@@ -276,9 +278,9 @@ static int build_node(builder *b, int first, int count)
     qsort(b->tris + first, (size_t)count, sizeof *b->tris, by_centre);
     int half = count / 2;
     build_node(b, first, half);
-    int right = build_node(b, first + half, count - half);
+    build_node(b, first + half, count - half);
     out = b->nodes + (size_t)node * NODE_TEXELS * 4; /* b->nodes does not move: sized up front */
-    out[3] = (float)right;
+    out[3] = (float)b->node_count;
     out[7] = 0.0f;
     return node;
 }
