@@ -22,43 +22,25 @@ float node_entry(int i, vec3 o, vec3 inv, float t_max, out vec4 lo, out vec4 hi)
 
 // The nearest triangle the ray o + t d meets with epsilon < t < t_max, by the tracer's rules
 // for secondary rays (ref_trace.c, hit_filter): not the triangle it leaves (gl_PrimitiveID),
-// no back face of a closed mesh. -1 when none; else its barycentrics b1, b2 and t. The nearer
-// child is visited first and a waiting one dropped once a hit lies before its box.
+// no back face of a closed mesh. -1 when none; else its barycentrics b1, b2 and t. The walk is
+// stackless (a threaded hierarchy: Smits 1998, "Efficiency issues for ray tracing"): nodes in
+// depth-first order, a box the ray misses (or enters beyond the nearest hit so far) skips its
+// subtree. llvmpipe keeps a per-pixel stack in memory, lane by lane, which cost more than the
+// boxes a nearer-child-first walk saves.
 int self_trace(vec3 o, vec3 d, float t_max, out float t_hit, out vec2 bary)
 {
     vec3 inv = safe_inverse(d);
     int own = u_self_base + gl_PrimitiveID;
-    int stack[32];
-    float stack_t[32];
-    int sp = 0, found = -1;
+    int found = -1;
     t_hit = t_max;
     bary = vec2(0.0);
-    vec4 lo, hi;
-    int node = node_entry(0, o, inv, t_hit, lo, hi) >= 0.0 ? 0 : -1;
-    while (node >= 0) {
+    vec4 lo = texelFetch(u_self_nodes, 0), hi = texelFetch(u_self_nodes, 1);
+    int end = hi.w == 0.0 ? int(lo.w) : 1; // the root's subtree: every node
+    int node = 0;
+    while (node < end) {
+        bool enters = node_entry(node, o, inv, t_hit, lo, hi) >= 0.0;
         int count = int(hi.w), first = int(lo.w);
-        if (count == 0) { // inner: the left child follows it, the right one is `first`
-            vec4 llo, lhi, rlo, rhi;
-            float tl = node_entry(node + 1, o, inv, t_hit, llo, lhi);
-            float tr = node_entry(first, o, inv, t_hit, rlo, rhi);
-            if (tl >= 0.0 && tr >= 0.0) {
-                bool left_first = tl <= tr;
-                if (sp < 32) {
-                    stack[sp] = left_first ? first : node + 1;
-                    stack_t[sp++] = left_first ? tr : tl;
-                }
-                node = left_first ? node + 1 : first;
-                lo = left_first ? llo : rlo;
-                hi = left_first ? lhi : rhi;
-                continue;
-            }
-            if (tl >= 0.0 || tr >= 0.0) {
-                node = tl >= 0.0 ? node + 1 : first;
-                lo = tl >= 0.0 ? llo : rlo;
-                hi = tl >= 0.0 ? lhi : rhi;
-                continue;
-            }
-        } else {
+        if (enters && count > 0) {
             for (int i = first; i < first + count; i++) {
                 vec4 a = texelFetch(u_self_tris, 7 * i), e1 = texelFetch(u_self_tris, 7 * i + 1),
                      e2 = texelFetch(u_self_tris, 7 * i + 2);
@@ -88,13 +70,8 @@ int self_trace(vec3 o, vec3 d, float t_max, out float t_hit, out vec2 bary)
                 found = i;
             }
         }
-        // The next waiting node whose box the ray enters before the nearest hit so far.
-        node = -1;
-        while (sp > 0 && node < 0) {
-            sp--;
-            if (stack_t[sp] < t_hit)
-                node = node_entry(stack[sp], o, inv, t_hit, lo, hi) >= 0.0 ? stack[sp] : -1;
-        }
+        // Into the node's subtree, or past it: an inner node's skip index, a leaf's next node.
+        node = enters || count > 0 ? node + 1 : first;
     }
     return found;
 }
