@@ -37,12 +37,9 @@ enum { W = 160, H = 90 };
  * to W x H (`tessera compare --worst N`). */
 enum { MIXER_X0 = 30, MIXER_X1 = 40, MIXER_Y0 = 50, MIXER_Y1 = 60 };
 
-/* off: 0 the room probe on, 1 off, both without self-reflections; -1 the preset as it is.
- * Glazes are left out in all three: they make the room probe for themselves (test_glaze),
- * which is not the "depth" lookups' use of it measured here. */
+/* off: 0 the room probe on, 1 off, both without self-reflections; -1 the preset as it is. */
 static void set_room_off(rd_reflection_defaults *d, int off)
 {
-    d->glaze = RD_SWITCH_OFF;
     if (off < 0)
         return;
     d->room_probe = off ? RD_SWITCH_OFF : RD_SWITCH_ON;
