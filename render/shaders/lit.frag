@@ -79,6 +79,15 @@ uniform float u_transparency, u_ior, u_dispersion;
 uniform int u_thin; // a double-sided sheet: light passes straight through
 #endif
 
+#ifdef GLAZE
+// A glaze (glaze.c: glossy tiles and ceramic without a probe of their own) reflects the room
+// probe (probe.c), box-corrected to the room and blurred for its highlight's lobe.
+uniform samplerCube u_room_probe;
+uniform vec3 u_room_centre;
+uniform vec3 u_proxy_min, u_proxy_max;
+uniform float u_room_lod;
+#endif
+
 layout(location = 0) out vec4 frag_color;
 // Probe captures of "depth" probes: what a highlight seen from elsewhere needs (probe.c).
 layout(location = 1) out vec4 frag_surface;
@@ -568,6 +577,17 @@ void main()
     }
 #endif
     lit = blend_reflection(u_blend, u_kr, u_mat_specular, lit, refl, dot(N, V));
+#endif
+#ifdef GLAZE
+    // Glaze is glass: Schlick's Fresnel (Schlick 1994, "An Inexpensive BRDF Model for
+    // Physically-based Rendering") with f0 = ((n - 1) / (n + 1))^2 = 0.04 for n = 1.5, blended
+    // as section 6's fresnel mode: C = (1 - F) C_lit + F C_refl.
+    {
+        vec3 d = correct_box(v_world, reflect(-V, N), u_proxy_min, u_proxy_max, u_room_centre);
+        vec3 room_seen = textureLod(u_room_probe, world_to_cmcs(d), u_room_lod).rgb;
+        float f = fresnel_schlick(0.04, dot(N, V));
+        lit = (1.0 - f) * lit + f * room_seen;
+    }
 #endif
     // A probe capture keeps the distance to what it saw for the "depth" lookup (reflect.glsl).
     frag_color = vec4(max(u_mat_emissive, lit),

@@ -1,5 +1,6 @@
 /* The lit draw of a scene's objects, shared by the main view and the probe faces. */
 #include "draw.h"
+#include "glaze.h"
 #include "emitters.h"
 #include "self_trace.h"
 #include "gl_funcs.h"
@@ -281,6 +282,43 @@ static int box_opaque(const rd_scene *s, const rd_probe *probe, const rd_object_
     return c == RD_CORRECTION_BOX && !(o->material.transparency > 0.0f) && !probe->surface;
 }
 
+/* The room probe's texture as its readers of glossiness below 1 see it (blurred), or 0 while
+ * it is not complete. */
+static unsigned room_probe_blurred(const rd_scene *s)
+{
+    const rd_probe *room = &s->room_probe;
+    if (room->faces_valid != 0x3f)
+        return 0;
+    if (rd_effective_blur(s) != RD_BLUR_PREFILTERED || !(room->gloss_min < 1.0f))
+        return room->capture;
+    return room->filtered_level >= 0 ? room->filtered : 0;
+}
+
+/* Whether object o is drawn as a glaze (glaze.h) in this pass: a lit pass (captures draw it
+ * plain: the room probe never sees itself), the scene's switch on, the room probe ready. */
+static int drawn_as_glaze(const rd_scene *s, const rd_pass *pass, const rd_object_desc *o)
+{
+    return pass->reflections && !pass->specular_off && s->reflection.glaze == RD_SWITCH_ON &&
+           rd_material_glazed(&o->material) && room_probe_blurred(s) != 0;
+}
+
+/* The glaze's inputs (lit.frag, GLAZE): the room probe, the box it is corrected to, the level
+ * of the highlight's lobe. */
+static void set_glaze_uniforms(const rd_program *p, const rd_scene *s, const rd_material *m)
+{
+    const rd_probe *room = &s->room_probe;
+    float bmin[3], bmax[3];
+    rd_effective_proxy(s, bmin, bmax);
+    glActiveTexture(GL_TEXTURE6);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, room_probe_blurred(s));
+    glUniform1i(p->u_room_probe, 6);
+    glUniform3fv(p->u_room_centre, 1, room->centre);
+    glUniform3fv(p->u_proxy_min, 1, bmin);
+    glUniform3fv(p->u_proxy_max, 1, bmax);
+    glUniform1f(p->u_room_lod, rd_probe_lod(room, rd_glaze_glossiness(m->shininess)));
+    glActiveTexture(GL_TEXTURE0);
+}
+
 /* Whether a bounding sphere (centre, radius) lies outside one of the frustum's planes. */
 static int outside_frustum(vec4 planes[6], const float sphere[4])
 {
@@ -347,6 +385,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                       (rd_scene_has_area_lights(scene) ? RD_LIT_AREA_LIGHTS : 0);
         if (m->bake && !depth_only && (m->bake == 1 || scene->lightmap))
             variant |= RD_LIT_BAKED; /* the ambient from the bake's vertices or lightmap */
+        if (!probe && !depth_only && drawn_as_glaze(scene, pass, o))
+            variant |= RD_LIT_GLAZE;
         int self_traced = probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) &&
                           !probe->planar && rd_self_traced(scene, probe);
         if (self_traced)
@@ -399,6 +439,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
             }
             if (probe)
                 set_reflection_uniforms(p, scene, probe, o);
+            if (variant & RD_LIT_GLAZE)
+                set_glaze_uniforms(p, scene, &o->material);
             if (variant & RD_LIT_SELF_TRACE)
                 rd_set_self_trace_uniforms(ctx, p, scene, probe, index,
                                            pass->sample_grid > 1 ? pass->sample_grid : 1);

@@ -1,6 +1,7 @@
 /* Per-object reflection probes (RENDERING.md sections 3, 5, 8): which objects get one, when
  * each is captured, at what resolution, and which texture the main pass samples. */
 #include "probe.h"
+#include "glaze.h"
 #include "depth_range.h"
 #include "probe_planar.h"
 #include "draw.h"
@@ -593,10 +594,10 @@ static int probe_visible(const rd_scene *s, const rd_probe *p, vec4 planes[6])
  * probe is, and blurred for the glossiness of every object that searches it. It is made on the
  * frames that capture a "depth" probe completely, so the two always show the same scene. */
 static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmin[3],
-                                   const float bmax[3], rd_frame_stats *stats)
+                                   const float bmax[3], float g_min, float g_max,
+                                   rd_frame_stats *stats)
 {
     rd_probe *p = &s->room_probe;
-    float g_min = 1.0f, g_max = 0.0f;
     for (int i = 0; i < s->object_count; i++) {
         const rd_material *m = &s->objects[i].material;
         if (s->object_probe[i] < 0 || s->probes[s->object_probe[i]].planar ||
@@ -634,6 +635,7 @@ static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmi
     rd_phase_mark("probe captures");
     p->faces_valid = 0x3f;
     p->captured_frame = s->frame;
+    p->captured_stamp = s->change_counter;
     stats->room_probe = 1;
     if (rd_phase_enabled())
         fprintf(stderr, "room probe: %d texels a face\n", p->size);
@@ -661,8 +663,8 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             stats->self_traced_probes++;
             stats->self_triangles += s->probes[i].self.tri_count;
         }
-    if (!s->probe_count)
-        return RD_OK;
+    if (!s->probe_count && s->reflection.glaze != RD_SWITCH_ON)
+        return RD_OK; /* nothing reflects */
     float bmin[3], bmax[3];
     rd_effective_proxy(s, bmin, bmax);
     mat4 vp;
@@ -674,7 +676,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
      * start that moves every frame. A probe's first, complete capture is held back only when
      * the caller asked to split them (split_captures). */
     int budget = s->reflection.max_faces_per_frame, spent = 0, depth_fresh = 0;
-    int start = (int)(s->frame % s->probe_count);
+    int start = s->probe_count ? (int)(s->frame % s->probe_count) : 0;
     for (int k = 0; k < s->probe_count; k++) {
         int i = (start + k) % s->probe_count;
         rd_probe *p = &s->probes[i];
@@ -811,8 +813,18 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     if (rd_phase_enabled() && stats->self_traced_probes)
         fprintf(stderr, "self-reflections traced: %d probes, %d triangles\n",
                 stats->self_traced_probes, stats->self_triangles);
-    if (depth_fresh && s->reflection.room_probe != RD_SWITCH_OFF &&
-        (r = room_probe_update(ctx, s, bmin, bmax, stats)) != RD_OK)
+    /* Glazes read the room probe too: it is made when one is in view and the scene changed
+     * since its last capture (compute only what the scene needs), blurred for both kinds of
+     * reader. */
+    float glaze_min, glaze_max;
+    stats->glazed = rd_glazes_in_view(s, planes, &glaze_min, &glaze_max);
+    const rd_probe *room = &s->room_probe;
+    int room_for_depth = depth_fresh && s->reflection.room_probe != RD_SWITCH_OFF;
+    int room_for_glazes = stats->glazed > 0 &&
+                          (room->faces_valid != 0x3f || room->captured_stamp != s->change_counter ||
+                           !(room->gloss_min <= glaze_min));
+    if ((room_for_depth || room_for_glazes) &&
+        (r = room_probe_update(ctx, s, bmin, bmax, glaze_min, glaze_max, stats)) != RD_OK)
         return r;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     unsigned e = rd_gl_drain_errors();

@@ -196,10 +196,12 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     /* Self-traced lookups are the full path's (not the lean box or planar variants). */
     int self_trace =
         reflecting && !per_vertex && !sphere && !box_opaque && (variant & RD_LIT_SELF_TRACE);
+    /* A glaze reads the room probe; an object with a probe of its own reflects through it. */
+    int glaze = !reflecting && (variant & RD_LIT_GLAZE);
     char defines[600];
     snprintf(defines, sizeof defines,
              "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"
-             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s",
+             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s%s",
              RD_MAX_LIGHTS, RD_MAX_EMITTERS, RD_MAX_SELF_PARTS, RD_MAX_SELF_TEXTURES,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
@@ -212,13 +214,15 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
              planar ? "#define PLANAR_REFLECTION 1\n" : "",
              self_trace ? "#define SELF_TRACE 1\n" : "",
              (variant & RD_LIT_AREA_LIGHTS) ? "#define AREA_LIGHTS 1\n" : "",
-             (variant & RD_LIT_BAKED) ? "#define BAKED_LIGHT 1\n" : "");
+             (variant & RD_LIT_BAKED) ? "#define BAKED_LIGHT 1\n" : "",
+             glaze ? "#define GLAZE 1\n" : "");
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
         p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
                      reflecting ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl "
                                   "grout.glsl area_light.glsl lit.frag"
+                     : glaze    ? "reflect.glsl shadow.glsl grout.glsl area_light.glsl lit.frag"
                                 : "shadow.glsl grout.glsl area_light.glsl lit.frag",
                      defines);
     if (!p->id)

@@ -43,6 +43,7 @@ static void add_tile_stats(rd_frame_stats *total, const rd_frame_stats *t)
     KEEP_MAX(probes);
     KEEP_MAX(adaptive);
     KEEP_MAX(room_probe);
+    KEEP_MAX(glazed);
     KEEP_MAX(emitters);
     KEEP_MAX(emitter_probes);
     KEEP_MAX(self_traced_probes);

@@ -26,7 +26,7 @@ set(STATS_DEMO ${CMAKE_SOURCE_DIR}/assets/projects/demo-bathroom.json)
 add_test(NAME cli.stats.room_probe_off
          COMMAND ${STATS_CHECK} ${OUT}/room-off.json settings.quality=print settings.room_probe=off
                  frame.room_probe=0 --
-                 $<TARGET_FILE:tessera> render ${STATS_DEMO} --quality print --room-probe off
+                 $<TARGET_FILE:tessera> render ${STATS_DEMO} --quality print --room-probe off --glaze off
                  --supersample 1 --size 160x90 -o ${OUT}/stats-room-off.png --stats ${OUT}/room-off.json)
 add_test(NAME cli.stats.room_probe_on
          COMMAND ${STATS_CHECK} ${OUT}/room-on.json settings.quality=print settings.room_probe=on

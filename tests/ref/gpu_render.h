@@ -1,5 +1,5 @@
 /* The GPU side of the tests that hold a render against the tracer (render/ref): one project
- * rendered as the tracer sees it, with shadows off (the tracer has none), a quality preset and
+ * rendered as the tracer sees it, with shadows and glazes off (it has neither), a preset and
  * one change to the scene's reflection defaults. Header-only, so its CHECKs count in the
  * test that includes it (check.h). */
 #ifndef TESTS_REF_GPU_RENDER_H
@@ -30,11 +30,13 @@ static int gpu_render(rd_context *ctx, app_project *p, const rd_view *view, cons
     rd_shadow_settings sh = rd_scene_shadows(s.scene);
     sh.mode = RD_SHADOWS_OFF;
     rd_scene_set_shadows(s.scene, &sh);
-    if (tweak) {
-        rd_reflection_defaults d = rd_scene_reflection_defaults(s.scene);
+    /* Glazes off: the direct-only tracer (bounces 0) reflects nothing off a surface without a
+     * reflectivity, where a glaze reflects the room (docs/rendering.md, "Glazes"). */
+    rd_reflection_defaults d = rd_scene_reflection_defaults(s.scene);
+    d.glaze = RD_SWITCH_OFF;
+    if (tweak)
         tweak(&d, arg);
-        rd_scene_set_reflection_defaults(s.scene, &d);
-    }
+    rd_scene_set_reflection_defaults(s.scene, &d);
     size_t n = (size_t)view->width * (size_t)view->height * 4;
     int ok = rd_render(ctx, s.scene, view) == RD_OK && rd_read_linear(ctx, img, n) == RD_OK;
     CHECK_MSG(ok, "render: %s", rd_last_error());

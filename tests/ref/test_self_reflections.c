@@ -109,6 +109,13 @@ static int render_moved(rd_context *ctx, app_project *p, const rd_view *view, in
     return ok;
 }
 
+/* The print preset's glazes, which gpu_render leaves out for the tracer: the moved scene keeps
+ * them, so the room probe they read must follow the move as well. */
+static void keep_glazes(rd_reflection_defaults *d, int on)
+{
+    d->glaze = on ? RD_SWITCH_ON : RD_SWITCH_OFF;
+}
+
 static void moved_neighbour(rd_context *ctx, app_project *p, const rd_view *view, float *moved,
                             float *fresh, float *all)
 {
@@ -116,7 +123,7 @@ static void moved_neighbour(rd_context *ctx, app_project *p, const rd_view *view
     CHECK_MSG(counter >= 0, "stress-taps.json has no \"counter\"");
     if (counter < 0 || !render_moved(ctx, p, view, counter, 0.1f, moved))
         return; /* the counter stays moved in the document: the fresh build draws it there */
-    if (!gpu_render(ctx, p, view, "print", NULL, 0, fresh, NULL))
+    if (!gpu_render(ctx, p, view, "print", keep_glazes, 1, fresh, NULL))
         return;
     for (int i = 0; i < W * H; i++)
         all[i] = 1.0f;

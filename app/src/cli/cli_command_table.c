@@ -6,7 +6,8 @@
 
 /* The options every command that renders through the GPU renderer takes. */
 #define RENDER_SETTINGS                                                                            \
-    "quality adaptive planar-mirrors room-probe exact-lamps self-reflections probe-resolution "    \
+    "quality adaptive planar-mirrors room-probe glaze exact-lamps self-reflections "               \
+    "probe-resolution "                                                                            \
     "shadows probes blur ambient backend bake bake-bounces tone exposure white-balance sky time room "
 
 static const cli_command catalog_commands[] = {
@@ -221,7 +222,7 @@ const cli_command cli_commands[] = {
      .synopsis = "PROJECT",
      .min_args = 1,
      .max_args = 1,
-     .options = "bake camera size frames warmup animate csv stats quality exact-lamps "
+     .options = "bake camera size frames warmup animate csv stats quality exact-lamps glaze "
                 "self-reflections probe-resolution probes blur ambient shadows backend",
      .summary = "milliseconds per frame (median and spread) against a full-screen floor",
      .help = "  --animate drags an object 10 mm a frame; the cpu row: CPU ms, all threads.\n",

@@ -223,6 +223,7 @@ static const cli_option_spec options[] = {
     SWITCH("adaptive", adaptive, "adaptive supersampling (default: the preset's)"),
     SWITCH("planar-mirrors", planar_mirrors, "flat mirrors as planar reflections"),
     SWITCH("room-probe", room_probe, "\"depth\" lookups also search the room probe"),
+    SWITCH("glaze", glaze, "glazed tiles reflect the room probe by Fresnel"),
     SWITCH("exact-lamps", exact_lamps, "lamps in sharp reflections intersected exactly"),
     SWITCH("bake", bake, "baked indirect light, cached (default on; TESSERA_BAKE=off)"),
     INT("bake-bounces", bake_bounces, 1, 64, "N",

@@ -28,6 +28,7 @@ static cJSON *frame_json(const rd_frame_stats *st)
     FIELD(refined_pixels);
     FIELD(planar_mirrors);
     FIELD(room_probe);
+    FIELD(glazed);
     FIELD(emitters);
     FIELD(emitter_probes);
     FIELD(self_traced_probes);
@@ -49,6 +50,7 @@ static cJSON *settings_json(const cli_session *s, const cli_options *o, const rd
     cJSON_AddStringToObject(j, "adaptive", on_off(view->adaptive && view->supersample > 1));
     cJSON_AddStringToObject(j, "planar_mirrors", on_off(d.planar_mirrors == RD_SWITCH_ON));
     cJSON_AddStringToObject(j, "room_probe", on_off(d.room_probe != RD_SWITCH_OFF));
+    cJSON_AddStringToObject(j, "glaze", on_off(d.glaze == RD_SWITCH_ON));
     cJSON_AddStringToObject(j, "exact_lamps", on_off(d.exact_lamps != RD_SWITCH_OFF));
     cJSON_AddStringToObject(j, "self_reflections", on_off(d.self_reflections > 0));
     cJSON_AddNumberToObject(j, "self_reflection_rays", d.self_reflections);
@@ -119,7 +121,6 @@ int cli_write_json_atomic(const char *path, cJSON *root)
     free(text);
     return rc;
 }
-
 
 /* The written image's contrast (app_image_contrast); NULL for a linear (float) file. */
 static cJSON *image_json(const char *image_path)

@@ -46,6 +46,7 @@ app_result app_tile_spec_from_catalog(cat_db *db, const app_product_ref *ref, ap
     /* DOMAIN.md: decor tiles are never reused; the others may be turned. */
     spec->reusable_offcuts = spec->rotatable = p.tile.type != CAT_TILE_DEK;
     snprintf(spec->texture, sizeof spec->texture, "%s", p.tile.texture);
+    spec->matt = p.tile.surface != CAT_SURFACE_GLOSSY;
     if (product)
         *product = p;
     else

@@ -138,7 +138,11 @@ static void add_layout(rm_build *b, const app_tiling *tiling, const app_tile_lay
             snprintf(path, sizeof path, "%s/%s", app_placement_assets_dir(), l->specs[k].texture);
         int textured =
             path[0] && access(path, R_OK) == 0 && strlen(path) < sizeof m->inline_material.texture;
-        m->inline_material = plain_material(name, textured ? white : grey, 0.25f, 64);
+        /* A glossy glaze's highlight (and its reflection of the room: render's glaze.h), or the
+         * catalog's matt surfaces' broad, faint one. */
+        int matt = l->specs[k].matt;
+        m->inline_material =
+            plain_material(name, textured ? white : grey, matt ? 0.1f : 0.25f, matt ? 16 : 64);
         if (textured) {
             memcpy(m->inline_material.texture, path, strlen(path) + 1); /* fits: checked above */
             double g = l->grout_mm, ww = l->specs[k].work_w_mm, wh = l->specs[k].work_h_mm;

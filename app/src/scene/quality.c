@@ -12,8 +12,9 @@
  * probes then hold only what lies beyond the fixtures, and 256 texels serve as well as 512 at
  * less time. Final sizes its probes automatically, by the reflection's size on screen (at most
  * 256 texels): at its 2x2 supersampling that is faster than a fixed 128 and as accurate in the
- * sweeps of both demos. Each preset's cost and accuracy, with the commands that measure them:
- * docs/accuracy.md and docs/benchmarks.md. */
+ * sweeps of both demos. Final and print show the room in glazed tiles by Fresnel (the room
+ * probe, made only when a glaze is in view). Each preset's cost and accuracy, with the commands
+ * that measure them: docs/accuracy.md and docs/benchmarks.md. */
 #include "app/scene/quality.h"
 
 #include <string.h>
@@ -59,6 +60,7 @@ static const app_quality presets[] = {
         .adaptive = RD_SWITCH_OFF,
         .planar_mirrors = RD_SWITCH_ON,
         .room_probe = RD_SWITCH_ON,
+        .glaze = RD_SWITCH_ON,
     },
     {
         .name = "print",
@@ -77,6 +79,7 @@ static const app_quality presets[] = {
         .planar_mirrors = RD_SWITCH_ON,
         .self_reflections = APP_SELF_REFLECTION_RAYS,
         .room_probe = RD_SWITCH_OFF,
+        .glaze = RD_SWITCH_ON,
     },
 };
 
@@ -120,6 +123,7 @@ void app_quality_apply(const app_quality *q, rd_scene *scene)
     d.planar_mirrors = q->planar_mirrors;
     d.self_reflections = q->self_reflections;
     d.room_probe = q->room_probe;
+    d.glaze = q->glaze;
     rd_scene_set_reflection_defaults(scene, &d);
     /* Shadows by preset: none in drafts and live walk-throughs (hard shadows are filtered per
      * sample on the CPU under llvmpipe, too dear for a live frame budget; `--shadows hard`

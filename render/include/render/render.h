@@ -308,6 +308,10 @@ typedef struct rd_reflection_defaults {
                                  intersected exactly, and those probes leave them out; OFF: they
                                  stay in the probes, reflected as the probe saw them (docs/
                                  rendering.md, "Lamps in sharp reflections"). Default on */
+    rd_switch glaze;          /* ON: glazed surfaces without a probe of their own (glossy tiles:
+                                 rd_material_glazed) reflect the room probe, weighted by
+                                 Schlick's Fresnel for glass (docs/rendering.md, "Glazes").
+                                 Default off */
     int self_reflections;     /* > 0: a fixture's lookups trace its own parts and the fixtures
                                  beside it (a tap's lever in its body, the basin by it), which its
                                  probe then leaves out; blurred lookups trace this many directions
@@ -366,7 +370,8 @@ typedef struct rd_frame_stats {
     int adaptive;             /* 1: the samples were taken adaptively (renderer_adaptive.c) */
     long long refined_pixels; /* adaptive supersampling: pixels given s x s samples */
     int planar_mirrors;       /* flat mirrors captured as planar reflections (probe_planar.c) */
-    int room_probe;           /* 1: the room probe was captured ("depth" lookups; probe.c) */
+    int room_probe;           /* 1: the room probe was captured ("depth" lookups, glazes) */
+    int glazed;               /* objects in view drawn with the glaze's reflection */
     int emitters;             /* lamps reflected exactly in sharp reflections (emitters.c) */
     int emitter_probes;       /* probes captured without them (their readers are all sharp) */
     int self_traced_probes;   /* probes whose lookups trace their own parts (self_trace.c) */

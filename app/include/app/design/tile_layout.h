@@ -121,6 +121,7 @@ typedef struct app_tile_spec {
     int reusable_offcuts;        /* 1: a cut's remainder may serve another cut (not for DEK) */
     int rotatable;     /* 1: a remainder may be turned 90 degrees to serve (not for DEK) */
     char texture[256]; /* catalog texture path relative to assets/, may be "" */
+    int matt;          /* 1: the catalog's surface is matt or structured (no glaze to show) */
 } app_tile_spec;
 
 /* ---- the layout ----------------------------------------------------------------------------- */

@@ -33,6 +33,8 @@ typedef struct app_quality {
     /* OFF: "depth" lookups leave the room probe out (rd_reflection_defaults.room_probe): the
      * self-reflection trace finds what it was searched for, at less cost. */
     rd_switch room_probe;
+    /* ON: glazed tiles reflect the room probe (rd_reflection_defaults.glaze). */
+    rd_switch glaze;
 } app_quality;
 
 /* The print preset's self-reflection rays, which --self-reflections on gives the others. */
