@@ -14,6 +14,9 @@ invariant gl_Position;
 out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;
+#ifdef WOOD_GRAIN
+out vec3 v_object; // the grain is fixed to the object (wood.glsl)
+#endif
 
 #ifdef BAKED_LIGHT
 layout(location = 3) in vec4 a_baked;       // I (rgb), occlusion: per-vertex bake
@@ -38,6 +41,9 @@ void main()
     v_world = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
+#ifdef WOOD_GRAIN
+    v_object = a_position;
+#endif
 #ifdef BAKED_LIGHT
     v_baked = a_baked;
     v_lightmap_uv = a_lightmap_uv;

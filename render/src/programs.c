@@ -1,6 +1,7 @@
 /* Compiles the embedded GLSL into program variants. A variant is chosen by material features
  * (ARCHITECTURE.md): code a material does not need is not in its program. */
 #include "gl_funcs.h"
+#include "render/shade_ref.h"
 #include "render_internal.h"
 #include "scene_internal.h"
 #include "shadow.h"
@@ -196,10 +197,21 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
     /* Self-traced lookups are the full path's (not the lean box or planar variants). */
     int self_trace =
         reflecting && !per_vertex && !sphere && !box_opaque && (variant & RD_LIT_SELF_TRACE);
-    char defines[600];
+    char wood[400] = "";
+    if (variant & RD_LIT_WOOD) /* wood.glsl, with rd_ref_wood_grain's constants */
+        snprintf(
+            wood, sizeof wood,
+            "#define WOOD_GRAIN 1\n#define WOOD_RING_SPACING float(%.9g)\n"
+            "#define WOOD_AXIS_Y float(%.9g)\n#define WOOD_AXIS_Z float(%.9g)\n"
+            "#define WOOD_WOBBLE float(%.9g)\n#define WOOD_RING_CONTRAST float(%.9g)\n"
+            "#define WOOD_PORE_CONTRAST float(%.9g)\n#define WOOD_FIGURE_CONTRAST float(%.9g)\n",
+            (double)RD_WOOD_RING_SPACING, (double)RD_WOOD_AXIS_Y, (double)RD_WOOD_AXIS_Z,
+            (double)RD_WOOD_WOBBLE, (double)RD_WOOD_RING_CONTRAST, (double)RD_WOOD_PORE_CONTRAST,
+            (double)RD_WOOD_FIGURE_CONTRAST);
+    char defines[1000];
     snprintf(defines, sizeof defines,
              "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"
-             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s",
+             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s%s",
              RD_MAX_LIGHTS, RD_MAX_EMITTERS, RD_MAX_SELF_PARTS, RD_MAX_SELF_TEXTURES,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
@@ -212,14 +224,14 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
              planar ? "#define PLANAR_REFLECTION 1\n" : "",
              self_trace ? "#define SELF_TRACE 1\n" : "",
              (variant & RD_LIT_AREA_LIGHTS) ? "#define AREA_LIGHTS 1\n" : "",
-             (variant & RD_LIT_BAKED) ? "#define BAKED_LIGHT 1\n" : "");
+             (variant & RD_LIT_BAKED) ? "#define BAKED_LIGHT 1\n" : "", wood);
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
         p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
                      reflecting ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl "
-                                  "grout.glsl area_light.glsl lit.frag"
-                                : "shadow.glsl grout.glsl area_light.glsl lit.frag",
+                                  "grout.glsl wood.glsl area_light.glsl lit.frag"
+                                : "shadow.glsl grout.glsl wood.glsl area_light.glsl lit.frag",
                      defines);
     if (!p->id)
         return NULL;

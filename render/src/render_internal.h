@@ -89,7 +89,8 @@ enum {
     RD_LIT_SELF_TRACE = 1024,  /* the lookup traces the product's own parts (self_trace.c) */
     RD_LIT_AREA_LIGHTS = 2048, /* area_light.glsl: rectangle lights and window portals */
     RD_LIT_BAKED = 4096,       /* the ambient intensity from the bake (ref/ref_bake.h) */
-    RD_LIT_VARIANTS = 8192
+    RD_LIT_WOOD = 8192,        /* wood.glsl: the procedural grain (rd_material.pattern) */
+    RD_LIT_VARIANTS = 16384
 };
 
 struct rd_context {

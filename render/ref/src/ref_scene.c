@@ -26,6 +26,7 @@ static void mesh_free(ref_mesh *m)
     free(m->positions);
     free(m->normals);
     free(m->uvs);
+    free(m->object_positions);
     free(m->indices);
     free(m->tri_normals);
     memset(m, 0, sizeof *m);
@@ -140,6 +141,12 @@ static ref_result bake_mesh(ref_scene *s, const ref_mesh_desc *d, ref_mesh *m)
     m->tri_normals = malloc((3 * nt + 1) * sizeof *m->tri_normals);
     if (!m->positions || !m->normals || !m->uvs || !m->indices || !m->tri_normals)
         return ref_fail(REF_ERR_OUT_OF_MEMORY, "ref_scene_add_mesh: out of memory");
+    if (d->material.pattern != RD_PATTERN_NONE) { /* the grain is fixed to the object */
+        m->object_positions = malloc(3 * nv * sizeof *m->object_positions);
+        if (!m->object_positions)
+            return ref_fail(REF_ERR_OUT_OF_MEMORY, "ref_scene_add_mesh: out of memory");
+        memcpy(m->object_positions, d->positions, 3 * nv * sizeof *m->object_positions);
+    }
     double t[16];
     int identity = is_zero_matrix(d->transform);
     for (int i = 0; i < 16; i++)
