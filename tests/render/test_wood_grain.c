@@ -64,15 +64,14 @@ static void test_gpu_matches_twin(const float *img)
             double d = fabs(img[4 * (j * W + i) + 1] - want);
             worst = d > worst ? d : worst;
             sum += d;
-            far += d > 0.01 * OAK[1];
+            far += d > 1e-3 * OAK[1];
         }
-    /* Perspective moves the pixel centres' footprints a little off the flat estimate, and the
-     * rasteriser interpolates the position in its own precision: 1 % of the colour at most at
-     * a handful of pixels on the late wood's sharp edge, rounding elsewhere. */
-    printf("GPU vs rd_ref_wood_grain: mean |d| %.2e, max %.2e, %d pixels over 1 %%\n",
+    /* The target holds float16 (a step of 2.4e-4 at this colour): agreement to a step or two,
+     * off by more only where the late wood's sharp edge falls between the two's positions. */
+    printf("GPU vs rd_ref_wood_grain: mean |d| %.2e, max %.2e, %d pixels over 1e-3 of it\n",
            sum / (W * H), worst, far);
-    CHECK_MSG(sum / (W * H) < 1e-3 * OAK[1], "mean difference %.2e", sum / (W * H));
-    CHECK_MSG(far < W * H / 200, "%d pixels differ by more than 1 %%", far);
+    CHECK_MSG(sum / (W * H) < 1.6e-4, "mean difference %.2e", sum / (W * H));
+    CHECK_MSG(far < W * H / 1000, "%d pixels differ by more than 1e-3 of the colour", far);
 }
 
 /* Mean absolute difference between neighbours along x (the grain) and along y (across). */
