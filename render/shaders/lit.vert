@@ -15,7 +15,9 @@ out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;
 #ifdef WOOD_GRAIN
-out vec3 v_object; // the grain is fixed to the object (wood.glsl)
+// The grain is fixed to the object (wood.glsl): its own axes, in metres (the model matrix's
+// scale taken out of the rotation), whatever the model's units or a primitive's size.
+out vec3 v_object;
 #endif
 
 #ifdef BAKED_LIGHT
@@ -42,7 +44,7 @@ void main()
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
 #ifdef WOOD_GRAIN
-    v_object = a_position;
+    v_object = a_position * vec3(length(u_model[0].xyz), length(u_model[1].xyz), length(u_model[2].xyz));
 #endif
 #ifdef BAKED_LIGHT
     v_baked = a_baked;

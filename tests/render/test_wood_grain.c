@@ -25,7 +25,10 @@ static void render_panel(rd_context *ctx, rd_mesh plane, rd_pattern pattern, flo
 {
     rd_scene *s = rd_scene_create(ctx);
     rd_object_desc o = {.mesh = plane};
-    o.transform[0] = o.transform[5] = o.transform[10] = o.transform[15] = 1.0f;
+    /* The unit plane scaled to 2 x 2 m: the grain is in metres along the object's axes (the
+     * mesh position times the transform's scale), so the panel point is the world point. */
+    o.transform[0] = o.transform[5] = 2.0f;
+    o.transform[10] = o.transform[15] = 1.0f;
     for (int k = 0; k < 3; k++)
         o.material.ambient[k] = o.material.diffuse[k] = OAK[k];
     o.material.pattern = pattern;

@@ -145,7 +145,9 @@ typedef struct rd_material {
     float joint_color[3];
     /* A procedural pattern on the albedo, from the object-space position (no UVs):
      * RD_PATTERN_WOOD is a wood grain along the object's x axis whose mean is 1, so the
-     * material keeps its colour (shaders/wood.glsl, rd_ref_wood_grain). */
+     * material keeps its colour (shaders/wood.glsl, rd_ref_wood_grain). It is computed at the
+     * mesh position times the transform's scale per axis: in metres along the object's own
+     * axes, whatever the mesh's units. */
     rd_pattern pattern;
 
     /* Reflections (RENDERING.md sections 3-6). reflectivity k_r = 0: no probe, no reflection
