@@ -66,8 +66,9 @@ float rd_ref_wood_grain(const float p[3], float footprint)
     /* Figure: broad, slow changes of tone between boards' regions. */
     float figure = value_noise(p[0] * 3.0f, p[1] * 11.0f, p[2] * 11.0f);
     /* Fade what a pixel cannot resolve to its mean (0), so the grain never aliases into noise:
-     * the rings when the footprint nears a ring, the pores when it nears a pore. */
-    float fade_rings = clamp01(1.0f - footprint / RD_WOOD_RING_SPACING);
+     * the rings from a footprint of a quarter ring to half a ring (their Nyquist limit), the
+     * pores likewise from 0.56 mm to 1.1 mm (a cell of their noise). */
+    float fade_rings = clamp01(2.0f - 4.0f * footprint / RD_WOOD_RING_SPACING);
     float fade_pores = clamp01(2.0f - footprint * 1800.0f);
     return 1.0f - RD_WOOD_RING_CONTRAST * fade_rings * late +
            RD_WOOD_PORE_CONTRAST * fade_pores * pores + RD_WOOD_FIGURE_CONTRAST * figure;

@@ -9,6 +9,7 @@
 #include "render/primitives.h"
 #include "render/render.h"
 #include "render/shade_ref.h"
+#include "ref/ref.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -19,6 +20,17 @@ static const float OAK[3] = {0.55f, 0.4f, 0.26f};
 #define EYE_H 0.25f
 #define HALF 0.05f     /* the close view shows 10 x 10 cm of the panel: 0.4 mm a pixel */
 #define WIDE_HALF 0.3f /* the wide view: a 60 x 60 cm panel, a vanity's front */
+
+static rd_view panel_view(float half)
+{
+    return (rd_view){.eye = {0.0f, 0.0f, EYE_H},
+                     .target = {0.0f, 0.0f, 0.0f},
+                     .up = {0.0f, 1.0f, 0.0f},
+                     .fov_y_deg = (float)(2.0 * atan(half / EYE_H) * 180.0 / 3.14159265358979),
+                     .width = W,
+                     .height = H,
+                     .tonemap = RD_TONEMAP_CLAMP};
+}
 
 static void render_panel(rd_context *ctx, rd_mesh plane, rd_pattern pattern, float half,
                          float *linear)
@@ -34,13 +46,7 @@ static void render_panel(rd_context *ctx, rd_mesh plane, rd_pattern pattern, flo
     o.material.pattern = pattern;
     CHECK(rd_scene_add_object(s, &o) == RD_OK);
     rd_scene_set_ambient(s, (const float[3]){1, 1, 1});
-    rd_view v = {.eye = {0.0f, 0.0f, EYE_H},
-                 .target = {0.0f, 0.0f, 0.0f},
-                 .up = {0.0f, 1.0f, 0.0f},
-                 .fov_y_deg = (float)(2.0 * atan(half / EYE_H) * 180.0 / 3.14159265358979),
-                 .width = W,
-                 .height = H,
-                 .tonemap = RD_TONEMAP_CLAMP};
+    rd_view v = panel_view(half);
     CHECK(rd_render(ctx, s, &v) == RD_OK);
     CHECK(rd_read_linear(ctx, linear, (size_t)W * H * 4) == RD_OK);
     rd_scene_destroy(s);
@@ -117,6 +123,38 @@ static void test_plain_is_flat(const float *img)
             }
 }
 
+/* The reference tracer (render/ref) shades the same panel with the twin at each hit: the
+ * close view's footprint is below every fade, so it agrees with the GPU. */
+static void test_reference(const rd_mesh_data *d, const float *gpu)
+{
+    ref_scene *rs = ref_scene_create();
+    ref_mesh_desc m = {.positions = d->positions,
+                       .normals = d->normals,
+                       .uvs = d->uvs,
+                       .indices = d->indices,
+                       .vertex_count = d->vertex_count,
+                       .index_count = d->index_count};
+    m.transform[0] = m.transform[5] = 2.0f;
+    m.transform[10] = m.transform[15] = 1.0f;
+    for (int k = 0; k < 3; k++)
+        m.material.ambient[k] = m.material.diffuse[k] = OAK[k];
+    m.material.pattern = RD_PATTERN_WOOD;
+    CHECK(ref_scene_add_mesh(rs, &m) == REF_OK);
+    ref_scene_set_ambient(rs, (const float[3]){1, 1, 1});
+    ref_image img;
+    ref_render_desc rd = {.view = panel_view(HALF), .threads = 1};
+    if (ref_render(rs, &rd, &img) == REF_OK) {
+        double sum = 0.0;
+        for (int i = 0; i < W * H; i++)
+            sum += fabs(img.linear[4 * i + 1] - gpu[4 * i + 1]);
+        printf("reference vs GPU: mean |d| %.2e\n", sum / (W * H));
+        CHECK_MSG(sum / (W * H) < 1.6e-4, "the reference differs by %.2e", sum / (W * H));
+        ref_image_free(&img);
+    } else
+        CHECK_MSG(0, "ref_render failed");
+    ref_scene_destroy(rs);
+}
+
 /* The twin's own invariants, without GL: the mean over many rings is 1 and the footprint
  * fade takes a distant view to its mean. */
 static void test_twin(void)
@@ -149,10 +187,11 @@ int main(void)
     rd_mesh_data_plane(&d);
     rd_mesh_desc desc = rd_mesh_data_desc(&d);
     rd_mesh plane = rd_mesh_create(ctx, &desc);
-    rd_mesh_data_free(&d);
     float *img = malloc((size_t)W * H * 4 * sizeof *img);
     render_panel(ctx, plane, RD_PATTERN_WOOD, HALF, img);
     test_gpu_matches_twin(img);
+    test_reference(&d, img);
+    rd_mesh_data_free(&d);
     test_direction(img);
     render_panel(ctx, plane, RD_PATTERN_WOOD, WIDE_HALF, img);
     test_mean(img);
