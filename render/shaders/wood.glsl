@@ -36,11 +36,14 @@ float wood_grain(vec3 p, float footprint)
     float r = sqrt(dy * dy + dz * dz) + wobble;
     float f = fract(r / WOOD_RING_SPACING);
     float late = f * f * f * f - 0.2;
+    float bands = wood_noise(vec3(p.x * 1.5, r * 60.0, 0.5));
     float pores = wood_noise(vec3(p.x * 12.0, p.y * 900.0, p.z * 900.0));
     float figure = wood_noise(vec3(p.x * 3.0, p.y * 11.0, p.z * 11.0));
     float fade_rings = clamp(2.0 - 4.0 * footprint / WOOD_RING_SPACING, 0.0, 1.0);
     float fade_pores = clamp(2.0 - footprint * 1800.0, 0.0, 1.0);
-    return 1.0 - WOOD_RING_CONTRAST * fade_rings * late + WOOD_PORE_CONTRAST * fade_pores * pores +
+    float fade_bands = clamp(2.0 - footprint * 240.0, 0.0, 1.0);
+    return 1.0 - WOOD_RING_CONTRAST * fade_rings * late + WOOD_BAND_CONTRAST * fade_bands * bands +
+           WOOD_PORE_CONTRAST * fade_pores * pores +
            WOOD_FIGURE_CONTRAST * figure;
 }
 #endif

@@ -204,10 +204,11 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
             "#define WOOD_GRAIN 1\n#define WOOD_RING_SPACING float(%.9g)\n"
             "#define WOOD_AXIS_Y float(%.9g)\n#define WOOD_AXIS_Z float(%.9g)\n"
             "#define WOOD_WOBBLE float(%.9g)\n#define WOOD_RING_CONTRAST float(%.9g)\n"
-            "#define WOOD_PORE_CONTRAST float(%.9g)\n#define WOOD_FIGURE_CONTRAST float(%.9g)\n",
+            "#define WOOD_PORE_CONTRAST float(%.9g)\n#define WOOD_FIGURE_CONTRAST float(%.9g)\n"
+            "#define WOOD_BAND_CONTRAST float(%.9g)\n",
             (double)RD_WOOD_RING_SPACING, (double)RD_WOOD_AXIS_Y, (double)RD_WOOD_AXIS_Z,
             (double)RD_WOOD_WOBBLE, (double)RD_WOOD_RING_CONTRAST, (double)RD_WOOD_PORE_CONTRAST,
-            (double)RD_WOOD_FIGURE_CONTRAST);
+            (double)RD_WOOD_FIGURE_CONTRAST, (double)RD_WOOD_BAND_CONTRAST);
     char defines[1000];
     snprintf(defines, sizeof defines,
              "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"

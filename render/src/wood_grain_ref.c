@@ -61,6 +61,9 @@ float rd_ref_wood_grain(const float p[3], float footprint)
     f = f - floorf(f);
     /* The late wood, darker, at the ring's outer end: f^4 has mean 1/5 over a ring. */
     float late = f * f * f * f - 0.2f;
+    /* Bands: runs of lighter and darker years, noise over the ring radius (1.7 cm cells), so
+     * they follow the rings' arcs and carry the grain where a pixel spans a ring or more. */
+    float bands = value_noise(p[0] * 1.5f, r * 60.0f, 0.5f);
     /* Pores and streaks: noise fine across the grain and long along it. */
     float pores = value_noise(p[0] * 12.0f, p[1] * 900.0f, p[2] * 900.0f);
     /* Figure: broad, slow changes of tone between boards' regions. */
@@ -70,6 +73,8 @@ float rd_ref_wood_grain(const float p[3], float footprint)
      * pores likewise from 0.56 mm to 1.1 mm (a cell of their noise). */
     float fade_rings = clamp01(2.0f - 4.0f * footprint / RD_WOOD_RING_SPACING);
     float fade_pores = clamp01(2.0f - footprint * 1800.0f);
+    float fade_bands = clamp01(2.0f - footprint * 240.0f);
     return 1.0f - RD_WOOD_RING_CONTRAST * fade_rings * late +
-           RD_WOOD_PORE_CONTRAST * fade_pores * pores + RD_WOOD_FIGURE_CONTRAST * figure;
+           RD_WOOD_BAND_CONTRAST * fade_bands * bands + RD_WOOD_PORE_CONTRAST * fade_pores * pores +
+           RD_WOOD_FIGURE_CONTRAST * figure;
 }

@@ -62,6 +62,7 @@ void rd_ref_joint_texcoord(const float uv[2], const float joint_width[2], int te
 #define RD_WOOD_AXIS_Z (-0.61f)
 #define RD_WOOD_WOBBLE 0.011f       /* m of noise on the ring radius */
 #define RD_WOOD_RING_CONTRAST 0.22f /* late wood: the scale dips by up to 0.18 */
+#define RD_WOOD_BAND_CONTRAST 0.09f /* runs of light and dark years, 1.7 cm */
 #define RD_WOOD_PORE_CONTRAST 0.035f
 #define RD_WOOD_FIGURE_CONTRAST 0.035f
 float rd_ref_wood_grain(const float p[3], float footprint);
