@@ -4,6 +4,9 @@
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
+#ifdef WOOD_GRAIN
+in vec3 v_object;
+#endif
 
 uniform vec3 u_eye;
 uniform vec3 u_ambient_light; // I_a
@@ -412,6 +415,10 @@ void main()
     float joint = 0.0; // tile joints (grout.glsl)
 #ifdef HAS_DIFFUSE_TEXTURE
     albedo_scale = tile_texture(u_diffuse_texture, v_uv * u_uv_scale, joint);
+#endif
+#ifdef WOOD_GRAIN
+    vec3 fw = fwidth(v_object);
+    albedo_scale *= wood_grain(v_object, max(fw.x, max(fw.y, fw.z)));
 #endif
     vec3 c_a = mix(u_mat_ambient * albedo_scale, u_joint_color, joint);
     vec3 c_d = mix(u_mat_diffuse * albedo_scale, u_joint_color, joint);

@@ -14,6 +14,11 @@ invariant gl_Position;
 out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;
+#ifdef WOOD_GRAIN
+// The grain is fixed to the object (wood.glsl): its own axes, in metres (the model matrix's
+// scale taken out of the rotation), whatever the model's units or a primitive's size.
+out vec3 v_object;
+#endif
 
 #ifdef BAKED_LIGHT
 layout(location = 3) in vec4 a_baked;       // I (rgb), occlusion: per-vertex bake
@@ -38,6 +43,9 @@ void main()
     v_world = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
+#ifdef WOOD_GRAIN
+    v_object = a_position * vec3(length(u_model[0].xyz), length(u_model[1].xyz), length(u_model[2].xyz));
+#endif
 #ifdef BAKED_LIGHT
     v_baked = a_baked;
     v_lightmap_uv = a_lightmap_uv;

@@ -383,6 +383,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                            : 0) |
                       (shadows ? RD_LIT_SHADOWS : 0) |
                       (rd_scene_has_area_lights(scene) ? RD_LIT_AREA_LIGHTS : 0);
+        if (o->material.pattern == RD_PATTERN_WOOD && !depth_only)
+            variant |= RD_LIT_WOOD;
         if (m->bake && !depth_only && (m->bake == 1 || scene->lightmap))
             variant |= RD_LIT_BAKED; /* the ambient from the bake's vertices or lightmap */
         if (!probe && !depth_only && drawn_as_glaze(scene, pass, o))

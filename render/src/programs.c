@@ -1,6 +1,7 @@
 /* Compiles the embedded GLSL into program variants. A variant is chosen by material features
  * (ARCHITECTURE.md): code a material does not need is not in its program. */
 #include "gl_funcs.h"
+#include "render/shade_ref.h"
 #include "render_internal.h"
 #include "scene_internal.h"
 #include "shadow.h"
@@ -198,10 +199,22 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
         reflecting && !per_vertex && !sphere && !box_opaque && (variant & RD_LIT_SELF_TRACE);
     /* A glaze reads the room probe; an object with a probe of its own reflects through it. */
     int glaze = !reflecting && (variant & RD_LIT_GLAZE);
-    char defines[600];
+    char wood[400] = "";
+    if (variant & RD_LIT_WOOD) /* wood.glsl, with rd_ref_wood_grain's constants */
+        snprintf(
+            wood, sizeof wood,
+            "#define WOOD_GRAIN 1\n#define WOOD_RING_SPACING float(%.9g)\n"
+            "#define WOOD_AXIS_Y float(%.9g)\n#define WOOD_AXIS_Z float(%.9g)\n"
+            "#define WOOD_WOBBLE float(%.9g)\n#define WOOD_RING_CONTRAST float(%.9g)\n"
+            "#define WOOD_PORE_CONTRAST float(%.9g)\n#define WOOD_FIGURE_CONTRAST float(%.9g)\n"
+            "#define WOOD_BAND_CONTRAST float(%.9g)\n",
+            (double)RD_WOOD_RING_SPACING, (double)RD_WOOD_AXIS_Y, (double)RD_WOOD_AXIS_Z,
+            (double)RD_WOOD_WOBBLE, (double)RD_WOOD_RING_CONTRAST, (double)RD_WOOD_PORE_CONTRAST,
+            (double)RD_WOOD_FIGURE_CONTRAST, (double)RD_WOOD_BAND_CONTRAST);
+    char defines[1000];
     snprintf(defines, sizeof defines,
              "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"
-             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s%s",
+             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s%s%s",
              RD_MAX_LIGHTS, RD_MAX_EMITTERS, RD_MAX_SELF_PARTS, RD_MAX_SELF_TEXTURES,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
@@ -215,16 +228,17 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
              self_trace ? "#define SELF_TRACE 1\n" : "",
              (variant & RD_LIT_AREA_LIGHTS) ? "#define AREA_LIGHTS 1\n" : "",
              (variant & RD_LIT_BAKED) ? "#define BAKED_LIGHT 1\n" : "",
-             glaze ? "#define GLAZE 1\n" : "");
+             glaze ? "#define GLAZE 1\n" : "", wood);
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
-        p->id = link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
-                     reflecting ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl "
-                                  "grout.glsl area_light.glsl lit.frag"
-                     : glaze    ? "reflect.glsl shadow.glsl grout.glsl area_light.glsl lit.frag"
-                                : "shadow.glsl grout.glsl area_light.glsl lit.frag",
-                     defines);
+        p->id =
+            link(reflecting ? "reflect.glsl lit.vert" : "lit.vert",
+                 reflecting ? "reflect.glsl emitters.glsl self_trace.glsl shadow.glsl "
+                              "grout.glsl wood.glsl area_light.glsl lit.frag"
+                 : glaze ? "reflect.glsl shadow.glsl grout.glsl wood.glsl area_light.glsl lit.frag"
+                         : "shadow.glsl grout.glsl wood.glsl area_light.glsl lit.frag",
+                 defines);
     if (!p->id)
         return NULL;
     locate_lit(p);

@@ -90,7 +90,8 @@ enum {
     RD_LIT_AREA_LIGHTS = 2048, /* area_light.glsl: rectangle lights and window portals */
     RD_LIT_BAKED = 4096,       /* the ambient intensity from the bake (ref/ref_bake.h) */
     RD_LIT_GLAZE = 8192,       /* no probe of its own: the room probe by Fresnel (glaze.c) */
-    RD_LIT_VARIANTS = 16384
+    RD_LIT_WOOD = 16384,       /* wood.glsl: the procedural grain (rd_material.pattern) */
+    RD_LIT_VARIANTS = 32768
 };
 
 struct rd_context {

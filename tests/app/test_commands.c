@@ -245,6 +245,10 @@ static app_command_desc random_desc(const app_project *p, int serial)
         d.glossiness = (float)rnd_mm(0, 1);
         d.blend = rnd(4);
         break;
+    case APP_CMD_SET_PATTERN: /* sometimes refused (3 is no pattern) */
+        count = p->material_count;
+        d.material_pattern = rnd(4);
+        break;
     case APP_CMD_SET_PROBE: /* cmd_probe.c; sometimes refused (static without a map, 96) */
         count = p->material_count;
         d.probe_update = rnd(6);

@@ -53,6 +53,7 @@ static void check_same(const app_project *a, const app_project *b)
         CHECK(x->shininess == y->shininess);
         SAME_STR(x->texture, y->texture);
         SAME_N(x->texture_size_mm, y->texture_size_mm, 2);
+        CHECK(x->pattern == y->pattern);
     }
     CHECK(a->object_count == b->object_count);
     for (int i = 0; i < a->object_count && i < b->object_count; i++) {
@@ -171,6 +172,7 @@ static void test_numbers_exact(void)
     a.materials[0].diffuse[1] = 1e-45f; /* the smallest float */
     a.materials[0].emissive[2] = 3.4028234e38f;
     a.materials[0].shininess = 1.0f / 3.0f;
+    a.materials[0].pattern = APP_PATTERN_WOOD; /* the default (none) stays out of the file */
     a.lights[0].intensity = 16777217.0f;
     a.render.exposure_auto = 0; /* a fixed exposure */
     a.render.exposure_ev = -0.7f;

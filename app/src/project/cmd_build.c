@@ -646,6 +646,15 @@ static app_result build_material(const app_project *p, const app_command_desc *d
     }
     if ((r = need_index(d->index, p->material_count, "material", err, err_size)) != APP_OK)
         return r;
+    if (d->type == APP_CMD_SET_PATTERN) {
+        if (d->material_pattern < APP_PATTERN_NONE || d->material_pattern > APP_PATTERN_WOOD)
+            return fail(err, err_size, APP_ERR_SCHEMA, "a material's pattern is none or wood");
+        app_material m = p->materials[d->index];
+        m.pattern = d->material_pattern;
+        snprintf(c->label, sizeof c->label, "set the pattern of \"%s\"", m.name);
+        return cmd_add_edit(c, CMD_T_MATERIAL, CMD_OP_REPLACE, d->index, &p->materials[d->index],
+                            &m);
+    }
     if (!finite_in(d->reflectivity, 0, 1) || !finite_in(d->glossiness, 0, 1) ||
         d->blend < APP_BLEND_MIX || d->blend > APP_BLEND_FRESNEL)
         return fail(err, err_size, APP_ERR_SCHEMA,
@@ -696,6 +705,7 @@ app_result cmd_build(const app_project *p, const app_command_desc *d, cmd_comman
         break;
     case APP_CMD_ADD_MATERIAL:
     case APP_CMD_SET_REFLECTION:
+    case APP_CMD_SET_PATTERN:
         r = build_material(p, d, out, err, err_size);
         break;
     case APP_CMD_SET_PROBE:
@@ -725,6 +735,6 @@ const char *app_command_type_name(app_command_type t)
         "set-tile-start", "set-tile-rotation", "add-opening",      "remove-opening",
         "move-opening",   "move-corner",       "add-prewall",      "remove-prewall",
         "add-niche",      "remove-niche",      "add-material",     "set-reflection",
-        "set-probe",      "set-parent",        "ungroup"};
+        "set-probe",      "set-parent",        "ungroup",          "set-pattern"};
     return (unsigned)t < APP_CMD_COUNT ? names[t] : "unknown";
 }

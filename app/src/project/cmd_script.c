@@ -1093,6 +1093,29 @@ static int do_reflect(sctx *c)
     return all_used(c) && run(c, &d);
 }
 
+/* `pattern MATERIAL none|wood`: a procedural pattern on the material's colour (the wood
+ * grain, docs/rendering.md "Wood grain"). */
+static int do_pattern(sctx *c)
+{
+    const char *name = NULL, *kind = NULL;
+    if (!word(c, 1, &name) || !word(c, 2, &kind))
+        return 0;
+    int m = app_project_find_material(c->p, name);
+    if (m < 0)
+        return fail(c, "pattern: no material named \"%s\"", name);
+    app_command_desc d;
+    memset(&d, 0, sizeof d);
+    d.type = APP_CMD_SET_PATTERN;
+    d.index = m;
+    if (!strcmp(kind, "wood"))
+        d.material_pattern = APP_PATTERN_WOOD;
+    else if (!strcmp(kind, "none"))
+        d.material_pattern = APP_PATTERN_NONE;
+    else
+        return fail(c, "pattern: none or wood, not \"%s\"", kind);
+    return all_used(c) && run(c, &d);
+}
+
 /* `probe MATERIAL [update POLICY] [every N] [resolution auto|N] [correction KIND]`: the
  * material's reflection probe policy (cmd_probe.c); words not given keep their values. */
 static int do_probe(sctx *c)
@@ -1202,6 +1225,8 @@ static int dispatch(sctx *c)
         return do_reflect(c);
     if (!strcmp(cmd, "probe"))
         return do_probe(c);
+    if (!strcmp(cmd, "pattern"))
+        return do_pattern(c);
     if (!strcmp(cmd, "undo") || !strcmp(cmd, "redo"))
         return do_undo_redo(c, !strcmp(cmd, "redo"));
     return fail(c, "unknown command \"%s\" (see docs/editing.md)", cmd);

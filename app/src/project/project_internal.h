@@ -122,6 +122,7 @@ app_result pj_read_materials(pj_ctx *c, const cJSON *root);
 app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material *m);
 /* The names of the APP_BLEND_*, APP_CORRECTION_* and APP_PROBE_* values in the file. */
 extern const char *const pj_blend_names[3];
+extern const char *const pj_material_pattern_names[2];
 extern const char *const pj_correction_names[5];
 extern const char *const pj_probe_update_names[6];
 app_result pj_read_room(pj_ctx *c, const cJSON *root);

@@ -6,6 +6,7 @@
 #include <string.h>
 
 const char *const pj_blend_names[3] = {"mix", "add", "fresnel"};
+const char *const pj_material_pattern_names[2] = {"none", "wood"};
 const char *const pj_correction_names[5] = {"default", "none", "box", "sphere", "depth"};
 const char *const pj_probe_update_names[6] = {"default",   "every-frame", "once",
                                               "on-change", "time-sliced", "static"};
@@ -91,7 +92,8 @@ app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material 
         (r = get_enum(c, item, "blend", pj_blend_names, 3, &m->blend)) != APP_OK ||
         (r = pj_get_float(c, item, "transparency", 0, UNIT, &m->transparency)) != APP_OK ||
         (r = pj_get_float(c, item, "ior", 0, IOR, &m->ior)) != APP_OK ||
-        (r = pj_get_float(c, item, "dispersion", 0, DISPERSION, &m->dispersion)) != APP_OK)
+        (r = pj_get_float(c, item, "dispersion", 0, DISPERSION, &m->dispersion)) != APP_OK ||
+        (r = get_enum(c, item, "pattern", pj_material_pattern_names, 2, &m->pattern)) != APP_OK)
         return r;
     const cJSON *probe;
     if ((r = pj_member(c, item, "probe", cJSON_Object, 0, &probe)) != APP_OK || !probe)

@@ -125,6 +125,8 @@ typedef enum rd_blur_method {
 } rd_blur_method;
 
 /* RENDERING.md section 1; the same struct feeds the CPU reference (shade_ref.h). */
+typedef enum rd_pattern { RD_PATTERN_NONE = 0, RD_PATTERN_WOOD } rd_pattern;
+
 typedef struct rd_material {
     float ambient[3];  /* C_a */
     float diffuse[3];  /* C_d, multiplied by the texture if any */
@@ -141,6 +143,12 @@ typedef struct rd_material {
      * its edge texels never bleed into the tile. Needs diffuse_texture. */
     float joint_width[2];
     float joint_color[3];
+    /* A procedural pattern on the albedo, from the object-space position (no UVs):
+     * RD_PATTERN_WOOD is a wood grain along the object's x axis whose mean is 1, so the
+     * material keeps its colour (shaders/wood.glsl, rd_ref_wood_grain). It is computed at the
+     * mesh position times the transform's scale per axis: in metres along the object's own
+     * axes, whatever the mesh's units. */
+    rd_pattern pattern;
 
     /* Reflections (RENDERING.md sections 3-6). reflectivity k_r = 0: no probe, no reflection
      * code in the object's program, output bit for bit that of section 1. */

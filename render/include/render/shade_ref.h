@@ -52,6 +52,21 @@ float rd_ref_joint_coverage(const float uv[2], const float joint_width[2],
 void rd_ref_joint_texcoord(const float uv[2], const float joint_width[2], int tex_w, int tex_h,
                            float texels, float st[2]);
 
+/* Wood grain (rd_material.pattern RD_PATTERN_WOOD; CPU twin of shaders/wood.glsl): the scale
+ * on C_a and C_d at object-space point p (metres), about 1 with mean 1, the grain running along
+ * the object's x axis. footprint is the pixel's size on the surface in metres (the GPU's
+ * fwidth; 0 = a point sample): detail finer than it fades to its mean. The shader is compiled
+ * with these same constants. */
+#define RD_WOOD_RING_SPACING 0.0045f /* m between growth rings (oak: 2-6 mm) */
+#define RD_WOOD_AXIS_Y (-0.37f)      /* the log's axis, off the board: long, shallow arcs */
+#define RD_WOOD_AXIS_Z (-0.61f)
+#define RD_WOOD_WOBBLE 0.011f       /* m of noise on the ring radius */
+#define RD_WOOD_RING_CONTRAST 0.22f /* late wood: the scale dips by up to 0.18 */
+#define RD_WOOD_BAND_CONTRAST 0.09f /* runs of light and dark years, 1.7 cm */
+#define RD_WOOD_PORE_CONTRAST 0.035f
+#define RD_WOOD_FIGURE_CONTRAST 0.035f
+float rd_ref_wood_grain(const float p[3], float footprint);
+
 /* The tone curves alone, on exposed linear RGB (>= 0), giving display-linear values in [0, 1];
  * NaN in, 0 out. The GPU twins are in shaders/tonemap.glsl. */
 void rd_ref_tone_curve(const float c[3], rd_tonemap mode, float white, float out[3]);

@@ -41,6 +41,7 @@ typedef struct ref_mesh {
     float *positions; /* world, 3 per vertex */
     float *normals;   /* world (inverse transpose), not normalised: the GPU interpolates these */
     float *uvs;       /* 2 per vertex */
+    float *object_positions; /* model space, 3 per vertex, for a patterned material; else NULL */
     uint32_t *indices;
     float *tri_normals; /* world geometric normal (p1 - p0) x (p2 - p0) per triangle */
     int vertex_count, triangle_count;
@@ -107,6 +108,7 @@ typedef struct ref_surface {
     float p[3];
     float n[3]; /* shading normal as lit.frag makes it: unit (or V), flipped on back faces */
     float uv[2];
+    float object_p[3]; /* the point in model space (patterned materials only) */
     int front;
 } ref_surface;
 

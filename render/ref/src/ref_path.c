@@ -262,8 +262,8 @@ static void renderer_lights(const ref_scene *s, const ref_surface *sf, const flo
     for (int k = 0; k < 3; k++)
         mat.emissive[k] = -FLT_MAX; /* max(-FLT_MAX, lit) = lit */
     static const float no_ambient[3] = {0.0f, 0.0f, 0.0f};
-    rd_ref_shade(&mat, sf->mesh->texture ? albedo : NULL, sf->p, sf->n, eye, lights, s->light_count,
-                 no_ambient, out);
+    rd_ref_shade(&mat, sf->mesh->texture || sf->mesh->object_positions ? albedo : NULL, sf->p,
+                 sf->n, eye, lights, s->light_count, no_ambient, out);
 }
 
 /* Next-event estimation of the area lights through the lobes, MIS-weighted against the lobes'

@@ -26,6 +26,7 @@ static void mesh_free(ref_mesh *m)
     free(m->positions);
     free(m->normals);
     free(m->uvs);
+    free(m->object_positions);
     free(m->indices);
     free(m->tri_normals);
     memset(m, 0, sizeof *m);
@@ -140,6 +141,11 @@ static ref_result bake_mesh(ref_scene *s, const ref_mesh_desc *d, ref_mesh *m)
     m->tri_normals = malloc((3 * nt + 1) * sizeof *m->tri_normals);
     if (!m->positions || !m->normals || !m->uvs || !m->indices || !m->tri_normals)
         return ref_fail(REF_ERR_OUT_OF_MEMORY, "ref_scene_add_mesh: out of memory");
+    if (d->material.pattern != RD_PATTERN_NONE) { /* the grain is fixed to the object */
+        m->object_positions = malloc(3 * nv * sizeof *m->object_positions);
+        if (!m->object_positions)
+            return ref_fail(REF_ERR_OUT_OF_MEMORY, "ref_scene_add_mesh: out of memory");
+    }
     double t[16];
     int identity = is_zero_matrix(d->transform);
     for (int i = 0; i < 16; i++)
@@ -156,6 +162,11 @@ static ref_result bake_mesh(ref_scene *s, const ref_mesh_desc *d, ref_mesh *m)
             s->bounds_min[r] = fminf(s->bounds_min[r], (float)w);
             s->bounds_max[r] = fmaxf(s->bounds_max[r], (float)w);
         }
+        if (m->object_positions) /* the object's axes in metres, as lit.vert's v_object */
+            for (int r = 0; r < 3; r++)
+                m->object_positions[3 * v + (size_t)r] =
+                    (float)(p[r] * sqrt(t[4 * r] * t[4 * r] + t[4 * r + 1] * t[4 * r + 1] +
+                                        t[4 * r + 2] * t[4 * r + 2]));
         if (d->uvs) {
             m->uvs[2 * v] = isfinite(d->uvs[2 * v]) ? d->uvs[2 * v] : 0.0f;
             m->uvs[2 * v + 1] = isfinite(d->uvs[2 * v + 1]) ? d->uvs[2 * v + 1] : 0.0f;

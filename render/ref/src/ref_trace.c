@@ -94,6 +94,11 @@ int ref_intersect(const ref_scene *s, const float org[3], const float dir[3], fl
     for (int k = 0; k < 2; k++)
         out->uv[k] = b0 * m->uvs[2 * tri[0] + (unsigned)k] + b1 * m->uvs[2 * tri[1] + (unsigned)k] +
                      b2 * m->uvs[2 * tri[2] + (unsigned)k];
+    if (m->object_positions)
+        for (int k = 0; k < 3; k++)
+            out->object_p[k] = b0 * m->object_positions[3 * tri[0] + (unsigned)k] +
+                               b1 * m->object_positions[3 * tri[1] + (unsigned)k] +
+                               b2 * m->object_positions[3 * tri[2] + (unsigned)k];
     out->mesh = m;
     out->geom = rh.hit.geomID;
     out->prim = rh.hit.primID;
@@ -196,8 +201,8 @@ static void ambient_at(const ref_scene *s, const float n[3], float out[3])
 /* The diffuse texture at the hit (albedo 1 without one): over the footprint the ray's
  * neighbours span (the GPU's derivatives), else level 0. On tiles with joints (grout.glsl) the
  * texture is read clear of the joint band and *joint gets the band's share of the footprint. */
-static void texture_albedo(const ref_scene *s, const surface *sf, const float org[3],
-                           const float dir[3], const ray_fan *fan, float albedo[3], float *joint)
+static void image_albedo(const ref_scene *s, const surface *sf, const float org[3],
+                         const float dir[3], const ray_fan *fan, float albedo[3], float *joint)
 {
     const ref_mesh *m = sf->mesh;
     albedo[0] = albedo[1] = albedo[2] = 1.0f;
@@ -229,6 +234,19 @@ static void texture_albedo(const ref_scene *s, const surface *sf, const float or
         const float *at = joints ? st : uv;
         ref_texture_sample(t, at[0], at[1], 0.0f, albedo);
         *joint = joints ? rd_ref_joint_coverage(uv, jw, (const float[2]){0.0f, 0.0f}) : 0.0f;
+    }
+}
+
+/* The texture times the wood grain (wood.glsl), sampled at the point: a pixel's many paths
+ * average it, as the GPU's footprint fade does. */
+static void texture_albedo(const ref_scene *s, const surface *sf, const float org[3],
+                           const float dir[3], const ray_fan *fan, float albedo[3], float *joint)
+{
+    image_albedo(s, sf, org, dir, fan, albedo, joint);
+    if (sf->mesh->material.pattern == RD_PATTERN_WOOD && sf->mesh->object_positions) {
+        float grain = rd_ref_wood_grain(sf->object_p, 0.0f);
+        for (int k = 0; k < 3; k++)
+            albedo[k] *= grain;
     }
 }
 
@@ -298,8 +316,8 @@ static void shade_direct(const ref_scene *s, const surface *sf, const float eye[
     }
     float ambient[3];
     ambient_at(s, sf->n, ambient);
-    rd_ref_shade(&mat, m->texture ? albedo : NULL, sf->p, sf->n, eye, lights, s->light_count,
-                 ambient, out);
+    rd_ref_shade(&mat, m->texture || m->object_positions ? albedo : NULL, sf->p, sf->n, eye, lights,
+                 s->light_count, ambient, out);
 }
 
 typedef enum bounce { BOUNCE_REFLECT, BOUNCE_STRAIGHT, BOUNCE_REFRACT } bounce;

@@ -65,6 +65,7 @@ typedef enum app_command_type {
                                   correction (cmd_probe.c) */
     APP_CMD_SET_PARENT,        /* index, parent (an object's name; "" = detach it) */
     APP_CMD_UNGROUP,           /* index: detaches it from its parent and its children from it */
+    APP_CMD_SET_PATTERN,       /* index (material), material_pattern */
     APP_CMD_COUNT
 } app_command_type;
 
@@ -94,7 +95,8 @@ typedef struct app_command_desc {
     /* APP_CMD_SET_PROBE: the material's reflection probe policy (app_material's fields of
      * the same names; RENDERING.md section 8). */
     int probe_update, probe_every, probe_resolution, correction;
-    char parent[64]; /* APP_CMD_SET_PARENT */
+    char parent[64];      /* APP_CMD_SET_PARENT */
+    int material_pattern; /* APP_CMD_SET_PATTERN: APP_PATTERN_* */
 } app_command_desc;
 
 /* The objects mounted on object `index`, directly or through others (app_object.parent),

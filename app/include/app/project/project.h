@@ -66,6 +66,7 @@ typedef struct app_material {
     float transparency; /* 0 opaque .. 1 clear */
     float ior;          /* index of refraction, default 1.5 */
     float dispersion;   /* IOR spread between red and blue, 0 = none */
+    int pattern;        /* APP_PATTERN_*: a procedural albedo pattern ("pattern": "wood") */
     /* Tile joints drawn from the layout (rd_material.joint_width); set by the room's tile
      * meshes (room_tiles.c), not read from files. */
     float joint_width[2];
@@ -73,6 +74,7 @@ typedef struct app_material {
 } app_material;
 
 enum { APP_BLEND_MIX = 0, APP_BLEND_ADD, APP_BLEND_FRESNEL };
+enum { APP_PATTERN_NONE = 0, APP_PATTERN_WOOD }; /* as rd_pattern */
 enum {
     APP_CORRECTION_DEFAULT = 0,
     APP_CORRECTION_NONE,
