@@ -317,14 +317,15 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
      * half a sample across are left out (section 8). What reflects or is glass is drawn with
      * its own probe, as the eye would see it from there: chrome in a mirror is chrome and a
      * shower screen in front of it is glass (a second bounce, as a real mirror and the path
-     * tracer show them); drawn plain, chrome would be black and glass left out. Another planar
-     * mirror's capture belongs to the view's eye, not this one: such a mirror is drawn plain. */
+     * tracer show them; rd_reflection_defaults.mirror_bounce OFF draws them plain and leaves
+     * glass out, as every other capture). Another planar mirror's capture belongs to the view's
+     * eye, not this one: such a mirror is drawn plain. */
     float sample_tan = 1.0f / fmaxf(v->samples_per_tan, 1.0f);
     r = rd_draw_objects(ctx, s,
                         &(rd_pass){.view_proj = &vp[0][0],
                                    .eye = p->centre,
                                    .exclude_key = p->key,
-                                   .reflections = 1,
+                                   .reflections = s->reflection.mirror_bounce != RD_SWITCH_OFF,
                                    .planar_off = 1,
                                    .min_solid_radius = 0.25f * sample_tan,
                                    .full_meshes = 1});
