@@ -352,8 +352,11 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                       (rd_scene_has_area_lights(scene) ? RD_LIT_AREA_LIGHTS : 0);
         if (m->bake && !depth_only && (m->bake == 1 || scene->lightmap))
             variant |= RD_LIT_BAKED; /* the ambient from the bake's vertices or lightmap */
+        /* In a mirror's capture a fixture reads its probe alone: tracing its own parts for every
+         * texel of the capture would cost more than the rest of it, for what is a small
+         * reflection of a reflection. */
         int self_traced = probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) &&
-                          !probe->planar && rd_self_traced(scene, probe);
+                          !probe->planar && !pass->planar_off && rd_self_traced(scene, probe);
         if (self_traced)
             variant |= RD_LIT_SELF_TRACE; /* the full path's lookup, with its own parts */
         else if (probe && fast_paths && box_opaque(scene, probe, o))
