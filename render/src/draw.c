@@ -370,9 +370,14 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
         const rd_probe *probe = NULL;
         if (pass->reflections && scene->object_probe && scene->object_probe[index] >= 0) {
             probe = &scene->probes[scene->object_probe[index]];
-            if (!rd_probe_texture(scene, probe))
-                probe = NULL; /* nothing captured yet: drawn plain this frame */
+            /* Nothing captured yet (drawn plain this frame), or a planar mirror in another
+             * mirror's capture (rd_pass.planar_off). */
+            if (!rd_probe_texture(scene, probe) || (probe->planar && pass->planar_off))
+                probe = NULL;
         }
+        /* A mirror's capture without the pane's probe leaves the pane out, as a probe does. */
+        if (pass->planar_off && !probe && o->material.transparency > 0.0f)
+            continue;
         int variant = (t ? RD_LIT_TEXTURED : 0) | (probe ? RD_LIT_REFLECTING : 0) |
                       (scene->reflection.ambient == RD_AMBIENT_SH9 ? RD_LIT_SH9 : 0) |
                       (probe && (o->material.per_vertex_reflection || scene->reflection.per_vertex)
@@ -389,8 +394,11 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
             variant |= RD_LIT_BAKED; /* the ambient from the bake's vertices or lightmap */
         if (!probe && !depth_only && drawn_as_glaze(scene, pass, o))
             variant |= RD_LIT_GLAZE;
+        /* In a mirror's capture a fixture reads its probe alone: tracing its own parts for every
+         * texel of the capture would cost more than the rest of it, for what is a small
+         * reflection of a reflection. */
         int self_traced = probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) &&
-                          !probe->planar && rd_self_traced(scene, probe);
+                          !probe->planar && !pass->planar_off && rd_self_traced(scene, probe);
         if (self_traced)
             variant |= RD_LIT_SELF_TRACE; /* the full path's lookup, with its own parts */
         else if (probe && fast_paths && box_opaque(scene, probe, o))

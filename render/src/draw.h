@@ -11,6 +11,8 @@ typedef struct rd_pass {
     const float *eye;
     int exclude_key;        /* objects of this probe key are left out (a probe's owner); 0 = none */
     int reflections;        /* 1: reflective objects use their probes; 0: drawn plain (in probes) */
+    int planar_off;         /* 1: a planar mirror's capture: other planar mirrors drawn plain,
+                               no self-reflections traced */
     float min_solid_radius; /* skip objects whose radius / distance is below this; 0 = none */
     int specular_off;       /* draw without the Blinn-Phong highlight term */
     int store_distance;     /* a probe capture: alpha = distance from the eye ("depth" lookup) */

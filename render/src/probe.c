@@ -589,6 +589,30 @@ static int probe_visible(const rd_scene *s, const rd_probe *p, vec4 planes[6])
     return 0;
 }
 
+/* Whether an object of the probe's key shows in a planar mirror the view sees (rd_planar_pyramid):
+ * the mirror's capture draws it with its probe, which must then be fresh as if it were in view. */
+static int probe_seen_in_mirror(const rd_scene *s, const rd_probe *p, vec4 planes[6])
+{
+    for (int m = 0; m < s->probe_count; m++) {
+        const rd_probe *q = &s->probes[m];
+        if (q == p || !q->planar || !probe_visible(s, q, planes))
+            continue;
+        float pyramid[5][4];
+        rd_planar_pyramid(q, pyramid);
+        for (int i = 0; i < s->object_count; i++) {
+            if (rd_object_key(s, i) != p->key)
+                continue;
+            const float *sp = s->object_spheres[i];
+            int inside = 1;
+            for (int k = 0; k < 5 && inside; k++)
+                inside = glm_vec3_dot(pyramid[k], (float *)sp) + pyramid[k][3] >= -sp[3];
+            if (inside)
+                return 1;
+        }
+    }
+    return 0;
+}
+
 /* The room probe (lit.frag, pick_depth_hit): a cube of everything, the owners of the other
  * probes included, captured at the proxy's centre with distances and surfaces as a "depth"
  * probe is, and blurred for the glossiness of every object that searches it. It is made on the
@@ -642,6 +666,32 @@ static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmi
     return blur_probe(ctx, s, p, p->capture, p->size, stats);
 }
 
+/* The planar mirrors in view, each captured from the eye's image. They come after every cube
+ * probe of the frame: a mirror's capture draws the objects in front of it with their own
+ * probes (glass, chrome: what the mirror shows of them is what the eye would see from its
+ * image, probe_planar.c), so those probes must be this frame's. */
+static rd_result planar_captures(rd_context *ctx, rd_scene *s, const rd_planar_view *planar,
+                                 vec4 planes[6], const float bmin[3], const float bmax[3],
+                                 rd_frame_stats *stats)
+{
+    for (int i = 0; i < s->probe_count; i++) {
+        rd_probe *p = &s->probes[i];
+        if (!p->planar || !probe_visible(s, p, planes))
+            continue;
+        rd_phase_mark("probe set-up");
+        rd_result r = rd_planar_capture(ctx, s, p, planar, capture_far(p->centre, bmin, bmax));
+        rd_phase_mark("probe captures");
+        if (r != RD_OK)
+            return r;
+        if (p->planar_frame != s->frame)
+            continue; /* none of it in view */
+        stats->planar_mirrors++;
+        if (rd_phase_enabled())
+            fprintf(stderr, "planar mirror: %d x %d texels\n", p->planar_width, p->planar_height);
+    }
+    return RD_OK;
+}
+
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
                            const float eye[3], float pixels_per_tan, int supersample,
                            const rd_planar_view *planar, rd_frame_stats *stats)
@@ -677,12 +727,16 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
      * the caller asked to split them (split_captures). */
     int budget = s->reflection.max_faces_per_frame, spent = 0, depth_fresh = 0;
     int start = s->probe_count ? (int)(s->frame % s->probe_count) : 0;
+    /* Every probe placed and every planar mirror planned first: what a mirror in view shows
+     * counts as in view (probe_seen_in_mirror). */
+    for (int i = 0; i < s->probe_count; i++) {
+        place_probe(ctx, s, &s->probes[i]);
+        rd_probe_plan_planar(ctx, s, &s->probes[i], eye);
+    }
     for (int k = 0; k < s->probe_count; k++) {
         int i = (start + k) % s->probe_count;
         rd_probe *p = &s->probes[i];
         const rd_object_desc *owner = &s->objects[p->owner];
-        place_probe(ctx, s, p);
-        rd_probe_plan_planar(ctx, s, p, eye);
         /* Sharp probes leave the lamps to their lookups (emitters.c); a change of mind needs
          * a new capture. */
         int leave = rd_probe_wants_leave_emitters(s, p);
@@ -707,22 +761,10 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             continue;
         }
         /* A planar mirror's capture follows the eye: made afresh every frame it is seen (a
-         * cube it may have kept is stale by the time it is used again). */
+         * cube it may have kept is stale by the time it is used again), after the cubes
+         * (planar_captures). */
         if (p->planar) {
             p->faces_valid = 0;
-            if (probe_visible(s, p, planes)) {
-                rd_phase_mark("probe set-up");
-                r = rd_planar_capture(ctx, s, p, planar, capture_far(p->centre, bmin, bmax));
-                rd_phase_mark("probe captures");
-                if (r != RD_OK)
-                    return r;
-                if (p->planar_frame != s->frame)
-                    continue; /* none of it in view */
-                stats->planar_mirrors++;
-                if (rd_phase_enabled())
-                    fprintf(stderr, "planar mirror: %d x %d texels\n", p->planar_width,
-                            p->planar_height);
-            }
             continue;
         }
         int size = probe_resolution(s, p, eye, pixels_per_tan, supersample, ctx->max_size);
@@ -750,9 +792,10 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         }
         int every;
         rd_probe_update u = effective_update(s, &owner->probe, &every);
-        /* An object out of view needs no fresh reflection this frame (section 8: compute only
-         * what the scene needs); its policy resumes when it comes into view. */
-        if (!probe_visible(s, p, planes))
+        /* An object out of view, and out of every mirror in view, needs no fresh reflection
+         * this frame (section 8: compute only what the scene needs); its policy resumes when
+         * it comes into view. */
+        if (!probe_visible(s, p, planes) && !probe_seen_in_mirror(s, p, planes))
             continue;
         int faces = faces_to_capture(s, p, u, every);
         if (!faces)
@@ -825,6 +868,8 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                            !(room->gloss_min <= glaze_min));
     if ((room_for_depth || room_for_glazes) &&
         (r = room_probe_update(ctx, s, bmin, bmax, glaze_min, glaze_max, stats)) != RD_OK)
+        return r;
+    if ((r = planar_captures(ctx, s, planar, planes, bmin, bmax, stats)) != RD_OK)
         return r;
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     unsigned e = rd_gl_drain_errors();

@@ -121,6 +121,33 @@ int rd_probe_plan_planar(rd_context *ctx, const rd_scene *s, rd_probe *p, const 
     return 0; /* the eye in the pane's slab or behind it: the ordinary probe */
 }
 
+void rd_planar_pyramid(const rd_probe *p, float planes[5][4])
+{
+    static const int cycle[4] = {0, 1, 3, 2}; /* quad corners by bits -> around the rim */
+    float mid[3] = {0.0f, 0.0f, 0.0f};
+    for (int c = 0; c < 4; c++)
+        for (int k = 0; k < 3; k++)
+            mid[k] += 0.25f * p->quad[c][k];
+    for (int e = 0; e < 4; e++) {
+        const float *a = p->quad[cycle[e]], *b = p->quad[cycle[(e + 1) % 4]];
+        float u[3], v[3];
+        for (int k = 0; k < 3; k++) {
+            u[k] = a[k] - p->centre[k];
+            v[k] = b[k] - p->centre[k];
+        }
+        float n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                      u[0] * v[1] - u[1] * v[0]};
+        float len = sqrtf(dot3(n, n));
+        float d = -dot3(n, p->centre);
+        /* The quad's middle is inside: the side it lies on is the inside. */
+        float sign = dot3(n, mid) + d < 0.0f ? -1.0f : 1.0f;
+        for (int k = 0; k < 3; k++)
+            planes[e][k] = len > 0.0f ? sign * n[k] / len : 0.0f;
+        planes[e][3] = len > 0.0f ? sign * d / len : 0.0f;
+    }
+    memcpy(planes[4], p->plane, sizeof planes[4]); /* in front of the mirror */
+}
+
 #define PLANAR_MAX_POLY 16 /* a quad clipped by six planes has at most ten corners */
 
 /* Clips the convex polygon `in` (n world points) to the half-space plane.xyz . x + plane.w >= 0
@@ -287,13 +314,19 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
     /* The eye's image is where the reflected rays come from: highlights are seen from there,
      * and texture footprints are the mirror's own, so neither is left out or simplified as in
      * a cube capture; full meshes, since the capture is as sharp as the view. Objects under
-     * half a sample across are left out (section 8). */
+     * half a sample across are left out (section 8). What reflects or is glass is drawn with
+     * its own probe, as the eye would see it from there: chrome in a mirror is chrome and a
+     * shower screen in front of it is glass (a second bounce, as a real mirror and the path
+     * tracer show them; rd_reflection_defaults.mirror_bounce OFF draws them plain and leaves
+     * glass out, as every other capture). Another planar mirror's capture belongs to the view's
+     * eye, not this one: such a mirror is drawn plain. */
     float sample_tan = 1.0f / fmaxf(v->samples_per_tan, 1.0f);
     r = rd_draw_objects(ctx, s,
                         &(rd_pass){.view_proj = &vp[0][0],
                                    .eye = p->centre,
                                    .exclude_key = p->key,
-                                   .reflections = 0,
+                                   .reflections = s->reflection.mirror_bounce != RD_SWITCH_OFF,
+                                   .planar_off = 1,
                                    .min_solid_radius = 0.25f * sample_tan,
                                    .full_meshes = 1});
     unsigned e = rd_gl_drain_errors();

@@ -12,6 +12,9 @@ int rd_planar_candidate(const rd_scene *s, const rd_object_desc *o);
 /* Decides whether p is a planar mirror for this eye; if so sets p->planar, p->plane, p->quad
  * and moves p->centre to the eye's image. Returns p->planar. */
 int rd_probe_plan_planar(rd_context *ctx, const rd_scene *s, rd_probe *p, const float eye[3]);
+/* The planes of what a planar mirror p shows (p->planar set): the pyramid from the eye's image
+ * through the mirror's quad, cut by the mirror's plane; each n.x + d >= 0 inside. */
+void rd_planar_pyramid(const rd_probe *p, float planes[5][4]);
 /* The main view a planar capture is made for: the samples its main pass shades (an adaptive
  * view's one a pixel: its few refined pixels are edges, which the capture's 1.5 texels a
  * sample keep). */

@@ -44,6 +44,9 @@ static void set_room_off(rd_reflection_defaults *d, int off)
         return;
     d->room_probe = off ? RD_SWITCH_OFF : RD_SWITCH_ON;
     d->self_reflections = 0;
+    /* The direct-only tracer shows reflective objects plain in every reflection, the mirror's
+     * too: the mirror's second bounce would be an error common to both renders. */
+    d->mirror_bounce = RD_SWITCH_OFF;
 }
 
 static int render(rd_context *ctx, app_project *p, const rd_view *view, const char *preset,

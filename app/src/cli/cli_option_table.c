@@ -222,6 +222,8 @@ static const cli_option_spec options[] = {
            "a preset: draft|interactive|final|print"),
     SWITCH("adaptive", adaptive, "adaptive supersampling (default: the preset's)"),
     SWITCH("planar-mirrors", planar_mirrors, "flat mirrors as planar reflections"),
+    SWITCH("mirror-bounce", mirror_bounce,
+           "glass and chrome in a planar mirror with their own probes (default on)"),
     SWITCH("room-probe", room_probe, "\"depth\" lookups also search the room probe"),
     SWITCH("glaze", glaze, "glazed tiles reflect the room probe by Fresnel"),
     SWITCH("exact-lamps", exact_lamps, "lamps in sharp reflections intersected exactly"),

@@ -309,6 +309,10 @@ typedef struct rd_reflection_defaults {
                                  image, clipped at its plane, at the view's resolution (a planar
                                  reflection through the probe's cube map; docs/rendering.md).
                                  Default off */
+    rd_switch mirror_bounce;  /* ON: a planar mirror's capture draws glass and reflective objects
+                                 with their own probes (a second bounce: chrome in a mirror is
+                                 chrome); OFF: plain, glass left out, as in every other capture
+                                 and the direct-only tracer. Default on */
     rd_switch room_probe;     /* ON: the "depth" lookup searches the room probe beside the
                                  object's own probe; OFF: its own probe only (docs/rendering.md,
                                  "The room probe"). Default on */
