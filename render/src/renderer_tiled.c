@@ -51,28 +51,6 @@ static void add_tile_stats(rd_frame_stats *total, const rd_frame_stats *t)
 #undef KEEP_MAX
 }
 
-/* Auto exposure over several tiles: every tile must use the one EV of the whole image, so it
- * is measured first on a small render of the whole view (at most 256 pixels a side, one
- * sample a pixel). Its probes were sized for that small view: the scene rebuilds them. */
-static rd_result measure_whole_view(rd_context *ctx, rd_scene *scene, const rd_view *view,
-                                    float *ev)
-{
-    rd_view small = *view;
-    float fit = 256.0f / (float)(view->width > view->height ? view->width : view->height);
-    if (fit < 1.0f) {
-        small.width = (int)fmaxf(1.0f, roundf((float)view->width * fit));
-        small.height = (int)fmaxf(1.0f, roundf((float)view->height * fit));
-    }
-    small.supersample = 1;
-    small.adaptive = 0;
-    small.to_window = 0;
-    small.crop_x = small.crop_y = small.full_width = small.full_height = 0;
-    rd_result r = rd_render(ctx, scene, &small);
-    *ev = ctx->stats.exposure_ev;
-    scene->probes_dirty = 1;
-    return r;
-}
-
 rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view, int tile_max,
                           uint8_t *rgba8, float *linear,
                           void (*progress)(void *user, int done, int total), void *user)
@@ -96,7 +74,7 @@ rd_result rd_render_tiled(rd_context *ctx, rd_scene *scene, const rd_view *view,
      * would capture again each frame would only repeat the same work). */
     rd_view whole = *view;
     if (view->auto_exposure && (cols > 1 || rows > 1)) {
-        rd_result mr = measure_whole_view(ctx, scene, view, &whole.exposure_ev);
+        rd_result mr = rd_measure_view_exposure(ctx, scene, view, &whole.exposure_ev);
         if (mr != RD_OK) {
             free(tile8);
             free(tilef);

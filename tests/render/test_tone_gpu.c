@@ -1,6 +1,7 @@
 /* The GPU's tone map (shaders/tonemap.glsl) against its CPU twin for every curve, with and
  * without white balance, and the GPU's auto exposure against rd_auto_exposure_ev on an image
- * of known luminance: an emissive plane filling the view, one colour everywhere. The backend
+ * of known luminance: an emissive plane filling the view, one colour everywhere; a view drawn
+ * in strips shares the whole view's exposure. The backend
  * comes from TESSERA_GL. */
 #include "../common/check.h"
 #include "render/primitives.h"
@@ -120,6 +121,62 @@ static void test_auto_exposure(rd_context *ctx, rd_mesh plane)
     rd_scene_destroy(s);
 }
 
+/* A view drawn in strips (the planner's still view): each strip exposed with the EV measured
+ * over the whole view shows exactly the rows of one whole render; a strip that metered only
+ * itself would be exposed for its own rows (the bright top half here) and show a band. */
+static void test_strips_share_exposure(rd_context *ctx, rd_mesh plane)
+{
+    rd_scene *s = rd_scene_create(ctx);
+    const float bright = 2.0f, dim = 0.02f;
+    for (int half = 0; half < 2; half++) {
+        rd_object_desc o = {.mesh = plane};
+        for (int k = 0; k < 3; k++)
+            o.material.emissive[k] = half ? dim : bright;
+        o.transform[0] = o.transform[5] = 100.0f;
+        o.transform[10] = o.transform[15] = 1.0f;
+        o.transform[13] = half ? -50.0f : 50.0f; /* bright above y = 0 (the image's top) */
+        CHECK(rd_scene_add_object(s, &o) == RD_OK);
+    }
+    rd_view whole = view_of_plane();
+    whole.tonemap = RD_TONEMAP_NEUTRAL;
+    whole.auto_exposure = 1;
+    whole.exposure_ev = 0.25f;
+    CHECK(rd_render(ctx, s, &whole) == RD_OK);
+    float whole_ev = rd_last_frame_stats(ctx).exposure_ev;
+    unsigned char ref[W * H * 4];
+    CHECK(rd_read_rgba8(ctx, ref, sizeof ref) == RD_OK);
+    enum { STRIP = 3 };
+    rd_view strip = whole;
+    strip.height = STRIP;
+    strip.full_width = W;
+    strip.full_height = H;
+    CHECK(rd_render(ctx, s, &strip) == RD_OK); /* the top strip metering itself */
+    float own_ev = rd_last_frame_stats(ctx).exposure_ev;
+    CHECK_MSG(fabsf(own_ev - whole_ev) > 1.0f, "the scene does not test strips: %g vs %g EV",
+              (double)own_ev, (double)whole_ev);
+    int worst = 0;
+    for (int y0 = 0; y0 < H; y0 += STRIP) {
+        strip.crop_y = y0;
+        strip.auto_exposure = 1;
+        float ev = 0.0f;
+        CHECK(rd_measure_view_exposure(ctx, s, &strip, &ev) == RD_OK);
+        CHECK_MSG(fabsf(ev - whole_ev) < 0.01f, "strip at row %d: %g EV, the whole view %g", y0,
+                  (double)ev, (double)whole_ev);
+        strip.auto_exposure = 0;
+        strip.exposure_ev = ev;
+        CHECK(rd_render(ctx, s, &strip) == RD_OK);
+        unsigned char rows[W * STRIP * 4];
+        CHECK(rd_read_rgba8(ctx, rows, sizeof rows) == RD_OK);
+        for (int i = 0; i < W * STRIP * 4; i++) {
+            int d = abs(rows[i] - ref[(size_t)y0 * W * 4 + (size_t)i]);
+            worst = d > worst ? d : worst;
+        }
+        strip.exposure_ev = whole.exposure_ev;
+    }
+    CHECK_MSG(worst <= 1, "strips differ from the whole render by %d", worst);
+    rd_scene_destroy(s);
+}
+
 int main(void)
 {
     rd_context *ctx = NULL;
@@ -134,6 +191,7 @@ int main(void)
     rd_mesh_data_free(&d);
     test_curves(ctx, plane);
     test_auto_exposure(ctx, plane);
+    test_strips_share_exposure(ctx, plane);
     rd_mesh_destroy(ctx, plane);
     rd_context_destroy(ctx);
     return check_report("tone_gpu");

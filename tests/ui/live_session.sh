@@ -5,7 +5,7 @@
 # it is refined; then walk mode from there, and a walk. Every logged eye
 # must be inside the room (walls, floor, ceiling, with the margin), no shot may be black, the
 # log must show the moving frames and then the still view at full resolution (scale 1.0, the
-# window's size) refined to the end.
+# window's size) refined to the end, every strip with the one exposure of the whole view.
 #   usage: live_session.sh TESSERA OUTDIR SCREENSHOT_CHECK DEMO_PROJECT
 set -e
 . "$(dirname "$0")/session_lib.sh"
@@ -68,6 +68,17 @@ assert all(float(r["render_scale"]) == 1.0 and r["width"] == "960" and r["height
 assert float(still[0]["progress"]) == 1.0
 refining = [r for r in after if r["live"] == "refining"]
 assert refining and all(float(r["render_scale"]) == 1.0 for r in refining)
+# One exposure for a whole still (the demo's exposure is auto; interactive's ladder has one
+# step): strips that metered themselves would each log their own EV, and show bands.
+runs, run = [], []
+for r in rows + [{"live": "moving"}]:
+    if r["live"] == "refining":
+        run.append(r["exposure_ev"])
+    elif run:
+        runs.append(run)
+        run = []
+assert runs and all(len(set(run)) == 1 for run in runs), \
+    f"a still's strips used several exposures: {[sorted(set(run))[:4] for run in runs]}"
 walk = [r for r in rows[rows.index(still[-1]) + 1:]]
 assert walk and all(abs(float(r["eye_z"]) - 1600) < 1 for r in walk[2:]), "walker not at 1.6 m"
 scales = sorted(float(r["render_scale"]) for r in rows if r["live"] == "moving")

@@ -75,6 +75,9 @@ typedef struct planner {
         ui_live ladder;
         ui_accum accum;
         unsigned char *strip; /* the strip read back */
+        float still_ev;       /* the exposure every strip of the step shares */
+        int still_ev_ok;      /* 0: measure it over the whole view before the next strip */
+        float view_ev;        /* the exposure of the view's last render (the frame log) */
         size_t strip_size;
         int window_w, window_h; /* where this frame presents: the window's size */
         ui_rect pane;           /* and the 3D view's pane in it */

@@ -104,6 +104,7 @@ static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, i
     double t0 = glfwGetTime();
     if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK)
         return render_failed();
+    p->live.view_ev = rd_last_frame_stats(p->ctx).exposure_ev;
     /* Kept for the still view's first picture: by the time the view stops, the context's
      * last render may be a catalog thumbnail. Read before the present: the readback binds
      * the render's own framebuffer, the present binds the window again for the panels. */
@@ -141,6 +142,7 @@ static int begin_still(planner *p, int fw, int fh)
     else
         ui_accum_restart(&p->live.accum);
     apply_preset(p, p->live.ladder.steps[0].preset);
+    p->live.still_ev_ok = 0;
     return 0;
 }
 
@@ -187,11 +189,21 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         v.full_width = fw;
         v.full_height = fh;
         ui_jitter(l->pass, v.jitter);
+        /* One exposure for the whole picture: a strip that metered itself would expose the
+         * bright ceiling's rows darker than the floor's, and the still would show bands. */
+        if (!p->live.still_ev_ok) {
+            if (rd_measure_view_exposure(p->ctx, p->scene.scene, &v, &p->live.still_ev) != RD_OK)
+                return render_failed();
+            p->live.still_ev_ok = 1;
+        }
+        v.exposure_ev = p->live.still_ev;
+        v.auto_exposure = 0;
         double t0 = glfwGetTime();
         if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK ||
             rd_read_rgba8(p->ctx, p->live.strip, size) != RD_OK)
             return render_failed();
         rd_frame_stats st = rd_last_frame_stats(p->ctx);
+        p->live.view_ev = st.exposure_ev;
         int busy = st.probes_held > 0;
         if (!busy)
             ui_accum_add(&p->live.accum, 0, l->row, fw, rows, p->live.strip);
@@ -199,6 +211,7 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         if (ui_live_strip_done(l, rows, *render_ms, fh, busy)) {
             apply_preset(p, l->steps[l->step].preset);
             ui_accum_restart(&p->live.accum);
+            p->live.still_ev_ok = 0; /* the new preset's light: measured again */
         }
     }
     const unsigned char *shown = planner_bake_fade(p, p->live.accum.image, fw, fh);

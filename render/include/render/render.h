@@ -473,6 +473,13 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *view);
  * with the scene's lights, into the same float target at the view's size. */
 rd_result rd_render_floor(rd_context *ctx, rd_scene *scene, const rd_view *view);
 
+/* The EV to draw a view with when it is drawn in parts (view->crop_*, full_width and
+ * full_height describe one part, or none): with auto_exposure, measured once on a small render
+ * of the whole view, so every part shares it (render each part with auto_exposure = 0 and this
+ * exposure_ev); without, view->exposure_ev. The next render captures its probes again. */
+rd_result rd_measure_view_exposure(rd_context *ctx, rd_scene *scene, const rd_view *view,
+                                   float *ev);
+
 /* Renders a view of any size (up to RD_IMAGE_MAX_SIDE per side) in tiles of at most
  * tile_max x tile_max output pixels (0 = as large as the context allows), each with an
  * off-centre projection, and stitches them into rgba8 (width*height*4 bytes, top row first) and,
