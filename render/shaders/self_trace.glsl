@@ -5,7 +5,7 @@
 #ifdef SELF_TRACE
 uniform samplerBuffer u_self_nodes; // 2 texels a node
 uniform samplerBuffer u_self_tris;  // 7 texels a triangle
-uniform int u_self_base;            // this object's first triangle in the probe's numbering
+uniform int u_self_base;            // this object's first triangle in the probe's numbering, -1 none
 uniform float u_self_epsilon;       // the tracer's ray offset (metres)
 
 // Where the ray o + t d (inv = 1 / d) enters node i's box before t_max, or -1 if it does not.
@@ -30,7 +30,7 @@ float node_entry(int i, vec3 o, vec3 inv, float t_max, out vec4 lo, out vec4 hi)
 int self_trace(vec3 o, vec3 d, float t_max, out float t_hit, out vec2 bary)
 {
     vec3 inv = safe_inverse(d);
-    int own = u_self_base + gl_PrimitiveID;
+    int own = u_self_base >= 0 ? u_self_base + gl_PrimitiveID : -1;
     int found = -1;
     t_hit = t_max;
     bary = vec2(0.0);

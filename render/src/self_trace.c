@@ -32,6 +32,8 @@
 #define TRI_TEXELS 7  /* RGBA32F texels a triangle (see pack_triangle) */
 #define NODE_TEXELS 2 /* bounds min + first/right, bounds max + count */
 #define LEAF_SIZE 4
+#define VERTEX_FLOATS 8        /* a mesh's vertex (resources.c): position, normal, uv */
+#define BAKED_VERTEX_FLOATS 14 /* and the bake's light (4) and lightmap coordinates (2) */
 #define MAX_SELF_TRIANGLES (1 << 20)
 /* How far around its own parts a probe's trace takes neighbours, as a fraction of the room's
  * (the box proxy's) diagonal, so that a scene drawn at another scale traces the same: about a
@@ -160,7 +162,8 @@ static void grow_bounds(float lo[3], float hi[3], const float p[3])
 }
 
 /* Object o's triangles in world space, as lit.vert places them (u_model, u_normal_matrix),
- * read back from its mesh's buffers (resources.c: position, normal, uv interleaved). */
+ * read back from its mesh's buffers (resources.c: position, normal, uv interleaved, then the
+ * bake's light and lightmap coordinates in a baked mesh's wider vertex). */
 static rd_result append_object(rd_context *ctx, const rd_object_desc *o, int part, tri_src **tris,
                                int *count, int *capacity)
 {
@@ -170,12 +173,13 @@ static rd_result append_object(rd_context *ctx, const rd_object_desc *o, int par
     GLint vbytes = 0;
     glBindBuffer(GL_ARRAY_BUFFER, m->vbo);
     glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, &vbytes);
-    int vertices = vbytes / (int)(8 * sizeof(float));
+    int stride = m->bake ? BAKED_VERTEX_FLOATS : VERTEX_FLOATS;
+    int vertices = vbytes / (int)(stride * (int)sizeof(float));
     int tri_count = m->index_count / 3;
     if (*count + tri_count > MAX_SELF_TRIANGLES)
         return rd_fail(RD_ERR_INVALID_ARGUMENT, "self-reflections: more than %d triangles",
                        MAX_SELF_TRIANGLES);
-    float *v = malloc((size_t)(vertices > 0 ? vertices : 1) * 8 * sizeof *v);
+    float *v = malloc((size_t)(vertices > 0 ? vertices : 1) * (size_t)stride * sizeof *v);
     uint32_t *idx = malloc((size_t)m->index_count * sizeof *idx);
     tri_src *grown = *tris;
     if (v && idx && *count + tri_count > *capacity) {
@@ -191,7 +195,8 @@ static rd_result append_object(rd_context *ctx, const rd_object_desc *o, int par
         glBindBuffer(GL_ARRAY_BUFFER, 0);
         return rd_fail(RD_ERR_OUT_OF_MEMORY, "self-reflections: out of memory");
     }
-    glGetBufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)vertices * 8 * (GLsizeiptr)sizeof *v, v);
+    glGetBufferSubData(GL_ARRAY_BUFFER, 0, (GLsizeiptr)vertices * stride * (GLsizeiptr)sizeof *v,
+                       v);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     /* The element buffer belongs to the mesh's vertex array: read it through a plain binding. */
     glBindVertexArray(0);
@@ -216,7 +221,7 @@ static rd_result append_object(rd_context *ctx, const rd_object_desc *o, int par
         }
         for (int c = 0; c < 3; c++) {
             uint32_t i = idx[3 * t + c];
-            const float *src = i < (uint32_t)vertices ? v + 8 * (size_t)i : NULL;
+            const float *src = i < (uint32_t)vertices ? v + (size_t)stride * i : NULL;
             vec4 pos = {0.0f, 0.0f, 0.0f, 1.0f}, world;
             vec3 n = {0.0f, 0.0f, 0.0f};
             if (src) {
@@ -507,7 +512,9 @@ void rd_set_self_trace_uniforms(rd_context *ctx, const rd_program *prog, const r
     const rd_self_bvh *b = &p->self;
     float amb[RD_MAX_SELF_PARTS][3], dif[RD_MAX_SELF_PARTS][3], spec[RD_MAX_SELF_PARTS][3],
         emis[RD_MAX_SELF_PARTS][3], shin[RD_MAX_SELF_PARTS], uv_scale[RD_MAX_SELF_PARTS][2];
-    int slot[RD_MAX_SELF_PARTS], textures = 0, base = 0;
+    /* An object outside the hierarchy (glass, which the trace leaves out) owns none of its
+     * triangles: -1 keeps its gl_PrimitiveID from naming a member's triangle of that number. */
+    int slot[RD_MAX_SELF_PARTS], textures = 0, base = -1;
     for (int i = 0; i < b->part_count; i++) {
         const rd_object_desc *o = &s->objects[b->part_object[i]];
         const rd_material *m = &o->material;
