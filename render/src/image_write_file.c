@@ -88,25 +88,6 @@ static int ends_complete(int fd, const rd_image_format_info *fmt, char *detail, 
     return ok;
 }
 
-/* The folder entry of the renamed file is durable only once the folder itself is synced. */
-static void sync_folder(const char *target)
-{
-    char *dir = strdup(target);
-    if (dir == NULL)
-        return;
-    char *slash = strrchr(dir, '/');
-    if (slash == dir)
-        slash[1] = '\0';
-    else if (slash)
-        *slash = '\0';
-    int fd = open(slash ? dir : ".", O_RDONLY | O_CLOEXEC);
-    if (fd >= 0) {
-        (void)fsync(fd);
-        close(fd);
-    }
-    free(dir);
-}
-
 /* Encodes into the open temporary file fd (or, for a writer without memory output, lets
  * OpenImageIO write temp itself and reopens it into *fd). 0 on success, else the message. */
 static rd_image_result encode_into(int *fd, const char *temp, rd_oiio_write_desc desc,
@@ -207,7 +188,7 @@ rd_image_result rd_image_write_atomic(const char *path, rd_oiio_write_desc desc,
     if (result != RD_IMAGE_OK)
         unlink(temp);
     else
-        sync_folder(target);
+        rd_sync_parent_folder(target);
     free(temp);
     free(target);
     return result;

@@ -21,24 +21,6 @@ static void release(app_folder_swap *s)
     memset(s, 0, sizeof *s);
 }
 
-/* The new folder entries are durable only once their parent folder is synced. */
-static void sync_parent(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    char dir[4096];
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else if ((size_t)(slash - path) < sizeof dir)
-        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
-    else
-        return;
-    int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd >= 0) {
-        (void)fsync(fd);
-        close(fd);
-    }
-}
-
 static int remove_entry(const char *path, const struct stat *st, int type, struct FTW *ftw)
 {
     (void)st;
@@ -158,7 +140,7 @@ app_result app_folder_swap_commit(app_folder_swap *s, char *err, size_t err_size
         app_folder_swap_discard(s);
         return APP_ERR_IO;
     }
-    sync_parent(s->target);
+    rd_sync_parent_folder(s->target);
     if (old)
         (void)app_remove_tree(old); /* the new folder is in place whatever is left of it */
     free(old);

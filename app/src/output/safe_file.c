@@ -12,24 +12,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-/* The folder entry of the renamed file is durable only once the folder itself is synced. */
-static void sync_folder(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    char dir[4096];
-    if (!slash)
-        snprintf(dir, sizeof dir, ".");
-    else if ((size_t)(slash - path) < sizeof dir)
-        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
-    else
-        return;
-    int fd = open(dir, O_RDONLY | O_CLOEXEC);
-    if (fd >= 0) {
-        (void)fsync(fd);
-        close(fd);
-    }
-}
-
 static void release(app_safe_file *f)
 {
     free(f->target);
@@ -125,7 +107,7 @@ app_result app_safe_file_commit(app_safe_file *f, char *err, size_t err_size)
         release(f);
         return APP_ERR_IO;
     }
-    sync_folder(f->target);
+    rd_sync_parent_folder(f->target);
     release(f);
     return APP_OK;
 }

@@ -14,6 +14,10 @@ extern "C" {
  * to 40 links, the limit of Linux's path resolution). */
 char *rd_write_target(const char *path);
 
+/* Syncs the folder that holds path (".": none in the path), so that a rename into it is
+ * durable: a new or renamed folder entry survives a crash only once its folder is synced. */
+void rd_sync_parent_folder(const char *path);
+
 #ifdef __cplusplus
 }
 #endif
