@@ -373,8 +373,8 @@ static cat_db_result migrate_6_to_7(sqlite3 *sql, const char *path, char *err, s
 }
 
 static const migration_fn migrations[CAT_DB_SCHEMA_VERSION] = {
-    migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4, migrate_4_to_5, migrate_5_to_6,
-    migrate_6_to_7};
+    migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4,
+    migrate_4_to_5, migrate_5_to_6, migrate_6_to_7};
 
 static cat_db_result pragma_int(sqlite3 *sql, const char *path, const char *pragma, int *out,
                                 char *err, size_t err_size)
