@@ -14,11 +14,18 @@ session_start() {
 # session_window PROJECT SIZE SCRIPT LOG [MORE OPTIONS]: the planner window on PROJECT (empty:
 # none) under Xvfb, driven by SCRIPT, stderr into LOG; the test fails unless it exits 0. The
 # virtual screen is $SESSION_SCREEN (default 1280x720x24).
+# The X authority file for xvfb-run, in the session's own folder: without one xvfb-run makes a
+# temporary folder and exits 5 ("problem while cleaning up temporary directory") when its
+# removal fails, whatever the window did; seen now and then with several sessions at once.
+xvfb_auth_file() {
+    echo "$out/.Xauthority"
+}
+
 session_window() {
     project=$1 size=$2 script=$3 log=$4
     shift 4
     # shellcheck disable=SC2086 # an empty project is no argument
-    xvfb-run -a -s "-screen 0 ${SESSION_SCREEN:-1280x720x24}" "$tessera" open $project --size "$size" \
+    xvfb-run -a -f "$(xvfb_auth_file)" -s "-screen 0 ${SESSION_SCREEN:-1280x720x24}" "$tessera" open $project --size "$size" \
         --script "$script" "$@" 2>"$log" || {
         cat "$log"
         echo "FAIL: the session $script did not exit 0"
