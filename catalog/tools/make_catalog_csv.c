@@ -1158,8 +1158,13 @@ static int tile_products(FILE *f)
                 new_article(m, &p);
                 p.category = "tiles";
                 p.series = ts->series;
-                snprintf(p.name, sizeof p.name, "%s %s %s %d x %d", ts->series, col->name,
-                         type_word(ts->type), w, h);
+                /* A colour named as its series ("Weiss" in Weiss) is said once. */
+                if (!strcmp(ts->series, col->name))
+                    snprintf(p.name, sizeof p.name, "%s %s %d x %d", ts->series,
+                             type_word(ts->type), w, h);
+                else
+                    snprintf(p.name, sizeof p.name, "%s %s %s %d x %d", ts->series, col->name,
+                             type_word(ts->type), w, h);
                 snprintf(p.short_text, sizeof p.short_text, "%s %s %d x %d mm, %s, %g mm",
                          porcelain                   ? "Porcelain stoneware"
                          : !strcmp(ts->kind, "wall") ? "Wall tile"
