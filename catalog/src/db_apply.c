@@ -32,9 +32,9 @@ static const char insert_variant_sql[] =
     "INSERT INTO variants (product_id, code, name, surcharge_cents, "
     "ambient_r, ambient_g, ambient_b, diffuse_r, diffuse_g, diffuse_b, "
     "specular_r, specular_g, specular_b, emissive_r, emissive_g, emissive_b, "
-    "shininess, reflectivity, glossiness, blend, transparency, ior) "
+    "shininess, reflectivity, glossiness, blend, transparency, ior, pattern, grain_deg) "
     "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, "
-    "?19, ?20, ?21, ?22)";
+    "?19, ?20, ?21, ?22, ?23, ?24)";
 
 static const char upsert_tile_sql[] =
     "INSERT OR REPLACE INTO tiles (product_id, type, nominal_w_mm, nominal_h_mm, work_w_mm, "
@@ -229,6 +229,11 @@ static int insert_variant(catdb_apply *a, long long product, const catdb_row *ro
     sqlite3_bind_text(st, 20, cat_blend_name(v->material.blend), -1, SQLITE_STATIC);
     sqlite3_bind_double(st, 21, row->material[CATDB_M_TRANSPARENCY]);
     sqlite3_bind_double(st, 22, row->material[CATDB_M_IOR]);
+    sqlite3_bind_text(st, 23, cat_pattern_name(v->material.pattern), -1, SQLITE_STATIC);
+    if (row->material[CATDB_M_GRAIN] >= 0.0) /* NULL: along the longer side */
+        sqlite3_bind_double(st, 24, row->material[CATDB_M_GRAIN]);
+    else
+        sqlite3_bind_null(st, 24);
     return run(st);
 }
 

@@ -10,6 +10,7 @@ static const char *const category_names[CAT_CATEGORY_COUNT] = {
     "lamps", "towel_radiators", "vanity_units",   "accessories", "tiles"};
 static const char *const unit_names[CAT_UNIT_COUNT] = {"piece", "m2", "box", "m"};
 static const char *const blend_names[CAT_BLEND_COUNT] = {"mix", "add", "fresnel"};
+static const char *const pattern_names[CAT_PATTERN_COUNT] = {"none", "wood"};
 static const char *const surface_names[CAT_SURFACE_COUNT] = {"glossy", "matt", "structured"};
 static const char *const tile_type_names[CAT_TILE_TYPE_COUNT] = {"UNI", "BOR", "DEK", "EIN"};
 static const char *const mount_to_names[CAT_MOUNT_COUNT] = {"", "bottom", "top", "rim", "seat"};
@@ -43,6 +44,11 @@ const char *cat_unit_name(cat_unit u)
 const char *cat_blend_name(cat_blend b)
 {
     return name_of(blend_names, CAT_BLEND_COUNT, (int)b);
+}
+
+const char *cat_pattern_name(cat_pattern p)
+{
+    return name_of(pattern_names, CAT_PATTERN_COUNT, (int)p);
 }
 
 const char *cat_surface_name(cat_tile_surface s)
@@ -84,6 +90,15 @@ int cat_blend_parse(const char *text, cat_blend *out)
     if (i < 0)
         return 0;
     *out = (cat_blend)i;
+    return 1;
+}
+
+int cat_pattern_parse(const char *text, cat_pattern *out)
+{
+    int i = index_of(pattern_names, 0, CAT_PATTERN_COUNT, text);
+    if (i < 0)
+        return 0;
+    *out = (cat_pattern)i;
     return 1;
 }
 

@@ -15,7 +15,7 @@ static const char export_sql[] =
     "v.diffuse_r, "
     "v.diffuse_g, v.diffuse_b, v.specular_r, v.specular_g, v.specular_b, v.emissive_r, "
     "v.emissive_g, v.emissive_b, v.shininess, v.reflectivity, v.glossiness, v.blend, "
-    "v.transparency, v.ior, "
+    "v.transparency, v.ior, v.pattern, v.grain_deg, "
     "t.type, t.nominal_w_mm, t.nominal_h_mm, t.work_w_mm, t.work_h_mm, t.grout_mm, "
     "t.thickness_mm, t.calibre, t.surface, t.m2_per_box, t.pieces_per_box, t.texture "
     "FROM products p JOIN manufacturers m ON m.id = p.manufacturer_id "
@@ -85,6 +85,26 @@ static void put_column(FILE *f, sqlite3_stmt *st, int i)
     put_text(f, t ? (const char *)t : "");
 }
 
+/* "none" is written as an empty cell (the import's default), so plain rows stay plain. */
+static void put_pattern(FILE *f, sqlite3_stmt *st, int i)
+{
+    const unsigned char *t = sqlite3_column_text(st, i);
+    if (t && strcmp((const char *)t, "none"))
+        put_text(f, (const char *)t);
+}
+
+/* The grain by its word where it has one; NULL (along the longer side) as an empty cell. */
+static void put_grain(FILE *f, sqlite3_stmt *st, int i)
+{
+    if (sqlite3_column_type(st, i) == SQLITE_NULL)
+        return;
+    double deg = sqlite3_column_double(st, i);
+    if (deg == 0.0 || deg == 90.0)
+        fputs(deg == 0.0 ? "horizontal" : "vertical", f);
+    else
+        put_real(f, st, i);
+}
+
 static void put_row(FILE *f, sqlite3_stmt *st)
 {
     for (int c = 0; c < COL_COUNT; c++) {
@@ -109,6 +129,12 @@ static void put_row(FILE *f, sqlite3_stmt *st)
         case COL_THICKNESS:
         case COL_M2_PER_BOX:
             put_real(f, st, query_column(c));
+            break;
+        case COL_PATTERN:
+            put_pattern(f, st, query_column(c));
+            break;
+        case COL_GRAIN:
+            put_grain(f, st, query_column(c));
             break;
         case COL_LIST_PRICE:
         case COL_VARIANT_SURCHARGE:

@@ -281,6 +281,8 @@ typedef enum catdb_col {
     COL_BLEND,
     COL_TRANSPARENCY,
     COL_IOR,
+    COL_PATTERN,
+    COL_GRAIN,
     /* tile */
     COL_TILE_TYPE,
     COL_NOMINAL_W,
@@ -369,6 +371,7 @@ enum {
     CATDB_M_GLOSSINESS,
     CATDB_M_TRANSPARENCY,
     CATDB_M_IOR,
+    CATDB_M_GRAIN, /* degrees, or CAT_GRAIN_LONG when the cell is empty */
     CATDB_MATERIAL_VALUES
 };
 
@@ -379,7 +382,7 @@ typedef struct catdb_row {
     cat_variant variant;            /* when has_variant (its material: see below) */
     /* The variant's material as the file's decimals (the float copy in variant.material would
      * not export back to the same text): ambient, diffuse, specular, emissive (3 each), then
-     * shininess, reflectivity, glossiness, transparency, ior. */
+     * shininess, reflectivity, glossiness, transparency, ior, grain. */
     double material[CATDB_MATERIAL_VALUES];
     cat_tile tile; /* when has_tile */
     int has_variant, has_tile;

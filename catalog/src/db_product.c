@@ -31,7 +31,7 @@ static const char product_sql[] =
 static const char variants_sql[] =
     "SELECT code, name, surcharge_cents, ambient_r, ambient_g, ambient_b, diffuse_r, diffuse_g, "
     "diffuse_b, specular_r, specular_g, specular_b, emissive_r, emissive_g, emissive_b, "
-    "shininess, reflectivity, glossiness, blend, transparency, ior "
+    "shininess, reflectivity, glossiness, blend, transparency, ior, pattern, grain_deg "
     "FROM variants WHERE product_id = ?1 ORDER BY code";
 
 static const char tile_sql[] =
@@ -88,6 +88,12 @@ static void read_variant(sqlite3_stmt *st, cat_variant *v)
         m->blend = CAT_BLEND_MIX;
     m->transparency = (float)sqlite3_column_double(st, 19);
     m->ior = (float)sqlite3_column_double(st, 20);
+    const char *pattern = (const char *)sqlite3_column_text(st, 21);
+    if (!pattern || !cat_pattern_parse(pattern, &m->pattern))
+        m->pattern = CAT_PATTERN_NONE;
+    m->grain_deg = sqlite3_column_type(st, 22) == SQLITE_NULL
+                       ? CAT_GRAIN_LONG
+                       : (float)sqlite3_column_double(st, 22);
 }
 
 static void read_tile(sqlite3_stmt *st, cat_tile *t)

@@ -255,10 +255,45 @@ static void companion_columns(checker *k)
 /* The material of a variant whose file gives no value: a plain light grey (ambient follows
  * diffuse unless given). */
 static const double default_material[CATDB_MATERIAL_VALUES] = {
-    0.8, 0.8, 0.8, 0.8, 0.8, 0.8, /* ambient, diffuse */
-    0.2, 0.2, 0.2, 0,   0,   0,   /* specular, emissive */
-    32,  0,   0.5, 0,   1.5       /* shininess, k_r, g, transparency, ior */
+    0.8,
+    0.8,
+    0.8,
+    0.8,
+    0.8,
+    0.8, /* ambient, diffuse */
+    0.2,
+    0.2,
+    0.2,
+    0,
+    0,
+    0, /* specular, emissive */
+    32,
+    0,
+    0.5,
+    0,
+    1.5,           /* shininess, k_r, g, transparency, ior */
+    CAT_GRAIN_LONG /* grain */
 };
+
+/* The grain's direction: "horizontal" (0), "vertical" (90) or degrees 0-180 from the
+ * product's width towards its height; empty: along its longer side. */
+static void grain(checker *k)
+{
+    const char *t = cell(k, COL_GRAIN);
+    double *out = k->row->material + CATDB_M_GRAIN;
+    if (!t)
+        return;
+    if (!strcasecmp(t, "horizontal"))
+        *out = 0.0;
+    else if (!strcasecmp(t, "vertical"))
+        *out = 90.0;
+    else if (catdb_parse_real(t, 0, 180, 0, out, k->msg, sizeof k->msg)) {
+        snprintf(k->msg, sizeof k->msg,
+                 "must be horizontal, vertical or an angle of 0 to 180 degrees, got \"%.40s\"", t);
+        problem(k, COL_GRAIN, k->msg);
+        k->row->given[COL_GRAIN] = 0;
+    }
+}
 
 static void variant_columns(checker *k)
 {
@@ -296,6 +331,10 @@ static void variant_columns(checker *k)
         enum_problem(k, COL_BLEND, "blend mode", "mix, add, fresnel");
     real(k, COL_TRANSPARENCY, 0, 1, 0, m + CATDB_M_TRANSPARENCY);
     real(k, COL_IOR, 1, 3, 0, m + CATDB_M_IOR);
+    v->material.pattern = CAT_PATTERN_NONE;
+    if (cell(k, COL_PATTERN) && !cat_pattern_parse(cell(k, COL_PATTERN), &v->material.pattern))
+        enum_problem(k, COL_PATTERN, "pattern", "none, wood");
+    grain(k);
 }
 
 static void tile_columns(checker *k)

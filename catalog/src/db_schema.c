@@ -282,6 +282,15 @@ static const char schema_v7[] =
     "    CHECK (mounting_to IN ('', 'bottom', 'top', 'rim', 'seat'));\n"
     "ALTER TABLE products ADD COLUMN companions TEXT NOT NULL DEFAULT '';\n";
 
+/* Version 8: a variant's procedural pattern (docs/rendering.md "Wood grain") and the grain's
+ * direction on the product's front, in degrees from its width towards its height (NULL: along
+ * its longer side). Existing variants are plain. */
+static const char schema_v8[] =
+    "ALTER TABLE variants ADD COLUMN pattern TEXT NOT NULL DEFAULT 'none'\n"
+    "    CHECK (pattern IN ('none', 'wood'));\n"
+    "ALTER TABLE variants ADD COLUMN grain_deg REAL\n"
+    "    CHECK (grain_deg IS NULL OR grain_deg BETWEEN 0 AND 180);\n";
+
 /* clang-format on */
 
 typedef cat_db_result (*migration_fn)(sqlite3 *sql, const char *path, char *err, size_t err_size);
@@ -372,9 +381,15 @@ static cat_db_result migrate_6_to_7(sqlite3 *sql, const char *path, char *err, s
                       err_size);
 }
 
+static cat_db_result migrate_7_to_8(sqlite3 *sql, const char *path, char *err, size_t err_size)
+{
+    return catdb_exec(sql, path, "cannot migrate the schema from version 7 to 8", schema_v8, err,
+                      err_size);
+}
+
 static const migration_fn migrations[CAT_DB_SCHEMA_VERSION] = {
     migrate_0_to_1, migrate_1_to_2, migrate_2_to_3, migrate_3_to_4,
-    migrate_4_to_5, migrate_5_to_6, migrate_6_to_7};
+    migrate_4_to_5, migrate_5_to_6, migrate_6_to_7, migrate_7_to_8};
 
 static cat_db_result pragma_int(sqlite3 *sql, const char *path, const char *pragma, int *out,
                                 char *err, size_t err_size)

@@ -25,7 +25,7 @@ static const char header[] =
     "variant_name,variant_surcharge,ambient,diffuse,specular,emissive,shininess,reflectivity,"
     "glossiness,blend,transparency,ior,tile_type,nominal_w_mm,nominal_h_mm,work_w_mm,work_h_mm,"
     "grout_mm,thickness_mm,calibre,surface,m2_per_box,pieces_per_box,texture,mounting_height_mm,"
-    "mounting_to,companions\n";
+    "mounting_to,companions,pattern,grain\n";
 
 static void put_text(FILE *f, const char *s)
 {
@@ -93,7 +93,8 @@ typedef struct material {
     double shininess, kr, gloss;
     const char *blend;
     double transparency, ior;
-    int surcharge_pct; /* of the product's list price */
+    int surcharge_pct;   /* of the product's list price */
+    const char *pattern; /* "wood" for veneers (the renderer's grain); NULL: none */
 } material;
 
 #define GREY(x)                                                                                    \
@@ -101,38 +102,39 @@ typedef struct material {
         x, x, x                                                                                    \
     }
 /* One material a row: code, name, diffuse, specular, emissive, shininess, k_r, glossiness,
- * blend, transparency, IOR, surcharge in percent. */
+ * blend, transparency, IOR, surcharge in percent, pattern. The veneers' grain runs along the
+ * product's longer side (an empty grain column). */
 /* clang-format off */
-static const material M_CHROME =           {"CP", "Chrome", GREY(0.05), GREY(0.95), GREY(0), 2000, 0.8, 0.9, "mix", 0, 1.5, 0};
-static const material M_BLACK_MATT =       {"BM", "Black matt", GREY(0.03), GREY(0.15), GREY(0), 40, 0.04, 0.3, "fresnel", 0, 1.5, 30};
-static const material M_BRUSHED_STEEL =    {"BS", "Brushed stainless steel", {0.35, 0.35, 0.36}, GREY(0.6), GREY(0), 300, 0.45, 0.55, "mix", 0, 1.5, 40};
-static const material M_BRUSHED_GOLD =     {"BG", "Brushed gold", {0.45, 0.33, 0.12}, {0.8, 0.65, 0.35}, GREY(0), 400, 0.55, 0.6, "mix", 0, 1.5, 60};
-static const material M_CERAMIC_WHITE =    {"WH", "White alpine, glossy", {0.92, 0.92, 0.9}, GREY(0.6), GREY(0), 256, 0.1, 0.6, "fresnel", 0, 1.5, 0};
-static const material M_CERAMIC_MATT =     {"WM", "White matt", {0.9, 0.9, 0.88}, GREY(0.15), GREY(0), 24, 0.04, 0.3, "fresnel", 0, 1.5, 25};
-static const material M_CERAMIC_BLACK =    {"BK", "Black matt", GREY(0.05), GREY(0.12), GREY(0), 24, 0.04, 0.3, "fresnel", 0, 1.5, 35};
-static const material M_ACRYLIC_WHITE =    {"WH", "White, glossy acrylic", {0.94, 0.94, 0.93}, GREY(0.5), GREY(0), 200, 0.1, 0.65, "fresnel", 0, 1.5, 0};
-static const material M_ACRYLIC_MATT =     {"WM", "White matt, solid surface", {0.93, 0.93, 0.91}, GREY(0.12), GREY(0), 20, 0.03, 0.25, "fresnel", 0, 1.5, 20};
-static const material M_ENAMEL_WHITE =     {"WH", "White enamel", {0.93, 0.93, 0.92}, GREY(0.7), GREY(0), 400, 0.15, 0.7, "fresnel", 0, 1.5, 0};
-static const material M_STONE_WHITE =      {"WH", "White, stone texture", {0.9, 0.9, 0.88}, GREY(0.1), GREY(0), 16, 0.03, 0.25, "fresnel", 0, 1.5, 0};
-static const material M_STONE_ANTHRACITE = {"AN", "Anthracite, stone texture", {0.18, 0.18, 0.19}, GREY(0.1), GREY(0), 16, 0.03, 0.25, "fresnel", 0, 1.5, 10};
-static const material M_STONE_CONCRETE =   {"CG", "Concrete grey, stone texture", {0.45, 0.45, 0.43}, GREY(0.1), GREY(0), 16, 0.03, 0.25, "fresnel", 0, 1.5, 10};
-static const material M_GLASS_CLEAR =      {"CL", "Clear glass, chrome profiles", {0.9, 0.95, 0.93}, GREY(0.9), GREY(0), 1000, 0.1, 1, "fresnel", 0.9, 1.5, 0};
-static const material M_GLASS_SATIN =      {"SA", "Satin glass, chrome profiles", GREY(0.85), GREY(0.3), GREY(0), 60, 0.05, 0.3, "fresnel", 0.6, 1.5, 15};
-static const material M_GLASS_GREY =       {"GR", "Grey glass, black profiles", GREY(0.2), GREY(0.9), GREY(0), 1000, 0.1, 1, "fresnel", 0.7, 1.5, 20};
-static const material M_MIRROR =           {"MI", "Silver mirror", GREY(0.02), GREY(1), GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 0};
-static const material M_MIRROR_BRONZE =    {"MB", "Bronze mirror", {0.05, 0.035, 0.02}, {0.9, 0.7, 0.5}, GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 25};
-static const material M_CAB_WHITE =        {"MW", "Mirror doors, white body", GREY(0.02), GREY(1), GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 0};
-static const material M_CAB_ALU =          {"MA", "Mirror doors, aluminium body", GREY(0.02), GREY(1), GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 10};
-static const material M_CAB_OAK =          {"MO", "Mirror doors, oak body", GREY(0.02), GREY(1), GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 20};
-static const material M_LAMP_WARM =        {"WW", "Warm white 3000 K", GREY(0.95), GREY(0.3), {4, 3.6, 3}, 64, 0, 0.5, "mix", 0, 1.5, 0};
-static const material M_LAMP_NEUTRAL =     {"NW", "Neutral white 4000 K", GREY(0.95), GREY(0.3), {4, 4, 3.8}, 64, 0, 0.5, "mix", 0, 1.5, 0};
-static const material M_PAINT_WHITE =      {"WH", "Traffic white RAL 9016", {0.93, 0.93, 0.91}, GREY(0.3), GREY(0), 64, 0.05, 0.5, "fresnel", 0, 1.5, 0};
-static const material M_PAINT_ANTHRACITE = {"AN", "Anthracite RAL 7016", {0.12, 0.13, 0.14}, GREY(0.2), GREY(0), 48, 0.04, 0.4, "fresnel", 0, 1.5, 15};
-static const material M_PAINT_BLACK =      {"BM", "Black matt", GREY(0.03), GREY(0.1), GREY(0), 24, 0.03, 0.3, "fresnel", 0, 1.5, 20};
-static const material M_LACQUER_WHITE =    {"WG", "White high-gloss lacquer", {0.92, 0.92, 0.91}, GREY(0.5), GREY(0), 200, 0.2, 0.8, "fresnel", 0, 1.5, 0};
-static const material M_GRAPHITE =         {"GM", "Graphite matt", {0.15, 0.15, 0.16}, GREY(0.08), GREY(0), 16, 0.03, 0.3, "fresnel", 0, 1.5, 0};
-static const material M_OAK =              {"OK", "Natural oak veneer", {0.55, 0.4, 0.26}, GREY(0.1), GREY(0), 20, 0.03, 0.35, "mix", 0, 1.5, 15};
-static const material M_WALNUT =           {"WN", "American walnut veneer", {0.3, 0.2, 0.13}, GREY(0.1), GREY(0), 20, 0.03, 0.35, "mix", 0, 1.5, 25};
+static const material M_CHROME =           {"CP", "Chrome", GREY(0.05), GREY(0.95), GREY(0), 2000, 0.8, 0.9, "mix", 0, 1.5, 0, NULL};
+static const material M_BLACK_MATT =       {"BM", "Black matt", GREY(0.03), GREY(0.15), GREY(0), 40, 0.04, 0.3, "fresnel", 0, 1.5, 30, NULL};
+static const material M_BRUSHED_STEEL =    {"BS", "Brushed stainless steel", {0.35, 0.35, 0.36}, GREY(0.6), GREY(0), 300, 0.45, 0.55, "mix", 0, 1.5, 40, NULL};
+static const material M_BRUSHED_GOLD =     {"BG", "Brushed gold", {0.45, 0.33, 0.12}, {0.8, 0.65, 0.35}, GREY(0), 400, 0.55, 0.6, "mix", 0, 1.5, 60, NULL};
+static const material M_CERAMIC_WHITE =    {"WH", "White alpine, glossy", {0.92, 0.92, 0.9}, GREY(0.6), GREY(0), 256, 0.1, 0.6, "fresnel", 0, 1.5, 0, NULL};
+static const material M_CERAMIC_MATT =     {"WM", "White matt", {0.9, 0.9, 0.88}, GREY(0.15), GREY(0), 24, 0.04, 0.3, "fresnel", 0, 1.5, 25, NULL};
+static const material M_CERAMIC_BLACK =    {"BK", "Black matt", GREY(0.05), GREY(0.12), GREY(0), 24, 0.04, 0.3, "fresnel", 0, 1.5, 35, NULL};
+static const material M_ACRYLIC_WHITE =    {"WH", "White, glossy acrylic", {0.94, 0.94, 0.93}, GREY(0.5), GREY(0), 200, 0.1, 0.65, "fresnel", 0, 1.5, 0, NULL};
+static const material M_ACRYLIC_MATT =     {"WM", "White matt, solid surface", {0.93, 0.93, 0.91}, GREY(0.12), GREY(0), 20, 0.03, 0.25, "fresnel", 0, 1.5, 20, NULL};
+static const material M_ENAMEL_WHITE =     {"WH", "White enamel", {0.93, 0.93, 0.92}, GREY(0.7), GREY(0), 400, 0.15, 0.7, "fresnel", 0, 1.5, 0, NULL};
+static const material M_STONE_WHITE =      {"WH", "White, stone texture", {0.9, 0.9, 0.88}, GREY(0.1), GREY(0), 16, 0.03, 0.25, "fresnel", 0, 1.5, 0, NULL};
+static const material M_STONE_ANTHRACITE = {"AN", "Anthracite, stone texture", {0.18, 0.18, 0.19}, GREY(0.1), GREY(0), 16, 0.03, 0.25, "fresnel", 0, 1.5, 10, NULL};
+static const material M_STONE_CONCRETE =   {"CG", "Concrete grey, stone texture", {0.45, 0.45, 0.43}, GREY(0.1), GREY(0), 16, 0.03, 0.25, "fresnel", 0, 1.5, 10, NULL};
+static const material M_GLASS_CLEAR =      {"CL", "Clear glass, chrome profiles", {0.9, 0.95, 0.93}, GREY(0.9), GREY(0), 1000, 0.1, 1, "fresnel", 0.9, 1.5, 0, NULL};
+static const material M_GLASS_SATIN =      {"SA", "Satin glass, chrome profiles", GREY(0.85), GREY(0.3), GREY(0), 60, 0.05, 0.3, "fresnel", 0.6, 1.5, 15, NULL};
+static const material M_GLASS_GREY =       {"GR", "Grey glass, black profiles", GREY(0.2), GREY(0.9), GREY(0), 1000, 0.1, 1, "fresnel", 0.7, 1.5, 20, NULL};
+static const material M_MIRROR =           {"MI", "Silver mirror", GREY(0.02), GREY(1), GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 0, NULL};
+static const material M_MIRROR_BRONZE =    {"MB", "Bronze mirror", {0.05, 0.035, 0.02}, {0.9, 0.7, 0.5}, GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 25, NULL};
+static const material M_CAB_WHITE =        {"MW", "Mirror doors, white body", GREY(0.02), GREY(1), GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 0, NULL};
+static const material M_CAB_ALU =          {"MA", "Mirror doors, aluminium body", GREY(0.02), GREY(1), GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 10, NULL};
+static const material M_CAB_OAK =          {"MO", "Mirror doors, oak body", GREY(0.02), GREY(1), GREY(0), 5000, 0.95, 1, "mix", 0, 1.5, 20, NULL};
+static const material M_LAMP_WARM =        {"WW", "Warm white 3000 K", GREY(0.95), GREY(0.3), {4, 3.6, 3}, 64, 0, 0.5, "mix", 0, 1.5, 0, NULL};
+static const material M_LAMP_NEUTRAL =     {"NW", "Neutral white 4000 K", GREY(0.95), GREY(0.3), {4, 4, 3.8}, 64, 0, 0.5, "mix", 0, 1.5, 0, NULL};
+static const material M_PAINT_WHITE =      {"WH", "Traffic white RAL 9016", {0.93, 0.93, 0.91}, GREY(0.3), GREY(0), 64, 0.05, 0.5, "fresnel", 0, 1.5, 0, NULL};
+static const material M_PAINT_ANTHRACITE = {"AN", "Anthracite RAL 7016", {0.12, 0.13, 0.14}, GREY(0.2), GREY(0), 48, 0.04, 0.4, "fresnel", 0, 1.5, 15, NULL};
+static const material M_PAINT_BLACK =      {"BM", "Black matt", GREY(0.03), GREY(0.1), GREY(0), 24, 0.03, 0.3, "fresnel", 0, 1.5, 20, NULL};
+static const material M_LACQUER_WHITE =    {"WG", "White high-gloss lacquer", {0.92, 0.92, 0.91}, GREY(0.5), GREY(0), 200, 0.2, 0.8, "fresnel", 0, 1.5, 0, NULL};
+static const material M_GRAPHITE =         {"GM", "Graphite matt", {0.15, 0.15, 0.16}, GREY(0.08), GREY(0), 16, 0.03, 0.3, "fresnel", 0, 1.5, 0, NULL};
+static const material M_OAK =              {"OK", "Natural oak veneer", {0.55, 0.4, 0.26}, GREY(0.1), GREY(0), 20, 0.03, 0.35, "mix", 0, 1.5, 15, "wood"};
+static const material M_WALNUT =           {"WN", "American walnut veneer", {0.3, 0.2, 0.13}, GREY(0.1), GREY(0), 20, 0.03, 0.35, "mix", 0, 1.5, 25, "wood"};
 /* clang-format on */
 
 /* Variant sets by kind of product, at most 4. */
@@ -632,7 +634,7 @@ static void write_rows(FILE *f, const product *p)
             put_num(f, round(t->pieces * area * 1000) / 1000);
             fprintf(f, ",%d,%s,", t->pieces, t->texture);
         } else {
-            fputs(",,,,,,,,,,,,", f);
+            fputs(",,,,,,,,,,,,,", f); /* 12 empty tile columns */
         }
         if (p->mount_to) {
             put_num(f, p->mount_h);
@@ -641,7 +643,9 @@ static void write_rows(FILE *f, const product *p)
             fputs(",,", f);
         }
         put_text(f, p->companions);
-        fputc('\n', f);
+        /* pattern, grain */
+        const char *pattern = p->variant_count ? p->variants[v]->pattern : NULL;
+        fprintf(f, ",%s,\n", pattern ? pattern : "");
     }
 }
 

@@ -18,6 +18,7 @@ out vec2 v_uv;
 // The grain is fixed to the object (wood.glsl): its own axes, in metres (the model matrix's
 // scale taken out of the rotation), whatever the model's units or a primitive's size.
 out vec3 v_object;
+uniform vec2 u_wood_grain_dir; // the grain's direction in the x-z plane (rd_ref_wood_grain_dir)
 #endif
 
 #ifdef BAKED_LIGHT
@@ -44,7 +45,10 @@ void main()
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
 #ifdef WOOD_GRAIN
-    v_object = a_position * vec3(length(u_model[0].xyz), length(u_model[1].xyz), length(u_model[2].xyz));
+    // Turned about y so that the grain's direction lies along x (rd_ref_wood_grain_point).
+    vec3 object = a_position * vec3(length(u_model[0].xyz), length(u_model[1].xyz), length(u_model[2].xyz));
+    v_object = vec3(u_wood_grain_dir.x * object.x + u_wood_grain_dir.y * object.z, object.y,
+                    -u_wood_grain_dir.y * object.x + u_wood_grain_dir.x * object.z);
 #endif
 #ifdef BAKED_LIGHT
     v_baked = a_baked;

@@ -8,6 +8,7 @@
 #include "shadow.h"
 
 #include "render/reflect_ref.h"
+#include "render/shade_ref.h"
 
 #include <cglm/cglm.h>
 #include <math.h>
@@ -136,6 +137,11 @@ void rd_set_object_uniforms(const rd_program *p, const float model[16], const rd
         glUniform2f(p->u_joint_width, fmaxf(m->joint_width[0], 0.0f),
                     fmaxf(m->joint_width[1], 0.0f));
         glUniform3fv(p->u_joint_color, 1, m->joint_color);
+    }
+    if (p->u_wood_grain_dir >= 0) {
+        float dir[2];
+        rd_ref_wood_grain_dir(m->grain_angle_deg, dir);
+        glUniform2fv(p->u_wood_grain_dir, 1, dir);
     }
 }
 

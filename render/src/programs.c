@@ -122,6 +122,7 @@ static void locate_lit(rd_program *p)
     p->u_uv_scale = glGetUniformLocation(id, "u_uv_scale");
     p->u_joint_width = glGetUniformLocation(id, "u_joint_width");
     p->u_joint_color = glGetUniformLocation(id, "u_joint_color");
+    p->u_wood_grain_dir = glGetUniformLocation(id, "u_wood_grain_dir");
     p->u_specular_scale = glGetUniformLocation(id, "u_specular_scale");
     p->u_sphere_map = glGetUniformLocation(id, "u_sphere_map");
     p->u_view_rot = glGetUniformLocation(id, "u_view_rot");

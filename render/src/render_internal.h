@@ -54,7 +54,7 @@ typedef struct rd_program {
         u_light_attenuation, u_light_spot, u_light_half_width, u_light_half_height, u_rect_count,
         u_rect_index; /* area_light.glsl */
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
-    int u_diffuse_texture, u_uv_scale, u_joint_width, u_joint_color;
+    int u_diffuse_texture, u_uv_scale, u_joint_width, u_joint_color, u_wood_grain_dir;
     int u_specular_scale;
     int u_sh, u_sphere_map, u_view_rot;
     int u_lightmap, u_bake_from_lightmap;

@@ -46,6 +46,23 @@ static float clamp01(float v)
     return fminf(fmaxf(v, 0.0f), 1.0f);
 }
 
+void rd_ref_wood_grain_dir(float angle_deg, float dir[2])
+{
+    double a = isfinite(angle_deg) ? (double)angle_deg * (3.14159265358979323846 / 180.0) : 0.0;
+    /* Exact at the two named directions, so "horizontal" is today's grain bit for bit. */
+    dir[0] = angle_deg == 90.0f ? 0.0f : (float)cos(a);
+    dir[1] = angle_deg == 0.0f ? 0.0f : angle_deg == 90.0f ? 1.0f : (float)sin(a);
+}
+
+void rd_ref_wood_grain_point(const float p[3], const float dir[2], float q[3])
+{
+    /* A rotation by -angle about y takes the direction (cos, 0, sin) to (1, 0, 0). */
+    float x = dir[0] * p[0] + dir[1] * p[2], z = -dir[1] * p[0] + dir[0] * p[2];
+    q[0] = x;
+    q[1] = p[1];
+    q[2] = z;
+}
+
 float rd_ref_wood_grain(const float p[3], float footprint)
 {
     if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2]))

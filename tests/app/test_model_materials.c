@@ -59,7 +59,9 @@ int main(void)
                                 0.5f,
                                 CAT_BLEND_MIX,
                                 0,
-                                1.5f};
+                                1.5f,
+                                CAT_PATTERN_NONE,
+                                0};
     cat_gen_request req = {CAT_CATEGORY_BASINS, "test basin", NULL, 600, 450, 160, &pink};
     cat_gen_model gm;
     char err[1024];

@@ -4,7 +4,7 @@
 set(CAT_DB_SOURCE "${CMAKE_SOURCE_DIR}/assets/catalog")
 
 foreach(name test_db_schema test_db_import test_db_mounting test_db_hostile test_db_search test_db_shipped test_db_faults
-             test_db_roundtrip test_db_search_words)
+             test_db_roundtrip test_db_search_words test_db_pattern)
   add_executable(${name} ${CMAKE_CURRENT_LIST_DIR}/${name}.c)
   target_link_libraries(${name} PRIVATE tessera_catalog)
   target_include_directories(${name} PRIVATE ${CMAKE_SOURCE_DIR}/tests/common)
@@ -14,6 +14,7 @@ foreach(name test_db_schema test_db_import test_db_mounting test_db_hostile test
   set_tests_properties(catalog.${test_name} PROPERTIES LABELS unit)
 endforeach()
 set_tests_properties(catalog.db_mounting PROPERTIES LABELS "catalog;unit" TIMEOUT 60)
+set_tests_properties(catalog.db_pattern PROPERTIES LABELS "catalog;unit" TIMEOUT 60)
 
 # Colour words against finishes; German compound words (one executable, one test each).
 add_executable(test_db_search_finishes ${CMAKE_CURRENT_LIST_DIR}/test_db_search_finishes.c)
@@ -54,6 +55,10 @@ file(WRITE ${CAT_DB_CLI}/bad-mounting.csv
      "manufacturer,article,category,name,width_mm,depth_mm,height_mm,list_price,mounting_height_mm,mounting_to,companions\n"
      "Cli,M-1,basins,Basin,600,550,175,259.00,-850,rim,\n"
      "Cli,M-2,vanity_units,Vanity,600,460,520,599.00,680,top,M-1;NO-SUCH\n")
+file(WRITE ${CAT_DB_CLI}/bad-pattern.csv
+     "manufacturer,article,category,name,width_mm,depth_mm,height_mm,list_price,variant_code,variant_name,pattern,grain\n"
+     "Cli,P-1,vanity_units,Vanity,600,460,520,599.00,OK,Oak,marble,\n"
+     "Cli,P-2,vanity_units,Vanity,600,460,520,599.00,OK,Oak,wood,diagonal\n")
 # tessera_add_test (tests/common/tessera_test.cmake) checks the exit code with the output and
 # fails on any sanitizer report.
 tessera_add_test(NAME catalog.db_cli_search
@@ -102,4 +107,13 @@ tessera_add_test(NAME catalog.db_cli_import_bad_mounting
                  EXPECT_RC 2
                  EXPECT_STDERR "bad-mounting.csv:2: column mounting_height_mm: must be between 0 and 4000"
                                "bad-mounting.csv:3: column companions: companion 2, Cli NO-SUCH, is neither"
+                 LABELS "catalog;unit" TIMEOUT 60)
+# An unknown pattern word and a grain that is no direction, named with file, line and value
+# (docs/catalog.md "The import format").
+tessera_add_test(NAME catalog.db_cli_import_bad_pattern
+                 COMMAND tessera catalog import ${CAT_DB_CLI}/bad-pattern.csv
+                         --db ${CAT_DB_CLI}/bad-pattern.sqlite
+                 EXPECT_RC 2
+                 EXPECT_STDERR "bad-pattern.csv:2: column pattern: unknown pattern \"marble\" (known: none, wood)"
+                               "bad-pattern.csv:3: column grain: must be horizontal, vertical or an angle of 0 to 180 degrees, got \"diagonal\""
                  LABELS "catalog;unit" TIMEOUT 60)

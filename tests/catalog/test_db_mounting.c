@@ -169,6 +169,8 @@ static void test_migration_from_v5(void)
     CHECK(sql_run(path, "ALTER TABLE products DROP COLUMN mounting_height_mm;"
                         "ALTER TABLE products DROP COLUMN mounting_to;"
                         "ALTER TABLE products DROP COLUMN companions;"
+                        "ALTER TABLE variants DROP COLUMN pattern;"
+                        "ALTER TABLE variants DROP COLUMN grain_deg;"
                         "PRAGMA user_version = 5;"));
     CHECK(sql_int(path, "PRAGMA user_version") == 5);
     db = NULL;

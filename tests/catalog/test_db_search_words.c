@@ -181,8 +181,8 @@ static void test_migration_from_v3(void)
 {
     cat_db_close(open_catalog("v3.sqlite", 1));
     const char *path = tmp_path("v3.sqlite");
-    /* Back to version 3: without the mounting columns (version 7), the finishes (5) and the
-     * synonyms and tokenizer (4). */
+    /* Back to version 3: without the variants' pattern and grain (version 8), the mounting
+     * columns (7), the finishes (5) and the synonyms and tokenizer (4). */
     CHECK(sql_run(path, "DROP TRIGGER variants_finishes_insert;"
                         "DROP TRIGGER variants_finishes_delete;"
                         "DROP TRIGGER variants_finishes_update;"
@@ -196,6 +196,8 @@ static void test_migration_from_v3(void)
                         "ALTER TABLE products DROP COLUMN mounting_height_mm;"
                         "ALTER TABLE products DROP COLUMN mounting_to;"
                         "ALTER TABLE products DROP COLUMN companions;"
+                        "ALTER TABLE variants DROP COLUMN pattern;"
+                        "ALTER TABLE variants DROP COLUMN grain_deg;"
                         "CREATE VIEW product_search AS SELECT p.id AS id, p.name AS name, "
                         "coalesce(s.name, '') AS series, m.name AS manufacturer, p.article AS "
                         "article, replace(replace(replace(replace(replace(p.article, '-', ''), "

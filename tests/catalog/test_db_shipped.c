@@ -313,7 +313,7 @@ static void test_refresh(void)
     int k = snprintf(broken + len, 200,
                      "Aquavera,99999,,taps_mixers,Linea,x,,,1,1,1,nan,EUR,"
                      "19,piece");
-    for (int i = 0; i < 30; i++) /* discount group .. companions: empty */
+    for (int i = 0; i < 32; i++) /* discount group .. grain: empty */
         broken[len + (size_t)k++] = ',';
     memcpy(broken + len + k, "\n", 2);
     write_text("src/fixtures.csv", broken);

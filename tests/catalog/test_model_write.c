@@ -52,7 +52,9 @@ static void hand_made(void)
                                  0.66f,
                                  CAT_BLEND_FRESNEL,
                                  0.9f,
-                                 1.52f};
+                                 1.52f,
+                                 CAT_PATTERN_NONE,
+                                 0};
     cat_material_from_render(&glass, "glass", &mats[1]);
     CHECK_NEAR(mats[1].base_color[3], 0.1, 1e-6); /* alpha = 1 - transparency */
     CHECK_NEAR(mats[1].emissive[0], 1, 1e-6);     /* divided by the largest, 4 */

@@ -3,8 +3,10 @@
  * each pixel's linear value is the material's colour times the grain at that point of the
  * panel. The GPU must agree with the C function pixel by pixel, the grain must run along the
  * object's x axis (variation across it, little along it), the panel's mean must stay within
- * 2 % of the material's colour, and a material without the pattern stays flat. The backend
- * comes from TESSERA_GL. */
+ * 2 % of the material's colour, and a material without the pattern stays flat. A front panel
+ * (the object's x-z plane) with its grain turned upright or slanted (rd_material.grain_angle_deg)
+ * must agree with the twin too and run the way it was turned. The backend comes from
+ * TESSERA_GL. */
 #include "../common/check.h"
 #include "render/primitives.h"
 #include "render/render.h"
@@ -175,6 +177,82 @@ static void test_twin(void)
     CHECK(rd_ref_wood_grain((const float[3]){NAN, 0, 0}, 0.0f) == 1.0f);
 }
 
+/* A 2 x 2 m front in the object's x-z plane (y = 0, facing -y), as a catalog model's front. */
+static rd_mesh make_front(rd_context *ctx)
+{
+    static const float pos[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+    static const float nrm[] = {0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1, 0};
+    static const uint32_t idx[] = {0, 1, 2, 0, 2, 3};
+    rd_mesh_desc d = {
+        .positions = pos, .normals = nrm, .indices = idx, .vertex_count = 4, .index_count = 6};
+    return rd_mesh_create(ctx, &d);
+}
+
+/* The front seen straight on from -y, z up, with its grain at angle_deg (0 along x, 90 up). */
+static void render_front(rd_context *ctx, rd_mesh front, float angle_deg, float *linear)
+{
+    rd_scene *s = rd_scene_create(ctx);
+    rd_object_desc o = {.mesh = front, .double_sided = 1};
+    o.transform[0] = o.transform[5] = o.transform[10] = o.transform[15] = 1.0f;
+    for (int k = 0; k < 3; k++)
+        o.material.ambient[k] = o.material.diffuse[k] = OAK[k];
+    o.material.pattern = RD_PATTERN_WOOD;
+    o.material.grain_angle_deg = angle_deg;
+    CHECK(rd_scene_add_object(s, &o) == RD_OK);
+    rd_scene_set_ambient(s, (const float[3]){1, 1, 1});
+    rd_view v = panel_view(HALF);
+    v.eye[0] = v.eye[2] = 0.0f;
+    v.eye[1] = -EYE_H;
+    v.up[1] = 0.0f;
+    v.up[2] = 1.0f;
+    CHECK(rd_render(ctx, s, &v) == RD_OK);
+    CHECK(rd_read_linear(ctx, linear, (size_t)W * H * 4) == RD_OK);
+    rd_scene_destroy(s);
+}
+
+/* The turned grain against the twin at the same turned point, pixel by pixel, and its
+ * direction: along the turned axis the neighbours differ far less than across it. */
+static void test_turned_front(const float *img, float angle_deg)
+{
+    float dir[2];
+    rd_ref_wood_grain_dir(angle_deg, dir);
+    /* fwidth of the turned point's components: (|cos| + |sin|) pixels of the panel. */
+    const float footprint = (fabsf(dir[0]) + fabsf(dir[1])) * 2.0f * HALF / H;
+    double worst = 0.0, sum = 0.0, along = 0.0, across = 0.0;
+    int far = 0;
+    for (int j = 0; j < H; j++)
+        for (int i = 0; i < W; i++) {
+            float xy[3], p[3], q[3];
+            pixel_point(i, j, xy);
+            p[0] = xy[0], p[1] = 0.0f, p[2] = xy[1]; /* image up is the front's z */
+            rd_ref_wood_grain_point(p, dir, q);
+            double want = OAK[1] * rd_ref_wood_grain(q, footprint);
+            double d = fabs(img[4 * (j * W + i) + 1] - want);
+            worst = d > worst ? d : worst;
+            sum += d;
+            far += d > 1e-3 * OAK[1];
+        }
+    /* Neighbour differences along the grain's direction and across it, on the image grid:
+     * a step of (cos, sin) pixels (rounded, image rows run down) against (-sin, cos). */
+    int ax = (int)lroundf(4.0f * dir[0]), ay = -(int)lroundf(4.0f * dir[1]);
+    int cx = -ay, cy = ax;
+    for (int j = 8; j < H - 8; j++)
+        for (int i = 8; i < W - 8; i++) {
+            float c = img[4 * (j * W + i) + 1];
+            along += fabs(img[4 * ((j + ay) * W + i + ax) + 1] - c);
+            across += fabs(img[4 * ((j + cy) * W + i + cx) + 1] - c);
+        }
+    printf("front, grain at %g deg: GPU vs twin mean |d| %.2e, max %.2e, %d pixels over 1e-3; "
+           "neighbours along %.2e, across %.2e\n",
+           (double)angle_deg, sum / (W * H), worst, far, along, across);
+    CHECK_MSG(sum / (W * H) < 1.6e-4, "grain at %g deg: mean difference %.2e", (double)angle_deg,
+              sum / (W * H));
+    CHECK_MSG(far < W * H / 1000, "grain at %g deg: %d pixels differ by more than 1e-3",
+              (double)angle_deg, far);
+    CHECK_MSG(across > 3.0 * along, "grain at %g deg runs another way: along %.3g, across %.3g",
+              (double)angle_deg, along, across);
+}
+
 int main(void)
 {
     test_twin();
@@ -197,6 +275,14 @@ int main(void)
     test_mean(img);
     render_panel(ctx, plane, RD_PATTERN_NONE, WIDE_HALF, img);
     test_plain_is_flat(img);
+    rd_mesh front = make_front(ctx);
+    CHECK(front.id != 0);
+    static const float angles[] = {0.0f, 90.0f, 30.0f};
+    for (int a = 0; a < 3; a++) {
+        render_front(ctx, front, angles[a], img);
+        test_turned_front(img, angles[a]);
+    }
+    rd_mesh_destroy(ctx, front);
     free(img);
     rd_mesh_destroy(ctx, plane);
     rd_context_destroy(ctx);

@@ -249,6 +249,17 @@ int cli_cmd_catalog_show(const cli_options *o)
         printf("\n         shininess %g  k_r %g  g %g  blend %s  transparency %g  IOR %g\n",
                m->shininess, m->reflectivity, m->glossiness, cat_blend_name(m->blend),
                m->transparency, m->ior);
+        if (m->pattern != CAT_PATTERN_NONE) {
+            char grain[32] = "along the longer side";
+            if (m->grain_deg >= 0.0f)
+                snprintf(grain, sizeof grain, "%s",
+                         m->grain_deg == 0.0f    ? "horizontal"
+                         : m->grain_deg == 90.0f ? "vertical"
+                                                 : "");
+            if (m->grain_deg >= 0.0f && !grain[0])
+                snprintf(grain, sizeof grain, "%g degrees", (double)m->grain_deg);
+            printf("         pattern %s, grain %s\n", cat_pattern_name(m->pattern), grain);
+        }
     }
     cat_product_free(&p);
     return CLI_OK;

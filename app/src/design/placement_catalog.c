@@ -99,6 +99,13 @@ app_result app_placement_catalog_lookup(void *user, const app_product_ref *ref,
         out->ior = m->ior;
         /* cat_blend and APP_BLEND_* share the order mix, add, fresnel. */
         out->blend = (int)m->blend;
+        out->pattern = m->pattern == CAT_PATTERN_WOOD ? APP_PATTERN_WOOD : APP_PATTERN_NONE;
+        /* A front's grain runs along its long side unless the catalog says otherwise: the
+         * width is the model's x, the height its z (the grain's 0 and 90 degrees). */
+        out->grain_deg = out->pattern != APP_PATTERN_WOOD ? 0.0f
+                         : m->grain_deg >= 0.0f           ? m->grain_deg
+                         : prod.height_mm > prod.width_mm ? 90.0f
+                                                          : 0.0f;
     }
     cat_product_free(&prod);
     return APP_OK;

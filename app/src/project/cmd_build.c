@@ -619,11 +619,12 @@ static app_result check_material(const app_material *m, char *err, size_t err_si
                     "material \"%s\": shininess 0 to 1e6, texture size > 0", m->name);
     if (!finite_in(m->reflectivity, 0, 1) || !finite_in(m->glossiness, 0, 1) ||
         !finite_in(m->transparency, 0, 1) || !finite_in(m->ior, 1, 3) ||
-        !finite_in(m->dispersion, 0, 0.2) || m->blend < APP_BLEND_MIX ||
-        m->blend > APP_BLEND_FRESNEL || !finite_in(m->proxy_radius_mm, 0, MAX_COORD_MM))
+        !finite_in(m->dispersion, 0, 0.2) || !finite_in(m->grain_deg, 0, 180) ||
+        m->blend < APP_BLEND_MIX || m->blend > APP_BLEND_FRESNEL ||
+        !finite_in(m->proxy_radius_mm, 0, MAX_COORD_MM))
         return fail(err, err_size, APP_ERR_SCHEMA,
                     "material \"%s\": reflectivity, glossiness and transparency 0 to 1, ior 1 "
-                    "to 3, dispersion 0 to 0.2",
+                    "to 3, dispersion 0 to 0.2, grain 0 to 180",
                     m->name);
     return APP_OK;
 }
@@ -649,8 +650,11 @@ static app_result build_material(const app_project *p, const app_command_desc *d
     if (d->type == APP_CMD_SET_PATTERN) {
         if (d->material_pattern < APP_PATTERN_NONE || d->material_pattern > APP_PATTERN_WOOD)
             return fail(err, err_size, APP_ERR_SCHEMA, "a material's pattern is none or wood");
+        if (!finite_in(d->material_grain_deg, 0, 180))
+            return fail(err, err_size, APP_ERR_SCHEMA, "a wood grain's angle is 0 to 180 degrees");
         app_material m = p->materials[d->index];
         m.pattern = d->material_pattern;
+        m.grain_deg = d->material_grain_deg;
         snprintf(c->label, sizeof c->label, "set the pattern of \"%s\"", m.name);
         return cmd_add_edit(c, CMD_T_MATERIAL, CMD_OP_REPLACE, d->index, &p->materials[d->index],
                             &m);

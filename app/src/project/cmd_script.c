@@ -403,6 +403,8 @@ static int variant_material(const app_project *p, const app_product_ref *ref,
         m->blend = info->blend;
         m->transparency = info->transparency;
         m->ior = info->ior > 0 ? info->ior : 1.5f;
+        m->pattern = info->pattern;
+        m->grain_deg = info->grain_deg;
         m->texture_size_mm[0] = m->texture_size_mm[1] = 1000;
         return p->material_count;
     }
@@ -1093,11 +1095,12 @@ static int do_reflect(sctx *c)
     return all_used(c) && run(c, &d);
 }
 
-/* `pattern MATERIAL none|wood`: a procedural pattern on the material's colour (the wood
- * grain, docs/rendering.md "Wood grain"). */
+/* `pattern MATERIAL none|wood [grain horizontal|vertical|DEG]`: a procedural pattern on the
+ * material's colour (the wood grain, docs/rendering.md "Wood grain") and the grain's direction
+ * on the object's front (kept when not given). */
 static int do_pattern(sctx *c)
 {
-    const char *name = NULL, *kind = NULL;
+    const char *name = NULL, *kind = NULL, *grain = NULL;
     if (!word(c, 1, &name) || !word(c, 2, &kind))
         return 0;
     int m = app_project_find_material(c->p, name);
@@ -1107,6 +1110,21 @@ static int do_pattern(sctx *c)
     memset(&d, 0, sizeof d);
     d.type = APP_CMD_SET_PATTERN;
     d.index = m;
+    d.material_grain_deg = c->p->materials[m].grain_deg;
+    int has_grain = kw_word(c, 3, "grain", &grain, 0);
+    if (!has_grain)
+        return 0;
+    if (has_grain > 0) {
+        char *end = NULL;
+        double deg = strtod(grain, &end);
+        if (!strcmp(grain, "horizontal") || !strcmp(grain, "vertical"))
+            d.material_grain_deg = grain[0] == 'h' ? 0.0f : 90.0f;
+        else if (end != grain && !*end && deg >= 0.0 && deg <= 180.0)
+            d.material_grain_deg = (float)deg;
+        else
+            return fail(c, "pattern: grain horizontal, vertical or 0 to 180 degrees, not \"%s\"",
+                        grain);
+    }
     if (!strcmp(kind, "wood"))
         d.material_pattern = APP_PATTERN_WOOD;
     else if (!strcmp(kind, "none"))

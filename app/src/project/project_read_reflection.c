@@ -14,6 +14,7 @@ const char *const pj_probe_update_names[6] = {"default",   "every-frame", "once"
 static const pj_range UNIT = {0.0, 1.0, 0, 0, 1};
 static const pj_range IOR = {1.0, 3.0, 0, 0, 1};
 static const pj_range DISPERSION = {0.0, 0.2, 0, 0, 1};
+static const pj_range GRAIN = {0.0, 180.0, 0, 0, 1};
 
 /* A string member that must be one of `names`; absent leaves *out as it is. */
 static app_result get_enum(pj_ctx *c, const cJSON *obj, const char *key, const char *const *names,
@@ -84,6 +85,25 @@ static app_result read_static_map(pj_ctx *c, const cJSON *probe, app_material *m
     return APP_OK;
 }
 
+/* "grain": "horizontal", "vertical" or degrees 0-180 from the object's x towards its z. */
+static app_result read_grain(pj_ctx *c, const cJSON *obj, float *out)
+{
+    const cJSON *item;
+    app_result r = pj_member(c, obj, "grain", cJSON_String | cJSON_Number, 0, &item);
+    if (r != APP_OK || !item)
+        return r;
+    if (cJSON_IsNumber(item))
+        return pj_get_float(c, obj, "grain", 0, GRAIN, out);
+    const char *value = item->valuestring ? item->valuestring : "";
+    if (!strcmp(value, "horizontal") || !strcmp(value, "vertical")) {
+        *out = value[0] == 'h' ? 0.0f : 90.0f;
+        return APP_OK;
+    }
+    pj_path_key(c, "grain");
+    return pj_fail(c, APP_ERR_SCHEMA,
+                   "unknown value \"%.40s\" (use horizontal, vertical or degrees 0 to 180)", value);
+}
+
 app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material *m)
 {
     app_result r;
@@ -93,7 +113,8 @@ app_result pj_read_reflection_fields(pj_ctx *c, const cJSON *item, app_material 
         (r = pj_get_float(c, item, "transparency", 0, UNIT, &m->transparency)) != APP_OK ||
         (r = pj_get_float(c, item, "ior", 0, IOR, &m->ior)) != APP_OK ||
         (r = pj_get_float(c, item, "dispersion", 0, DISPERSION, &m->dispersion)) != APP_OK ||
-        (r = get_enum(c, item, "pattern", pj_material_pattern_names, 2, &m->pattern)) != APP_OK)
+        (r = get_enum(c, item, "pattern", pj_material_pattern_names, 2, &m->pattern)) != APP_OK ||
+        (r = read_grain(c, item, &m->grain_deg)) != APP_OK)
         return r;
     const cJSON *probe;
     if ((r = pj_member(c, item, "probe", cJSON_Object, 0, &probe)) != APP_OK || !probe)

@@ -161,6 +161,10 @@ static void put_reflection(jb *b, cJSON *o, const app_material *m)
         put_num(b, o, "dispersion", m->dispersion, 1);
     if (m->pattern > 0 && m->pattern < 2)
         put_str(b, o, "pattern", pj_material_pattern_names[m->pattern], 32);
+    if (m->grain_deg == 90.0f)
+        put_str(b, o, "grain", "vertical", 32);
+    else if (m->grain_deg != 0.0f)
+        put_num(b, o, "grain", m->grain_deg, 1);
     if (!m->correction && !m->probe_update && !m->probe_every && !m->probe_resolution &&
         m->proxy_radius_mm == 0.0f && !m->probe_map[0] && !m->probe_sphere_map &&
         !m->probe_per_vertex)

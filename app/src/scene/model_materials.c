@@ -20,6 +20,8 @@ rd_material app_material_from_catalog(const cat_render_material *c)
                                               : RD_REFLECT_MIX;
     m.transparency = c->transparency;
     m.ior = c->ior;
+    m.pattern = c->pattern == CAT_PATTERN_WOOD ? RD_PATTERN_WOOD : RD_PATTERN_NONE;
+    m.grain_angle_deg = c->grain_deg >= 0.0f ? c->grain_deg : 0.0f;
     return m;
 }
 

@@ -50,6 +50,7 @@ app_result app_list_material(app_list_builder *b, const app_material *am, rd_mat
                      .ior = am->ior,
                      .dispersion = am->dispersion,
                      .pattern = (rd_pattern)am->pattern,
+                     .grain_angle_deg = am->grain_deg,
                      .per_vertex_reflection = am->probe_per_vertex,
                      .sphere_map = am->probe_sphere_map};
     memcpy(m.ambient, am->ambient, sizeof m.ambient);

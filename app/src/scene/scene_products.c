@@ -68,6 +68,8 @@ static int material_from_info(const app_product_info *info, const app_object *o,
     m->transparency = info->transparency;
     m->ior = info->ior > 0 ? info->ior : 1.5f;
     m->blend = info->blend;
+    m->pattern = info->pattern;
+    m->grain_deg = info->grain_deg;
     m->texture_size_mm[0] = m->texture_size_mm[1] = 1000;
     return 1;
 }

@@ -157,7 +157,9 @@ static rd_material default_material(void)
                              0.5f,
                              CAT_BLEND_MIX,
                              0,
-                             1.5f};
+                             1.5f,
+                             CAT_PATTERN_NONE,
+                             0};
     return app_material_from_catalog(&c);
 }
 

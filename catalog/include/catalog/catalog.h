@@ -22,7 +22,7 @@ extern "C" {
 
 /* The schema version this build writes (PRAGMA user_version). Older files are migrated on
  * open, one step at a time; newer ones are refused with CAT_DB_ERR_VERSION. */
-#define CAT_DB_SCHEMA_VERSION 7
+#define CAT_DB_SCHEMA_VERSION 8
 
 typedef enum cat_db_result {
     CAT_DB_OK = 0,
@@ -79,6 +79,13 @@ typedef enum cat_blend {
     CAT_BLEND_COUNT
 } cat_blend;
 
+/* A procedural pattern on a variant's colour (docs/rendering.md "Wood grain"). */
+typedef enum cat_pattern { CAT_PATTERN_NONE = 0, CAT_PATTERN_WOOD, CAT_PATTERN_COUNT } cat_pattern;
+
+/* cat_render_material.grain_deg of a variant whose grain runs along the product's longer side
+ * (its width or its height); the placement resolves it per product. */
+#define CAT_GRAIN_LONG (-1.0f)
+
 typedef enum cat_tile_surface {
     CAT_SURFACE_GLOSSY = 0,
     CAT_SURFACE_MATT,
@@ -113,6 +120,7 @@ typedef enum cat_mount_to {
 const char *cat_category_name(cat_category c);
 const char *cat_unit_name(cat_unit u);
 const char *cat_blend_name(cat_blend b);
+const char *cat_pattern_name(cat_pattern p); /* "none", "wood" */
 const char *cat_surface_name(cat_tile_surface s);
 const char *cat_tile_type_name(cat_tile_type t);
 const char *cat_mount_to_name(cat_mount_to m); /* "bottom", "top", "rim", "seat"; NONE: "" */
@@ -122,6 +130,7 @@ const char *cat_mount_to_name(cat_mount_to m); /* "bottom", "top", "rim", "seat"
 int cat_category_parse(const char *text, cat_category *out);
 int cat_unit_parse(const char *text, cat_unit *out);
 int cat_blend_parse(const char *text, cat_blend *out);
+int cat_pattern_parse(const char *text, cat_pattern *out);
 int cat_surface_parse(const char *text, cat_tile_surface *out);
 int cat_tile_type_parse(const char *text, cat_tile_type *out);
 int cat_mount_to_parse(const char *text, cat_mount_to *out); /* not "" */
@@ -162,8 +171,12 @@ typedef struct cat_render_material {
     float reflectivity;                        /* k_r, 0 .. 1 */
     float glossiness;                          /* g, 0 .. 1 (1 = mirror) */
     cat_blend blend;
-    float transparency; /* 0 opaque .. 1 invisible */
-    float ior;          /* index of refraction, 1 .. 3 */
+    float transparency;  /* 0 opaque .. 1 invisible */
+    float ior;           /* index of refraction, 1 .. 3 */
+    cat_pattern pattern; /* a procedural pattern on the colour: the wood grain */
+    /* The grain's direction on the product's front, degrees from its width (x) towards its
+     * height (z), 0 .. 180: 0 horizontal, 90 vertical; CAT_GRAIN_LONG along the longer side. */
+    float grain_deg;
 } cat_render_material;
 
 typedef struct cat_variant {

@@ -144,11 +144,14 @@ typedef struct rd_material {
     float joint_width[2];
     float joint_color[3];
     /* A procedural pattern on the albedo, from the object-space position (no UVs):
-     * RD_PATTERN_WOOD is a wood grain along the object's x axis whose mean is 1, so the
-     * material keeps its colour (shaders/wood.glsl, rd_ref_wood_grain). It is computed at the
-     * mesh position times the transform's scale per axis: in metres along the object's own
-     * axes, whatever the mesh's units. */
+     * RD_PATTERN_WOOD is a wood grain along the object's x axis (or grain_angle_deg) whose
+     * mean is 1, so the material keeps its colour (shaders/wood.glsl, rd_ref_wood_grain). It is
+     * computed at the mesh position times the transform's scale per axis: in metres along the
+     * object's own axes, whatever the mesh's units. */
     rd_pattern pattern;
+    /* The grain's direction in the object's x-z plane (a catalog model's front), in degrees
+     * from x towards z: 0 along x, 90 along z (upright). */
+    float grain_angle_deg;
 
     /* Reflections (RENDERING.md sections 3-6). reflectivity k_r = 0: no probe, no reflection
      * code in the object's program, output bit for bit that of section 1. */

@@ -66,6 +66,13 @@ void rd_ref_joint_texcoord(const float uv[2], const float joint_width[2], int te
 #define RD_WOOD_PORE_CONTRAST 0.035f
 #define RD_WOOD_FIGURE_CONTRAST 0.035f
 float rd_ref_wood_grain(const float p[3], float footprint);
+/* The grain's direction (rd_material.grain_angle_deg, in the object's x-z plane) as its cosine
+ * and sine: the GPU gets these two floats as u_wood_grain_dir, so both sides turn the point by
+ * the same numbers. */
+void rd_ref_wood_grain_dir(float angle_deg, float dir[2]);
+/* The object-space point p turned about y so that the grain's direction lies along x, the
+ * point rd_ref_wood_grain takes (lit.vert's v_object); dir (1, 0) leaves p as it is. */
+void rd_ref_wood_grain_point(const float p[3], const float dir[2], float q[3]);
 
 /* The tone curves alone, on exposed linear RGB (>= 0), giving display-linear values in [0, 1];
  * NaN in, 0 out. The GPU twins are in shaders/tonemap.glsl. */

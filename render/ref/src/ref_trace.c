@@ -244,7 +244,10 @@ static void texture_albedo(const ref_scene *s, const surface *sf, const float or
 {
     image_albedo(s, sf, org, dir, fan, albedo, joint);
     if (sf->mesh->material.pattern == RD_PATTERN_WOOD && sf->mesh->object_positions) {
-        float grain = rd_ref_wood_grain(sf->object_p, 0.0f);
+        float dir[2], q[3];
+        rd_ref_wood_grain_dir(sf->mesh->material.grain_angle_deg, dir);
+        rd_ref_wood_grain_point(sf->object_p, dir, q);
+        float grain = rd_ref_wood_grain(q, 0.0f);
         for (int k = 0; k < 3; k++)
             albedo[k] *= grain;
     }

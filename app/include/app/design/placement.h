@@ -35,6 +35,11 @@ typedef struct app_product_info {
     float ambient[3], diffuse[3], specular[3], emissive[3];
     float shininess, reflectivity, glossiness, transparency, ior;
     int blend; /* APP_BLEND_* */
+    /* The variant's pattern (APP_PATTERN_*) and its grain in degrees on the product's front
+     * (app_material.grain_deg); the catalog's "along the longer side" is resolved here, by the
+     * product's width and height. */
+    int pattern;
+    float grain_deg;
     /* The product's own mounting (catalog columns mounting_height_mm, mounting_to): when
      * has_mounting, mounting_height_mm above the floor to its underside (mounting_of
      * APP_MOUNT_BOTTOM) or top (APP_MOUNT_TOP: top, rim, seat); else its category's. */

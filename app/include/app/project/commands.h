@@ -95,8 +95,9 @@ typedef struct app_command_desc {
     /* APP_CMD_SET_PROBE: the material's reflection probe policy (app_material's fields of
      * the same names; RENDERING.md section 8). */
     int probe_update, probe_every, probe_resolution, correction;
-    char parent[64];      /* APP_CMD_SET_PARENT */
-    int material_pattern; /* APP_CMD_SET_PATTERN: APP_PATTERN_* */
+    char parent[64];          /* APP_CMD_SET_PARENT */
+    int material_pattern;     /* APP_CMD_SET_PATTERN: APP_PATTERN_* */
+    float material_grain_deg; /* APP_CMD_SET_PATTERN: app_material.grain_deg */
 } app_command_desc;
 
 /* The objects mounted on object `index`, directly or through others (app_object.parent),

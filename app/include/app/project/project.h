@@ -67,6 +67,9 @@ typedef struct app_material {
     float ior;          /* index of refraction, default 1.5 */
     float dispersion;   /* IOR spread between red and blue, 0 = none */
     int pattern;        /* APP_PATTERN_*: a procedural albedo pattern ("pattern": "wood") */
+    /* The wood grain's direction on the object's front (its x-z plane), degrees from x towards
+     * z, 0 .. 180 ("grain": "horizontal" (0, default), "vertical" (90) or the degrees). */
+    float grain_deg;
     /* Tile joints drawn from the layout (rd_material.joint_width); set by the room's tile
      * meshes (room_tiles.c), not read from files. */
     float joint_width[2];
