@@ -254,26 +254,14 @@ static void companion_columns(checker *k)
 
 /* The material of a variant whose file gives no value: a plain light grey (ambient follows
  * diffuse unless given). */
+/* clang-format off */
 static const double default_material[CATDB_MATERIAL_VALUES] = {
-    0.8,
-    0.8,
-    0.8,
-    0.8,
-    0.8,
-    0.8, /* ambient, diffuse */
-    0.2,
-    0.2,
-    0.2,
-    0,
-    0,
-    0, /* specular, emissive */
-    32,
-    0,
-    0.5,
-    0,
-    1.5,           /* shininess, k_r, g, transparency, ior */
-    CAT_GRAIN_LONG /* grain */
+    0.8, 0.8, 0.8, 0.8, 0.8, 0.8, /* ambient, diffuse */
+    0.2, 0.2, 0.2, 0,   0,   0,   /* specular, emissive */
+    32,  0,   0.5, 0,   1.5,      /* shininess, k_r, g, transparency, ior */
+    CAT_GRAIN_LONG                /* grain: along the longer side */
 };
+/* clang-format on */
 
 /* The grain's direction: "horizontal" (0), "vertical" (90) or degrees 0-180 from the
  * product's width towards its height; empty: along its longer side. */

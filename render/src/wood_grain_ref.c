@@ -49,7 +49,7 @@ static float clamp01(float v)
 void rd_ref_wood_grain_dir(float angle_deg, float dir[2])
 {
     double a = isfinite(angle_deg) ? (double)angle_deg * (3.14159265358979323846 / 180.0) : 0.0;
-    /* Exact at the two named directions, so "horizontal" is today's grain bit for bit. */
+    /* Exact at the two named directions: at 0 degrees the point stays as it is, bit for bit. */
     dir[0] = angle_deg == 90.0f ? 0.0f : (float)cos(a);
     dir[1] = angle_deg == 0.0f ? 0.0f : angle_deg == 90.0f ? 1.0f : (float)sin(a);
 }

@@ -250,13 +250,12 @@ int cli_cmd_catalog_show(const cli_options *o)
                m->shininess, m->reflectivity, m->glossiness, cat_blend_name(m->blend),
                m->transparency, m->ior);
         if (m->pattern != CAT_PATTERN_NONE) {
-            char grain[32] = "along the longer side";
-            if (m->grain_deg >= 0.0f)
-                snprintf(grain, sizeof grain, "%s",
-                         m->grain_deg == 0.0f    ? "horizontal"
-                         : m->grain_deg == 90.0f ? "vertical"
-                                                 : "");
-            if (m->grain_deg >= 0.0f && !grain[0])
+            char grain[32];
+            if (m->grain_deg < 0.0f)
+                snprintf(grain, sizeof grain, "along the longer side");
+            else if (m->grain_deg == 0.0f || m->grain_deg == 90.0f)
+                snprintf(grain, sizeof grain, m->grain_deg == 0.0f ? "horizontal" : "vertical");
+            else
                 snprintf(grain, sizeof grain, "%g degrees", (double)m->grain_deg);
             printf("         pattern %s, grain %s\n", cat_pattern_name(m->pattern), grain);
         }
