@@ -10,6 +10,7 @@
 #include "app/project/commands.h"
 #include "check.h"
 #include "panel_layout.h"
+#include "grain_props.h"
 #include "probe_props.h"
 
 #include <stdio.h>
@@ -170,6 +171,22 @@ static void test_probe_lines(void)
     /* A line that does not fit is reported, not cut. */
     char tiny[16];
     CHECK(ui_probe_line(tiny, sizeof tiny, p.materials[m].name, UI_PROBE_UPDATE, 1) == 1);
+    /* The wood grain combo: its items, and each line turns the material's grain. */
+    const char *grains[4];
+    char grain_other[32];
+    int shown;
+    CHECK(ui_grain_items(APP_PATTERN_NONE, 0.0f, grains, grain_other, &shown) == 3 &&
+          shown == UI_GRAIN_NONE);
+    CHECK(ui_grain_items(APP_PATTERN_WOOD, 30.0f, grains, grain_other, &shown) == 4 &&
+          shown == UI_GRAIN_OTHER && !strcmp(grains[3], "wood, 30 degrees"));
+    for (int k = UI_GRAIN_VERTICAL; k >= UI_GRAIN_NONE; k--) {
+        CHECK(!ui_grain_line(line, sizeof line, p.materials[m].name, k));
+        run_line(&p, h, line);
+        ui_grain_items(p.materials[m].pattern, p.materials[m].grain_deg, grains, grain_other,
+                       &shown);
+        CHECK_MSG(shown == k, "%s shows item %d", line, shown);
+    }
+    CHECK(ui_grain_line(line, sizeof line, p.materials[m].name, UI_GRAIN_OTHER) == 1);
     /* Undoing every step gives the demo back exactly. */
     while (app_history_undo_count(h) > 0)
         CHECK(app_history_undo(h, &p, err, sizeof err) == APP_OK);

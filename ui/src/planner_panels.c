@@ -6,6 +6,7 @@
 
 #include "app/project/commands.h"
 #include "gui.h"
+#include "grain_props.h"
 #include "probe_props.h"
 #include "render/ui_texture.h"
 
@@ -194,6 +195,18 @@ static void material_fields(planner *p, int mi)
                  blends[blend]);
         planner_edit(p, line);
         return; /* m may have moved */
+    }
+    /* The wood grain (docs/rendering.md "Wood grain"): one `pattern` line (grain_props.h). */
+    const char *grain_items[4];
+    char grain_other[32];
+    int grain_item,
+        grain_n = ui_grain_items(m->pattern, m->grain_deg, grain_items, grain_other, &grain_item);
+    int grain_shown = grain_item;
+    if (ui_gui_combo("wood grain", &grain_item, grain_items, grain_n) &&
+        grain_item != grain_shown) {
+        if (!ui_grain_line(line, sizeof line, m->name, grain_item))
+            planner_edit(p, line);
+        return;
     }
     ui_gui_text("reflection probe");
     int update = m->probe_update >= 0 && m->probe_update <= APP_PROBE_STATIC ? m->probe_update : 0;

@@ -85,6 +85,8 @@ static int material_eq(cmp *c, const app_material *x, const app_material *y)
     NUM(transparency);
     NUM(ior);
     NUM(dispersion);
+    NUM(pattern);
+    NUM(grain_deg);
     return 1;
 }
 
