@@ -19,7 +19,7 @@ uniform vec3 u_sh[9]; // L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (world, 
 #endif
 
 uniform int u_light_count;
-uniform int u_light_type[MAX_LIGHTS]; // 0 point, 1 spot, 2 directional
+uniform int u_light_type[MAX_LIGHTS]; // 0 point, 1 spot, 2 directional, 3 rect, 4 rect as a point
 uniform vec3 u_light_position[MAX_LIGHTS];
 uniform vec3 u_light_direction[MAX_LIGHTS]; // unit, the direction the light travels
 uniform vec3 u_light_diffuse[MAX_LIGHTS];   // I_d
@@ -140,7 +140,9 @@ float light_towards(int i, vec3 x, vec3 n, out vec3 L)
     float dist = length(d);
     L = dist > 0.0 ? d / dist : n;
 #ifdef AREA_LIGHTS
-    if (u_light_type[i] == 3) // a rectangle as a point light of its power (probe captures)
+    // A rectangle as a point light of its power: the lookups of probe captures (3), and the
+    // main loop of a live view's moving frames (4, rd_view.live), which skip its own loop.
+    if (u_light_type[i] >= 3)
         return rect_solid_angle(x, u_light_position[i], u_light_direction[i], u_light_half_width[i],
                                 u_light_half_height[i]) / 3.14159265;
 #endif

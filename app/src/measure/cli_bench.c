@@ -101,6 +101,7 @@ int cli_cmd_bench(const cli_options *args)
         return CLI_USAGE;
     }
     view.supersample = 1; /* an interactive frame */
+    view.live = o.live == RD_SWITCH_ON;
     drag_state drag = {.object = -1};
     if (o.animate && (rc = drag_begin(&s, o.animate, &drag)) != CLI_OK) {
         cli_session_close(&s);
