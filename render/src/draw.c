@@ -33,7 +33,8 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
     float pos[RD_MAX_LIGHTS][3], dir[RD_MAX_LIGHTS][3], dif[RD_MAX_LIGHTS][3],
         spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2],
         half_w[RD_MAX_LIGHTS][3], half_h[RD_MAX_LIGHTS][3];
-    int n = 0, rects = 0, rect_index[RD_MAX_LIGHTS];
+    int n = 0, rects = 0, rect_index[RD_MAX_LIGHTS], locals = 0, local_index[RD_MAX_LIGHTS],
+        others = 0, other_index[RD_MAX_LIGHTS];
     for (int i = 0; i < s->light_count; i++) {
         if (!(mask & (1u << i)))
             continue;
@@ -50,11 +51,21 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
         memcpy(half_h[n], l->half_height, sizeof half_h[n]);
         if (l->type == RD_LIGHT_RECT && rect_as_points)
             type[n] = LIGHT_RECT_AS_POINT;
-        else if (l->type == RD_LIGHT_RECT)
+        if (l->type == RD_LIGHT_POINT || l->type == RD_LIGHT_SPOT)
+            local_index[locals++] = n;
+        else if (l->type == RD_LIGHT_RECT && !rect_as_points)
             rect_index[rects++] = n;
+        else
+            other_index[others++] = n;
         n++;
     }
     glUniform1i(p->u_light_count, n);
+    glUniform1i(p->u_local_count, locals);
+    glUniform1i(p->u_other_count, others);
+    if (locals > 0)
+        glUniform1iv(p->u_local_index, locals, local_index);
+    if (others > 0)
+        glUniform1iv(p->u_other_index, others, other_index);
     if (p->u_rect_count >= 0) { /* the AREA_LIGHTS variant only */
         glUniform1i(p->u_rect_count, rects);
         if (rects > 0)
