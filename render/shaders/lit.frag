@@ -19,13 +19,19 @@ uniform vec3 u_sh[9]; // L00, L1-1, L10, L11, L2-2, L2-1, L20, L21, L22 (world, 
 #endif
 
 uniform int u_light_count;
-uniform int u_light_type[MAX_LIGHTS]; // 0 point, 1 spot, 2 directional
+uniform int u_light_type[MAX_LIGHTS]; // 0 point, 1 spot, 2 directional, 3 rect, 4 rect as a point
 uniform vec3 u_light_position[MAX_LIGHTS];
 uniform vec3 u_light_direction[MAX_LIGHTS]; // unit, the direction the light travels
 uniform vec3 u_light_diffuse[MAX_LIGHTS];   // I_d
 uniform vec3 u_light_specular[MAX_LIGHTS];  // I_s
 uniform vec3 u_light_attenuation[MAX_LIGHTS];
 uniform vec2 u_light_spot[MAX_LIGHTS]; // cos(inner), cos(outer)
+// The main loop's lights by two lists: point and spot lights, and the rest (directional, and
+// rectangles as points in live frames); rectangle lights (type 3) have their own loop below.
+uniform int u_local_count;
+uniform int u_local_index[MAX_LIGHTS];
+uniform int u_other_count;
+uniform int u_other_index[MAX_LIGHTS];
 
 uniform vec3 u_mat_ambient;
 #ifdef BAKED_LIGHT
@@ -124,8 +130,23 @@ float spot_factor(float cos_angle, vec2 inner_outer)
     return t * t * (3.0 - 2.0 * t);
 }
 
-// Light i as seen from x: its unit direction L and the factor of its distance attenuation and
-// spot cone (1 for a directional light); n stands in for L at the light's own position.
+// Point or spot light i as seen from x: its unit direction L and the factor of its distance
+// attenuation and spot cone; n stands in for L at the light's own position. The main loop's
+// point and spot lights take this alone: llvmpipe runs every side of a branch on the type, so
+// light_towards' other cases would cost each of them.
+float local_light_towards(int i, vec3 x, vec3 n, out vec3 L)
+{
+    vec3 d = u_light_position[i] - x;
+    float dist = length(d);
+    L = dist > 0.0 ? d / dist : n;
+    vec3 a = u_light_attenuation[i];
+    float k = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-4);
+    if (u_light_type[i] == 1)
+        k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
+    return k;
+}
+
+// Light i of any type as seen from x: as local_light_towards, 1 for a directional light.
 float light_towards(int i, vec3 x, vec3 n, out vec3 L)
 {
     if (u_light_type[i] == 2) {
@@ -136,18 +157,14 @@ float light_towards(int i, vec3 x, vec3 n, out vec3 L)
         return 1.0;
 #endif
     }
-    vec3 d = u_light_position[i] - x;
-    float dist = length(d);
-    L = dist > 0.0 ? d / dist : n;
+    float k = local_light_towards(i, x, n, L);
 #ifdef AREA_LIGHTS
-    if (u_light_type[i] == 3) // a rectangle as a point light of its power (probe captures)
+    // A rectangle as a point light of its power: the lookups of probe captures (3), and the
+    // main loop of a live view's moving frames (4, rd_view.live), which skip its own loop.
+    if (u_light_type[i] >= 3)
         return rect_solid_angle(x, u_light_position[i], u_light_direction[i], u_light_half_width[i],
                                 u_light_half_height[i]) / 3.14159265;
 #endif
-    vec3 a = u_light_attenuation[i];
-    float k = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-4);
-    if (u_light_type[i] == 1)
-        k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
     return k;
 }
 
@@ -352,6 +369,28 @@ vec3 lobe_direction(vec3 axis, float n, int k, int count)
 }
 #endif
 
+// Light i's diffuse and specular at the shaded point (eqs. 2-5), given light_towards' factor k
+// and direction L; nothing from behind the surface.
+vec3 light_contribution(int i, float k, vec3 L, vec3 N, vec3 V, vec3 c_d)
+{
+    float n_dot_l = dot(N, L);
+    if (n_dot_l <= 0.0)
+        return vec3(0.0);
+#ifdef HAS_SHADOWS
+    if (k > 0.0) // no lookup where the light does not reach (outside a spot's cone)
+        k *= shadow_visibility(i, u_light_type[i], u_light_position[i], v_world, N, L);
+#endif
+    vec3 c = k * c_d * u_light_diffuse[i] * n_dot_l; // eq. 2
+#ifndef NO_SPECULAR
+    // Probe captures that leave highlights to the lookup compile this out (a variant of its
+    // own): llvmpipe would evaluate the power for every texel only to scale it by 0.
+    vec3 H = normalize(L + V);
+    c += u_specular_scale * k * u_mat_specular * u_light_specular[i] *
+         blinn_phong_power(dot(N, H), u_mat_shininess); // eqs. 3-5
+#endif
+    return c;
+}
+
 #if defined(HAS_REFLECTION) && !defined(BOX_OPAQUE_REFLECTION) && !defined(PER_VERTEX_REFLECTION)
 // The "depth" lookup with two probes: the object's own and the room's. Each is searched along
 // the reflected ray; a hit of the own probe is a point it saw, but possibly the silhouette of
@@ -437,28 +476,17 @@ void main()
 #ifdef HAS_SHADOWS
     shadow_begin(N); // this sample's soft-shadow disk, shared by the lights (shadow.glsl)
 #endif
-    for (int i = 0; i < u_light_count; i++) {
+    for (int j = 0; j < u_local_count; j++) {
+        int i = u_local_index[j];
         vec3 L;
-#ifdef AREA_LIGHTS
-        if (u_light_type[i] == 3)
-            continue; // rectangle lights: their own loop below
-#endif
+        float k = local_light_towards(i, v_world, N, L);
+        lit += light_contribution(i, k, L, N, V, c_d);
+    }
+    for (int j = 0; j < u_other_count; j++) {
+        int i = u_other_index[j];
+        vec3 L;
         float k = light_towards(i, v_world, N, L);
-        float n_dot_l = dot(N, L);
-        if (n_dot_l <= 0.0)
-            continue; // no diffuse and no specular from behind the surface
-#ifdef HAS_SHADOWS
-        if (k > 0.0) // no lookup where the light does not reach (outside a spot's cone)
-            k *= shadow_visibility(i, u_light_type[i], u_light_position[i], v_world, N, L);
-#endif
-        lit += k * c_d * u_light_diffuse[i] * n_dot_l;                                      // eq. 2
-#ifndef NO_SPECULAR
-        // Probe captures that leave highlights to the lookup compile this out (a variant of
-        // its own): llvmpipe would evaluate the power for every texel only to scale it by 0.
-        vec3 H = normalize(L + V);
-        lit += u_specular_scale * k * u_mat_specular * u_light_specular[i] *
-               blinn_phong_power(dot(N, H), u_mat_shininess); // eq. 3-5
-#endif
+        lit += light_contribution(i, k, L, N, V, c_d);
     }
 #ifdef AREA_LIGHTS
     // Rectangle lights (area_light.glsl), by a list of their own: a loop bound every pixel

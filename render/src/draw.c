@@ -20,15 +20,22 @@
  * leave the capture bound where every later object reads its shadows. */
 #define PLANAR_UNIT 15
 
+/* lit.frag's light type of a rectangle light in the main loop as a point light of its power
+ * (rd_pass.rect_lights_as_points): its own loop, the clipped form factor, is left out. */
+#define LIGHT_RECT_AS_POINT 4
+
 /* The lights of `mask` (bit i: scene light i), packed in scene order: the light loop of
- * lit.frag runs over exactly these. */
-static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned mask)
+ * lit.frag runs over exactly these, and the rectangle loop over the rectangle lights, or
+ * none of them when rect_as_points gives them to the light loop. */
+static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned mask,
+                               int rect_as_points)
 {
     int type[RD_MAX_LIGHTS];
     float pos[RD_MAX_LIGHTS][3], dir[RD_MAX_LIGHTS][3], dif[RD_MAX_LIGHTS][3],
         spec[RD_MAX_LIGHTS][3], att[RD_MAX_LIGHTS][3], spot[RD_MAX_LIGHTS][2],
         half_w[RD_MAX_LIGHTS][3], half_h[RD_MAX_LIGHTS][3];
-    int n = 0, rects = 0, rect_index[RD_MAX_LIGHTS];
+    int n = 0, rects = 0, rect_index[RD_MAX_LIGHTS], locals = 0, local_index[RD_MAX_LIGHTS],
+        others = 0, other_index[RD_MAX_LIGHTS];
     for (int i = 0; i < s->light_count; i++) {
         if (!(mask & (1u << i)))
             continue;
@@ -43,11 +50,23 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
         spot[n][1] = l->spot_outer_cos;
         memcpy(half_w[n], l->half_width, sizeof half_w[n]);
         memcpy(half_h[n], l->half_height, sizeof half_h[n]);
-        if (l->type == RD_LIGHT_RECT)
+        if (l->type == RD_LIGHT_RECT && rect_as_points)
+            type[n] = LIGHT_RECT_AS_POINT;
+        if (l->type == RD_LIGHT_POINT || l->type == RD_LIGHT_SPOT)
+            local_index[locals++] = n;
+        else if (l->type == RD_LIGHT_RECT && !rect_as_points)
             rect_index[rects++] = n;
+        else
+            other_index[others++] = n;
         n++;
     }
     glUniform1i(p->u_light_count, n);
+    glUniform1i(p->u_local_count, locals);
+    glUniform1i(p->u_other_count, others);
+    if (locals > 0)
+        glUniform1iv(p->u_local_index, locals, local_index);
+    if (others > 0)
+        glUniform1iv(p->u_other_index, others, other_index);
     if (p->u_rect_count >= 0) { /* the AREA_LIGHTS variant only */
         glUniform1i(p->u_rect_count, rects);
         if (rects > 0)
@@ -109,7 +128,7 @@ void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float v
     glUniformMatrix4fv(p->u_view_proj, 1, GL_FALSE, vp);
     glUniform3fv(p->u_eye, 1, eye);
     glUniform3fv(p->u_ambient_light, 1, s->ambient);
-    set_light_uniforms(p, s, all_lights(s));
+    set_light_uniforms(p, s, all_lights(s), 0);
     glUniform1i(p->u_diffuse_texture, 0);
     glUniform1f(p->u_specular_scale, 1.0f);
     glUniform1f(p->u_store_distance, 0.0f);
@@ -420,8 +439,12 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
         const rd_program *p = rd_lit_program(ctx, variant);
         if (!p)
             return RD_ERR_SHADER;
+        /* The shadow lookups know a rectangle light only as a rectangle. */
+        int rect_as_points = pass->rect_lights_as_points && !(variant & RD_LIT_SHADOWS);
         if (!frame_uniforms_set[variant]) {
             rd_set_frame_uniforms(p, scene, pass->view_proj, pass->eye);
+            if (rect_as_points && !depth_only)
+                set_light_uniforms(p, scene, all_lights(scene), 1);
             light_masks[variant] = all_lights(scene);
             /* A highlight depends on where it is seen from; a probe sees from its centre, not
              * from the reflecting surface, so it may leave highlights out (section 8). */
@@ -443,11 +466,11 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
             !(probe && (probe->surface || probe->leaves_emitters))) {
             unsigned mask = lights_reaching(scene, scene->object_spheres[index]);
             if (mask != light_masks[variant]) {
-                set_light_uniforms(p, scene, mask);
+                set_light_uniforms(p, scene, mask, rect_as_points);
                 light_masks[variant] = mask;
             }
         } else if (!depth_only && light_masks[variant] != all_lights(scene)) {
-            set_light_uniforms(p, scene, all_lights(scene));
+            set_light_uniforms(p, scene, all_lights(scene), rect_as_points);
             light_masks[variant] = all_lights(scene);
         }
         if (!depth_only) {
@@ -551,7 +574,7 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
 }
 
 rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
-                       const float *view_rot, const float *eye, int sample_grid)
+                       const float *view_rot, const float *eye, int sample_grid, int live)
 {
     return rd_draw_objects(ctx, scene,
                            &(rd_pass){.view_proj = view_proj,
@@ -560,5 +583,7 @@ rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
                                       .reflections = 1,
                                       .shadows = 1,
                                       .depth_prepass = 1,
+                                      .isotropic_textures = live,
+                                      .rect_lights_as_points = live,
                                       .sample_grid = sample_grid});
 }

@@ -23,13 +23,15 @@ typedef struct rd_pass {
     int exclude_emitters;   /* 1: the scene's analytic emitters are left out (emitters.c) */
     const rd_self_bvh *exclude_traced; /* its parts are left out: the lookups trace them */
     int sample_grid; /* the view's samples a pixel side (the lookups' lobe strata); 0 = 1 */
+    int rect_lights_as_points; /* 1: unshadowed programs light with rectangle lights as point
+                                  lights of their power (rd_view.live) */
 } rd_pass;
 
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);
 /* The view's own pass: reflections, shadows, the depth prepass (renderer.c, and the adaptive
  * refinement of renderer_adaptive.c). */
 rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
-                       const float *view_rot, const float *eye, int sample_grid);
+                       const float *view_rot, const float *eye, int sample_grid, int live);
 
 /* Per-frame (view, lights) and per-object (model, material) uniforms of a lit program. */
 void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],

@@ -113,6 +113,10 @@ static void locate_lit(rd_program *p)
     p->u_light_half_height = glGetUniformLocation(id, "u_light_half_height");
     p->u_rect_count = glGetUniformLocation(id, "u_rect_count");
     p->u_rect_index = glGetUniformLocation(id, "u_rect_index");
+    p->u_local_count = glGetUniformLocation(id, "u_local_count");
+    p->u_local_index = glGetUniformLocation(id, "u_local_index");
+    p->u_other_count = glGetUniformLocation(id, "u_other_count");
+    p->u_other_index = glGetUniformLocation(id, "u_other_index");
     p->u_mat_ambient = glGetUniformLocation(id, "u_mat_ambient");
     p->u_mat_diffuse = glGetUniformLocation(id, "u_mat_diffuse");
     p->u_mat_specular = glGetUniformLocation(id, "u_mat_specular");

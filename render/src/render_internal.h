@@ -52,7 +52,8 @@ typedef struct rd_program {
     int u_ambient_light, u_light_count;
     int u_light_type, u_light_position, u_light_direction, u_light_diffuse, u_light_specular,
         u_light_attenuation, u_light_spot, u_light_half_width, u_light_half_height, u_rect_count,
-        u_rect_index; /* area_light.glsl */
+        u_rect_index, /* area_light.glsl */
+        u_local_count, u_local_index, u_other_count, u_other_index;
     int u_mat_ambient, u_mat_diffuse, u_mat_specular, u_mat_emissive, u_mat_shininess;
     int u_diffuse_texture, u_uv_scale, u_joint_width, u_joint_color, u_wood_grain_dir;
     int u_specular_scale;

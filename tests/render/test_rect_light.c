@@ -5,7 +5,10 @@
  *  - energy: a plane under a very large rectangle light of radiance L reflects C_d L, the
  *    irradiance of a whole hemisphere, on the GPU as on the CPU;
  *  - the GPU's rectangle light and portal against the CPU twin on every pixel of a lit plane,
- *    within 2/255, for a matte, a glossy and a mirror-like exponent. */
+ *    within 2/255, for a matte, a glossy and a mirror-like exponent;
+ *  - a live view's moving frame (rd_view.live) lights with the rectangle as a point light of
+ *    its power at its centre, against that CPU formula on every pixel, and differs from the
+ *    exact light where the panel is near. */
 #include "../common/check.h"
 #include "render/primitives.h"
 #include "render/render.h"
@@ -113,10 +116,33 @@ static int pixel_on_plane(int x, int y, float p[3])
     return 1;
 }
 
-/* Renders a 40 m plane of material m under light l and compares every pixel with `expect`
- * (the CPU twin when NULL). Returns the number of pixels more than 2/255 off. */
-static int render_and_compare(rd_context *ctx, rd_mesh plane, const rd_material *m,
-                              const rd_light *l, const char *what, int *lit_pixels)
+/* What a live frame draws for light l at p (normal n): every light as rd_ref_light_incidence
+ * gives it, a rectangle as a point light of its power at its centre (eqs. 1-7). */
+static void shade_live(const rd_material *m, const float p[3], const float n[3], const rd_light *l,
+                       const float ambient[3], float out[3])
+{
+    float v[3], dir[3], factor;
+    sub(eye, p, v);
+    normalize(v);
+    rd_ref_light_incidence(l, p, n, dir, &factor);
+    float n_dot_l = n[0] * dir[0] + n[1] * dir[1] + n[2] * dir[2];
+    float h[3] = {dir[0] + v[0], dir[1] + v[1], dir[2] + v[2]};
+    normalize(h);
+    float spec = rd_ref_blinn_phong_power(n[0] * h[0] + n[1] * h[1] + n[2] * h[2], m->shininess);
+    for (int k = 0; k < 3; k++) {
+        out[k] = m->ambient[k] * ambient[k];
+        if (n_dot_l > 0.0f)
+            out[k] += factor * (m->diffuse[k] * l->diffuse[k] * n_dot_l +
+                                m->specular[k] * l->specular[k] * spec);
+        out[k] = fmaxf(m->emissive[k], out[k]);
+    }
+}
+
+/* Renders a 40 m plane of material m under light l (as a live view's moving frame when live)
+ * and compares every pixel with the CPU twin. Returns the number of pixels more than 2/255
+ * off; *exact_off: those more than 2/255 off the exact (still) light. */
+static int render_compare(rd_context *ctx, rd_mesh plane, const rd_material *m, const rd_light *l,
+                          int live, const char *what, int *lit_pixels, int *exact_off)
 {
     const float ambient[3] = {0.05f, 0.05f, 0.05f};
     rd_scene *scene = rd_scene_create(ctx);
@@ -130,13 +156,15 @@ static int render_and_compare(rd_context *ctx, rd_mesh plane, const rd_material 
                     .target = {target[0], target[1], target[2]},
                     .fov_y_deg = fov,
                     .width = W,
-                    .height = H};
+                    .height = H,
+                    .live = live};
     rd_result r = rd_render(ctx, scene, &view);
     CHECK_MSG(r == RD_OK, "%s", rd_last_error());
     static uint8_t img[W * H * 4];
     CHECK(rd_read_rgba8(ctx, img, sizeof img) == RD_OK);
     int off = 0, worst = 0, wx = 0, wy = 0;
     *lit_pixels = 0;
+    *exact_off = 0;
     unsigned char worst_ref[3] = {0}, worst_gpu[3] = {0};
     for (int y = 0; y < H; y++)
         for (int x = 0; x < W; x++) {
@@ -144,7 +172,10 @@ static int render_and_compare(rd_context *ctx, rd_mesh plane, const rd_material 
             if (!pixel_on_plane(x, y, p))
                 continue;
             rd_ref_shade(m, NULL, p, n, eye, l, 1, ambient, c);
-            unsigned char ref[3], amb[3];
+            unsigned char ref[3], amb[3], exact[3];
+            rd_ref_display_rgb8(c, 0.0f, RD_TONEMAP_PHOTOGRAPHIC, 4.0f, exact);
+            if (live)
+                shade_live(m, p, n, l, ambient, c);
             float a[3] = {m->ambient[0] * ambient[0], m->ambient[1] * ambient[1],
                           m->ambient[2] * ambient[2]};
             rd_ref_display_rgb8(c, 0.0f, RD_TONEMAP_PHOTOGRAPHIC, 4.0f, ref);
@@ -155,6 +186,10 @@ static int render_and_compare(rd_context *ctx, rd_mesh plane, const rd_material 
             for (int k = 0; k < 3; k++)
                 d = abs((int)g[k] - (int)ref[k]) > d ? abs((int)g[k] - (int)ref[k]) : d;
             off += d > 2;
+            int de = 0;
+            for (int k = 0; k < 3; k++)
+                de = abs((int)g[k] - (int)exact[k]) > de ? abs((int)g[k] - (int)exact[k]) : de;
+            *exact_off += de > 2;
             if (d > worst) {
                 worst = d, wx = x, wy = y;
                 memcpy(worst_ref, ref, 3);
@@ -167,6 +202,13 @@ static int render_and_compare(rd_context *ctx, rd_mesh plane, const rd_material 
            worst_gpu[1], worst_gpu[2], off, *lit_pixels);
     rd_scene_destroy(scene);
     return off;
+}
+
+static int render_and_compare(rd_context *ctx, rd_mesh plane, const rd_material *m,
+                              const rd_light *l, const char *what, int *lit_pixels)
+{
+    int exact_off;
+    return render_compare(ctx, plane, m, l, 0, what, lit_pixels, &exact_off);
 }
 
 static void test_gpu(rd_context *ctx, rd_mesh plane)
@@ -196,6 +238,14 @@ static void test_gpu(rd_context *ctx, rd_mesh plane)
         CHECK_MSG(render_and_compare(ctx, plane, &m, &l, what, &lit) == 0, "%s: GPU and CPU differ",
                   what);
         CHECK(lit > W * H / 10);
+        /* The live frame: the point of power, which a panel 0.9 m up tells from the exact
+         * light under it. The plane is unshadowed, so this is the programs a live frame uses. */
+        int exact_off, live_lit;
+        snprintf(what, sizeof what, "live frame, rect light, n = %g", (double)exponents[e]);
+        CHECK_MSG(render_compare(ctx, plane, &m, &l, 1, what, &live_lit, &exact_off) == 0,
+                  "%s: GPU and the point of power differ", what);
+        CHECK_MSG(exact_off > W * H / 20, "%s: only %d pixels differ from the exact light", what,
+                  exact_off);
     }
     /* Clipped to the horizon: an upright panel standing through the plane, facing the eye. */
     {

@@ -224,7 +224,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "bake camera size frames warmup animate csv stats quality exact-lamps glaze "
-                "self-reflections probe-resolution probes blur ambient shadows backend",
+                "self-reflections probe-resolution probes blur ambient shadows backend live",
      .summary = "milliseconds per frame (median and spread) against a full-screen floor",
      .help = "  --animate drags an object 10 mm a frame; the cpu row: CPU ms, all threads.\n",
      .defaults = IN_FULL(cli_defaults_bench)},

@@ -101,6 +101,7 @@ int cli_cmd_bench(const cli_options *args)
         return CLI_USAGE;
     }
     view.supersample = 1; /* an interactive frame */
+    view.live = o.live == RD_SWITCH_ON;
     drag_state drag = {.object = -1};
     if (o.animate && (rc = drag_begin(&s, o.animate, &drag)) != CLI_OK) {
         cli_session_close(&s);
@@ -154,8 +155,11 @@ int cli_cmd_bench(const cli_options *args)
         printf("project  %s\nbackend  %s (%s)\nsize     %dx%d, %d frames after %d warm-up\n",
                s.project.path, rd_backend_name(rd_context_backend(s.ctx)),
                rd_context_description(s.ctx), view.width, view.height, o.frames, o.warmup);
-        printf("objects  %d draw calls, %d lights\n\n", rd_scene_object_count(s.scene.scene),
+        printf("objects  %d draw calls, %d lights\n", rd_scene_object_count(s.scene.scene),
                s.project.light_count);
+        if (view.live)
+            printf("live     frames drawn as the window's while the view moves\n");
+        printf("\n");
         printf("ms      %8s %8s %8s %8s %8s %8s\n", "median", "p10", "p90", "min", "max", "mad");
         print_row("frame", &fs);
         print_row("floor", &ls);

@@ -468,6 +468,12 @@ typedef struct rd_view {
      * successive renders at different offsets, averaged, supersample the view over time
      * (temporal supersampling; the planner's still view). 0 = the pixel centres. */
     float jitter[2];
+    /* 1: a frame of a moving live view (the planner while the camera or a fixture moves),
+     * drawn cheaper where the difference does not show in motion: rectangle lights as point
+     * lights of their power at their centres (what probe captures' lookups use) instead of
+     * their clipped form factor, and diffuse textures without anisotropic filtering. A still
+     * view renders with 0, exactly. */
+    int live;
 } rd_view;
 
 rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *view);
