@@ -215,18 +215,21 @@ static void hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh,
     }
     /* The light arriving at the hit leaves it by the diffuse lobe and by the glossy one, as in
      * the path tracer (ref_path.c), and a reflective surface sends k_r of it on as a mirror
-     * would; I stands for that field's radiance. The tracer's normalised Blinn-Phong lobe
-     * C_s (n + 8) / (8 pi) (N.H)^n reflects C_s A of a uniform field, its directional albedo A
-     * close to (N.V)^2 for n >= 40 (numerical integration over the hemisphere: 0.82, 0.50, 0.26,
-     * 0.10 at N.V = 0.9, 0.7, 0.5, 0.3 for n = 200; docs/rendering.md, "Baked indirect light").
-     * Direct light keeps section 1's terms without the highlight, far narrower than a texel. */
+     * would, the lamps' direct light included (the light a bathroom mirror throws back into
+     * the room, which the tracer's paths carry from the lamp by the mirror; spread here as a
+     * Lambertian surface of albedo k_r would); I stands for that field's radiance. The tracer's
+     * normalised Blinn-Phong lobe C_s (n + 8) / (8 pi) (N.H)^n reflects C_s A of a uniform field,
+     * its directional albedo A close to (N.V)^2 for n >= 40 (numerical integration over the
+     * hemisphere: 0.82, 0.50, 0.26, 0.10 at N.V = 0.9, 0.7, 0.5, 0.3 for n = 200;
+     * docs/rendering.md, "Baked indirect light"). Direct light keeps section 1's terms without the
+     * highlight, far narrower than a texel. */
     const rd_material *mat = &m->material;
     float kr = m->reflective ? fminf(fmaxf(mat->reflectivity, 0.0f), 1.0f) : 0.0f;
     float glossy = len > 0.0f ? fminf(ng_dot * ng_dot / (len * len), 1.0f) : 0.0f;
     for (int k = 0; k < 3; k++) {
         float bounce = albedo[k] * mat->ambient[k] + fmaxf(mat->specular[k], 0.0f) * glossy;
         float lit = albedo[k] * mat->diffuse[k] * direct[k] + bounce * prev[k];
-        out[k] = fmaxf(mat->emissive[k], (1.0f - kr) * lit + kr * prev[k]);
+        out[k] = fmaxf(mat->emissive[k], (1.0f - kr) * lit + kr * (prev[k] + direct[k]));
     }
 }
 

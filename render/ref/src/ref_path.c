@@ -15,6 +15,11 @@
  * - the path continues through one part of the surface, picked by its weight: the diffuse and
  *   glossy lobes, or on a surface the GPU gives a probe, the reflection or the transmission of
  *   lit.frag's blend (RENDERING.md sections 5, 6, 9);
+ * - a bounce is what a bake pass is (ref_bake_gather.c): a lobe sample, or a mirror reflection
+ *   after one; a pass through glass never counts (the bake sees through glass), nor does a
+ *   reflection or a pass on the way from the eye to the first lobe (the GPU shows the baked
+ *   surface in a mirror and behind a screen with all its bounces), at most MAX_FREE_EVENTS
+ *   of those a path;
  * - after RR_START vertices Russian roulette ends the path with probability 1 - q and divides
  *   the survivors by q (unbiased; Arvo and Kirk 1990).
  * The BSDF for bounced and area light is a diffuse lobe C_d / pi (the renderer's light I
@@ -36,6 +41,8 @@
 #define PI_F 3.14159265358979f
 /* Russian roulette from the fourth vertex on: short paths keep their full weight. */
 #define RR_START 3
+/* Mirror and glass events that spend no bounce, a path: two facing mirrors end. */
+#define MAX_FREE_EVENTS 8
 
 void ref_emitters_free(ref_emitters *e)
 {
@@ -323,6 +330,9 @@ static void trace_path(const ref_scene *s, const float origin[3], const float di
     memcpy(dir, dir_in, sizeof dir);
     unsigned skip_geom = RTC_INVALID_GEOMETRY_ID, skip_prim = RTC_INVALID_GEOMETRY_ID;
     int after_lobes = 0;   /* the last bounce sampled the lobes (not a reflection lookup) */
+    int lobes_seen = 0;    /* a lobe was sampled on the way here: reflections now count */
+    int used = 0;          /* bounces spent (the header's rule) */
+    int free_events = 0;   /* mirror and glass events that spent none */
     float pdf_prev = 0.0f; /* its density, for the MIS weight of an emitter it hits */
     uint64_t dim = 0;      /* the next random number's index */
     for (int depth = 0;; depth++) {
@@ -382,10 +392,11 @@ static void trace_path(const ref_scene *s, const float origin[3], const float di
         renderer_lights(s, &sf, org, albedo, depth == 0, turn, stats, direct);
         float e0 = ref_uniform01(key, dim++), e1 = ref_uniform01(key, dim++),
               e2 = ref_uniform01(key, dim++);
-        area_lights(s, &sf, &b, v, e0, e1, e2, depth >= bounces, stats, area);
+        int last = used >= bounces || free_events >= MAX_FREE_EVENTS;
+        area_lights(s, &sf, &b, v, e0, e1, e2, last, stats, area);
         for (int k = 0; k < 3; k++)
             sum[k] += beta[k] * w_surface[k] * (direct[k] + area[k]);
-        if (depth >= bounces)
+        if (last)
             break;
 
         /* The next bounce: one part of the surface, picked by its share of the weight. */
@@ -409,6 +420,8 @@ static void trace_path(const ref_scene *s, const float origin[3], const float di
             for (int k = 0; k < 3; k++)
                 beta[k] *= w_surface[k] * f[k] * nl / (pdf * p_part);
             after_lobes = 1;
+            lobes_seen = 1;
+            used++;
             pdf_prev = pdf;
         } else {
             int reflect = pick < a_lobes + a_refl;
@@ -443,6 +456,10 @@ static void trace_path(const ref_scene *s, const float origin[3], const float di
             for (int k = 0; k < 3; k++)
                 beta[k] *= w[k] * chosen[k] / p_part;
             after_lobes = 0;
+            if (reflect && lobes_seen)
+                used++;
+            else
+                free_events++;
         }
         if (depth + 1 >= RR_START) {
             float q = fminf(fmaxf(beta[0], fmaxf(beta[1], beta[2])), 0.95f);
