@@ -60,7 +60,7 @@ wait $pid
 [ $? -eq 143 ] # ended by the kill above, not by a failure
 SH
 chmod +x "$out/drive.sh"
-xvfb-run -a -s "-screen 0 1280x720x24" "$out/drive.sh" "$out" "$tessera" || {
+session_xvfb "$out/drive.sh" "$out" "$tessera" || {
     cat "$out/stderr.txt"
     echo "FAIL: the dialog session did not exit 0"
     exit 1

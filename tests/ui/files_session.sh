@@ -82,7 +82,12 @@ job_frames=$(grep -c ',job,' "$out/frames.csv") || true
 awk -F, '$3 == "job" && $4 > max { max = $4 } END { printf "longest frame during the jobs: %.0f ms over %d frames\n", max, NR }' "$out/frames.csv"
 grep -q 'Print to PDF: .*print.pdf done in' "$out/print-stderr.txt" || fail "no done message"
 grep -q 'Print to PDF: cancelled' "$out/print-stderr.txt" || fail "the cancel was not reported"
-sleep 1 # the opener runs in the background
+# The opener runs in the background: 10 s at most for its note.
+i=0
+until grep -qx "$out/print.pdf" "$out/opened.txt" 2>/dev/null || [ $i -ge 100 ]; do
+    sleep 0.1
+    i=$((i + 1))
+done
 grep -qx "$out/print.pdf" "$out/opened.txt" || fail "the PDF was not opened"
 [ ! -e "$out/cancel.pdf" ] || fail "the cancelled print left cancel.pdf"
 ls -A "$out" | grep -q partial && fail "a partial file was left: $(ls -A "$out" | grep partial)"

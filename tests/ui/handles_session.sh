@@ -18,7 +18,7 @@ if [ -z "$HANDLES_SESSION_DISPLAY" ]; then
     command -v xdotool >/dev/null || { echo "SKIP: xdotool is not installed"; exit 77; }
     . "$(dirname "$0")/session_lib.sh"
     session_start "$@"
-    HANDLES_SESSION_DISPLAY=1 xvfb-run -a -s "-screen 0 1280x720x24" sh "$0" "$@"
+    HANDLES_SESSION_DISPLAY=1 session_xvfb sh "$0" "$@"
     exit $?
 fi
 tessera=$1 out=$2 check=$3 project=$4

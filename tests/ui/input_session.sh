@@ -18,7 +18,7 @@ if [ -z "$INPUT_SESSION_DISPLAY" ]; then
     . "$(dirname "$0")/session_lib.sh"
     session_start "$@"
     # The same script again, inside the X server, with its window and xdotool.
-    INPUT_SESSION_DISPLAY=1 xvfb-run -a -s "-screen 0 1280x720x24" sh "$0" "$@"
+    INPUT_SESSION_DISPLAY=1 session_xvfb sh "$0" "$@"
     exit $?
 fi
 tessera=$1 out=$2 check=$3 project=$4

@@ -100,4 +100,4 @@ fi
 session_start "$@"
 command -v xdotool >/dev/null || { echo "SKIP: no xdotool"; exit 77; }
 cp "$4" "$out/demo.json" # a copy: no autosave next to the shipped demo
-xvfb-run -a -s "-screen 0 1280x720x24" "$0" --inside "$tessera" "$out"
+session_xvfb "$0" --inside "$tessera" "$out"

@@ -91,8 +91,7 @@ test "$rc" -le 1 || { echo "FAIL: tessera check exit $rc"; exit 1; }
 printf '{ "version": 2, "name": ' >"$out/broken.json"
 printf 'wait 1\nopen %s\nquit\n' "$out/broken.json" >"$out/broken.txt"
 set +e
-xvfb-run -a -s "-screen 0 1280x720x24" "$tessera" open --size 640x360 --script "$out/broken.txt" \
-    2>"$out/broken-stderr.txt"
+session_xvfb "$tessera" open --size 640x360 --script "$out/broken.txt" 2>"$out/broken-stderr.txt"
 rc=$?
 set -e
 cat "$out/broken-stderr.txt"

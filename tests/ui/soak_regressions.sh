@@ -17,9 +17,8 @@ project=$4
 # and its save before that action holds the project unchanged.
 expect_refused() {
     set +e
-    xvfb-run -a -f "$(xvfb_auth_file)" -s "-screen 0 1280x720x24" "$tessera" open "$project" \
-        --size 1024x600 \
-        --script "$out/$1.txt" 2>"$out/$1.log"
+    session_xvfb "$tessera" open "$project" --size 1024x600 --script "$out/$1.txt" \
+        2>"$out/$1.log"
     rc=$?
     set -e
     cat "$out/$1.log"

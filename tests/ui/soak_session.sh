@@ -23,7 +23,7 @@ if [ -z "$SOAK_DISPLAY" ]; then
     command -v xdotool >/dev/null || { echo "SKIP: xdotool is not installed"; exit 77; }
     . "$(dirname "$0")/session_lib.sh"
     session_start "$@"
-    SOAK_DISPLAY=1 xvfb-run -a -s "-screen 0 1280x720x24" sh "$0" "$@"
+    SOAK_DISPLAY=1 session_xvfb sh "$0" "$@"
     exit $?
 fi
 # The window runs in $out: the programs by absolute paths.

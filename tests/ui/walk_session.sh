@@ -14,8 +14,7 @@ if [ -z "$WALK_SESSION_DISPLAY" ]; then
     . "$(dirname "$0")/session_lib.sh"
     session_start "$@"
     cp "$4" "$out/project.json" # a copy: no autosave beside the shipped project
-    WALK_SESSION_DISPLAY=1 xvfb-run -a -s "-screen 0 1280x720x24" sh "$0" "$1" "$2" "$3" \
-        "$out/project.json"
+    WALK_SESSION_DISPLAY=1 session_xvfb sh "$0" "$1" "$2" "$3" "$out/project.json"
     exit $?
 fi
 tessera=$1 out=$2 check=$3 project=$4

@@ -7,7 +7,11 @@
 #   usage: bake-drag.sh TESSERA PROJECT OUTDIR   (writes OUTDIR/shot-*.png, drive.csv)
 set -e
 if [ -z "$BAKE_DRAG_INSIDE" ]; then
-    BAKE_DRAG_INSIDE=1 exec xvfb-run -a -s "-screen 0 1280x720x24" sh "$0" "$@"
+    out=$3
+    mkdir -p "$out"
+    . "$(dirname "$0")/../session_lib.sh"
+    BAKE_DRAG_INSIDE=1 session_xvfb sh "$0" "$@"
+    exit $?
 fi
 tessera=$1 project=$2 out=$3
 mkdir -p "$out"
