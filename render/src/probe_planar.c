@@ -263,14 +263,14 @@ static int screen_texels(const float (*poly)[3], int n, const rd_planar_view *v,
 }
 
 /* Texels for `tan` units of tan at the view's density, or for the mirror's samples on screen
- * where that is less, 1.5 a sample, within [16, the cap]. */
+ * where that is less, texels_per_sample a sample, within [16, the cap]. */
 static int planar_texels(float tan, float samples_per_tan, int have_screen, float screen,
-                         int max_size)
+                         float texels_per_sample, int max_size)
 {
     float wanted = tan * samples_per_tan;
     if (have_screen && screen < wanted)
         wanted = screen;
-    wanted *= PLANAR_TEXELS_PER_SAMPLE;
+    wanted *= texels_per_sample > 0.0f ? texels_per_sample : PLANAR_TEXELS_PER_SAMPLE;
     int cap = max_size < PLANAR_MAX_SIZE ? max_size : PLANAR_MAX_SIZE;
     if (!(wanted > 16.0f))
         return 16;
@@ -288,8 +288,10 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
     float tan_w, tan_h, screen[2] = {0.0f, 0.0f};
     planar_camera(p, (const float(*)[3])poly, n, far_m, vp, &tan_w, &tan_h);
     int have_screen = screen_texels((const float(*)[3])poly, n, v, vp, screen);
-    int w = planar_texels(tan_w, v->samples_per_tan, have_screen, screen[0], ctx->max_size);
-    int h = planar_texels(tan_h, v->samples_per_tan, have_screen, screen[1], ctx->max_size);
+    int w = planar_texels(tan_w, v->samples_per_tan, have_screen, screen[0], v->texels_per_sample,
+                          ctx->max_size);
+    int h = planar_texels(tan_h, v->samples_per_tan, have_screen, screen[1], v->texels_per_sample,
+                          ctx->max_size);
     if (w != p->planar_width || h != p->planar_height || !p->planar_texture) {
         rd_float_texture_2d(&p->planar_texture, w, h, 0);
         p->planar_width = w;
@@ -319,7 +321,10 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
      * shower screen in front of it is glass (a second bounce, as a real mirror and the path
      * tracer show them; rd_reflection_defaults.mirror_bounce OFF draws them plain and leaves
      * glass out, as every other capture). Another planar mirror's capture belongs to the view's
-     * eye, not this one: such a mirror is drawn plain. */
+     * eye, not this one: such a mirror is drawn plain. A depth prepass, as the main view's,
+     * shades each texel once: sorted from the mirror's centre, the fixtures seen in it are not
+     * always drawn before the walls behind them, and chrome drawn with its probe is the
+     * dearest fragment the capture has. */
     float sample_tan = 1.0f / fmaxf(v->samples_per_tan, 1.0f);
     r = rd_draw_objects(ctx, s,
                         &(rd_pass){.view_proj = &vp[0][0],
@@ -328,7 +333,8 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
                                    .reflections = s->reflection.mirror_bounce != RD_SWITCH_OFF,
                                    .planar_off = 1,
                                    .min_solid_radius = 0.25f * sample_tan,
-                                   .full_meshes = 1});
+                                   .full_meshes = 1,
+                                   .depth_prepass = 1});
     unsigned e = rd_gl_drain_errors();
     if (r == RD_OK && e != GL_NO_ERROR)
         r = rd_fail(e == GL_OUT_OF_MEMORY ? RD_ERR_OUT_OF_MEMORY : RD_ERR_GL,

@@ -16,12 +16,12 @@ int rd_probe_plan_planar(rd_context *ctx, const rd_scene *s, rd_probe *p, const 
  * through the mirror's quad, cut by the mirror's plane; each n.x + d >= 0 inside. */
 void rd_planar_pyramid(const rd_probe *p, float planes[5][4]);
 /* The main view a planar capture is made for: the samples its main pass shades (an adaptive
- * view's one a pixel: its few refined pixels are edges, which the capture's 1.5 texels a
- * sample keep). */
+ * view's one a pixel, read at a texel a pixel: renderer.c). */
 typedef struct rd_planar_view {
-    const float *view_proj; /* column-major 4x4 */
-    float samples[2];       /* the samples across and down view_proj's image */
-    float samples_per_tan;  /* the whole image's pixels per unit of tan x supersampling */
+    const float *view_proj;  /* column-major 4x4 */
+    float samples[2];        /* the samples across and down view_proj's image */
+    float samples_per_tan;   /* the whole image's pixels per unit of tan x supersampling */
+    float texels_per_sample; /* the capture's texels a sample across; 0: 1.5 */
 } rd_planar_view;
 /* Renders p's planar capture (p->planar_texture, p->planar_view_proj) for this frame, with as
  * many texels as the mirror covers samples of the view (at most 4096 a side). */

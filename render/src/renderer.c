@@ -140,9 +140,14 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     rd_result r = rd_ambient_update(ctx, scene, &stats);
     rd_phase_mark("SH9 ambient");
     int shaded = adaptive(v, samples) ? 1 : samples; /* the main pass's samples a pixel side */
+    /* An adaptive view's main pass reads a planar capture once a pixel, at its centre, and
+     * keeps that for all but the refined edges: a texel a pixel, whose bilinear tap spans about
+     * the pixel, as the s x s samples' box filter would. Every other view keeps the capture's
+     * 1.5 texels a sample (probe_planar.c). Measured: docs/benchmarks.md, "Print renders". */
     rd_planar_view planar = {vp,
                              {(float)(v->width * shaded), (float)(v->height * shaded)},
-                             pixels_per_tan * (float)shaded};
+                             pixels_per_tan * (float)shaded,
+                             adaptive(v, samples) ? 1.0f : 0.0f};
     if (r == RD_OK)
         r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &planar, &stats);
     if (r == RD_OK)
