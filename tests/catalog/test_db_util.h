@@ -182,6 +182,19 @@ static inline void print_problems(const cat_import_report *r)
                 r->problems[i].message);
 }
 
+/* A refused import: the error names the first bad cell (`first`, "FILE:LINE: column NAME")
+ * and says nothing was imported, and the catalog holds no product. Frees the report and
+ * closes db. */
+static inline void check_refused_import(cat_db *db, cat_import_report *rep, const char *err,
+                                        const char *first)
+{
+    CHECK_MSG(strstr(err, first) && strstr(err, "nothing was imported"), "%s", err);
+    cat_import_report_free(rep);
+    cat_db_stats s;
+    CHECK(cat_db_get_stats(db, &s, NULL, 0) == CAT_DB_OK && s.products == 0);
+    cat_db_close(db);
+}
+
 static inline double now_ms(void)
 {
     struct timespec t;
