@@ -175,6 +175,7 @@ static int frame(planner *p)
     planner_layout_frame(p, fw, fh); /* window_panes.c: the panes for this size */
     planner_handle_input(p, dt);
     planner_bake_frame(p); /* a finished bake swapped in before this frame draws */
+    planner_warmup_frame(p);
     planner_animate(p, p->fixed_dt > 0 ? p->fixed_dt : dt);
     planner_camera_sync(p);
 
@@ -338,6 +339,7 @@ int ui_run(const ui_options *o)
     if (!rc)
         rc = p.exit_code;
 done:
+    planner_warmup_stop(&p);
     planner_bake_free(&p); /* stops a running bake first */
     planner_files_free(&p);
     planner_doc_close(&p);

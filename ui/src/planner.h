@@ -33,6 +33,17 @@ enum { UI_VIEW_3D = 0, UI_VIEW_PLAN = 1, UI_VIEW_ELEVATION = 2 /* tiles.h */ };
 struct app_history;
 #define UI_FRAME_HISTORY 120
 
+/* The background renders that fill Mesa's shader cache for the still view's climb
+ * (shader_warmup.c). */
+typedef struct ui_shader_warmup {
+    int pid;          /* the running render, 0 for none */
+    int stage;        /* the next or running preset: final, then print */
+    int finished;     /* all done, failed or switched off */
+    int paused;       /* the running render is stopped while the view moves */
+    double started;   /* the running stage's start, glfwGetTime */
+    char folder[512]; /* the document's copy, removed at the end */
+} ui_shader_warmup;
+
 typedef struct planner {
     struct GLFWwindow *window;
     rd_context *ctx;
@@ -180,6 +191,8 @@ typedef struct planner {
 
     /* File dialogs, recent files and long jobs (planner_actions.c), made on first use. */
     struct planner_files *files;
+
+    ui_shader_warmup warmup;
 } planner;
 
 enum { UI_FILE_NONE = 0, UI_FILE_NEW, UI_FILE_OPEN };
@@ -365,6 +378,14 @@ void planner_bake_frame(planner *p);
 int planner_bake_busy(const planner *p);
 /* 1 when no bake waits or runs and no crossfade is under way (scripts wait for it). */
 int planner_bake_settled(const planner *p);
+
+/* Shader warm-up (shader_warmup.c): a step each frame; done when every stage ran, failed or
+ * was switched off (TESSERA_SHADER_WARMUP=off); stop kills a running stage. */
+void planner_warmup_frame(planner *p);
+int planner_warmup_done(const planner *p);
+/* 1 when the warm-up's render of preset (index into ui_quality_names) is done or not needed. */
+int planner_warmup_ready(const planner *p, int preset);
+void planner_warmup_stop(planner *p);
 /* The status bar's "Light: baking 40 %" (1), or 0 when there is nothing to say. */
 int planner_bake_status(const planner *p, char *out, size_t size);
 /* The still view's w x h picture as shown: crossfaded from the picture with the old light for

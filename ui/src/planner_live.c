@@ -163,13 +163,22 @@ static float strip_budget(planner *p)
     return b > STRIP_BUDGET_MS ? STRIP_BUDGET_MS : b < STRIP_MIN_MS ? STRIP_MIN_MS : b;
 }
 
+/* The steps at final and print wait for the shader warm-up (shader_warmup.c): their first
+ * strips would compile a dozen shader variants within one frame. Meanwhile the interactive
+ * passes stay on screen and the window waits for input as when done. */
+static int waits_for_shaders(const planner *p)
+{
+    const ui_live *l = &p->live.ladder;
+    return !ui_live_done(l) && !planner_warmup_ready(p, l->steps[l->step].preset);
+}
+
 static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
 {
     ui_live *l = &p->live.ladder;
     *rw = fw;
     *rh = fh;
     p->render_scale = 1.0f;
-    if (!ui_live_done(l)) {
+    if (!ui_live_done(l) && !waits_for_shaders(p)) {
         int rows = ui_live_strip_rows(l, strip_budget(p), fh);
         size_t size = (size_t)fw * (size_t)rows * 4;
         if (size > p->live.strip_size) {
@@ -249,10 +258,15 @@ void planner_live_overlay(planner *p, ui_rect pane)
         return;
     const ui_live *l = &p->live.ladder;
     const char *preset = ui_quality_names[l->steps[l->step].preset];
-    if (ui_gui_begin_overlay("##refining", pane.x + 12.0f, pane.y + pane.h - 40.0f, 0.5f))
-        ui_gui_text("refining to %s: %.0f %% (%s pass %d of %d)%s", ui_quality_names[p->quality],
-                    100.0f * ui_live_progress(l), preset, l->pass + 1, l->steps[l->step].passes,
-                    l->settling ? ", probes" : "");
+    if (ui_gui_begin_overlay("##refining", pane.x + 12.0f, pane.y + pane.h - 40.0f, 0.5f)) {
+        if (waits_for_shaders(p))
+            ui_gui_text("refining to %s: %.0f %% (preparing the %s shaders)",
+                        ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset);
+        else
+            ui_gui_text("refining to %s: %.0f %% (%s pass %d of %d)%s",
+                        ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset,
+                        l->pass + 1, l->steps[l->step].passes, l->settling ? ", probes" : "");
+    }
     ui_gui_end();
 }
 
@@ -260,8 +274,8 @@ int planner_live_idle(const planner *p)
 {
     /* A bake under way is no reason to draw: the status bar's share is redrawn when the wait
      * times out, and the worker wakes the window when the light is there. A crossfade is. */
-    return p->layout.pane_3d.w > 0 && p->live.still && ui_live_done(&p->live.ladder) &&
-           !planner_bake_fading(p);
+    return p->layout.pane_3d.w > 0 && p->live.still &&
+           (ui_live_done(&p->live.ladder) || waits_for_shaders(p)) && !planner_bake_fading(p);
 }
 
 void planner_live_restart(planner *p)

@@ -280,6 +280,8 @@ static int apply(planner *p, const ui_action *a)
         return planner_input_action(p, a) ? fail(a, p->status) : 0;
     case UI_ACT_WAIT_BAKE:
         return planner_bake_settled(p) ? 0 : 2;
+    case UI_ACT_WAIT_WARMUP:
+        return planner_warmup_done(p) ? 0 : 2;
     case UI_ACT_BAKE_HOLD:
         if (strcmp(a->text, "on") && strcmp(a->text, "off"))
             return fail(a, "bake-hold takes on or off");

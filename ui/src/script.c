@@ -86,6 +86,7 @@ static const struct {
     {"open-recent", UI_ACT_FILES, 0, 3},
     {"dialog", UI_ACT_FILES, 0, 3},
     {"wait-bake", UI_ACT_WAIT_BAKE, 0, 0},
+    {"wait-warmup", UI_ACT_WAIT_WARMUP, 0, 0},
     {"bake-hold", UI_ACT_BAKE_HOLD, 0, 1},
     {"quit", UI_ACT_QUIT, 0, 0},
 };

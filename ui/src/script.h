@@ -99,6 +99,8 @@
  *   wait-bake              hold the script until the baked light is up to date: no bake
  *                          settling or running and the crossfade to the new light done
  *                          (at once when the bake is off)
+ *   wait-warmup            hold the script until the shader warm-up's renders are done
+ *                          (shader_warmup.c; at once when TESSERA_SHADER_WARMUP=off)
  *   bake-hold on|off       keep edits' bakes from starting (on) until off: a test sees the
  *                          light carried over from before the edit, refined, then the new
  *   quit                   close the window (exit 0)
@@ -162,9 +164,10 @@ typedef enum ui_action_kind {
     UI_ACT_EXPECT_SEARCH,
     UI_ACT_PANES, /* the window's layout (panel_layout.h) */
     UI_ACT_SPLIT,
-    UI_ACT_PICK,      /* the selection, by name */
-    UI_ACT_FILES,     /* planner_actions.h: text is "VERB ARGUMENT" */
-    UI_ACT_WAIT_BAKE, /* planner_bake.c */
+    UI_ACT_PICK,        /* the selection, by name */
+    UI_ACT_FILES,       /* planner_actions.h: text is "VERB ARGUMENT" */
+    UI_ACT_WAIT_BAKE,   /* planner_bake.c */
+    UI_ACT_WAIT_WARMUP, /* shader_warmup.c */
     UI_ACT_BAKE_HOLD,
     UI_ACT_QUIT
 } ui_action_kind;

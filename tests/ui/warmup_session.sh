@@ -1,0 +1,41 @@
+#!/bin/sh
+# The shader warm-up under Xvfb (docs/ui.md, "Shader warm-up"), from a cold Mesa shader cache:
+# the window renders the document at final and at print in a background process once its scene
+# is up, and the still view's climb to final waits for it. Checked: both stages report
+# compiled; the renders filled the session's Mesa cache (the folder the window reads); their
+# copy of the document is gone afterwards; after an orbit the still view reaches final (the
+# climb goes on once the warm-up is done), with no refining frame compiling for seconds.
+#   usage: warmup_session.sh TESSERA OUTDIR SCREENSHOT_CHECK PROJECT
+set -e
+. "$(dirname "$0")/session_lib.sh"
+session_start "$@"
+export XDG_CACHE_HOME="$out/cache" TMPDIR="$out/tmp" TESSERA_SHADER_WARMUP=on
+mkdir -p "$TMPDIR"
+cat >"$out/warmup.txt" <<SCRIPT
+quality final
+camera door
+wait-warmup
+wait 10
+orbit 30 0 frames 5
+wait 600
+screenshot $out/final.png
+quit
+SCRIPT
+session_window "$4" 640x400 "$out/warmup.txt" "$out/window.log" --frame-log "$out/frames.csv"
+status=0
+fail() {
+    echo "FAIL: $*"
+    status=1
+}
+for stage in final print; do
+    grep -q "shader warm-up: $stage compiled" "$out/window.log" ||
+        fail "no '$stage compiled' line from the warm-up"
+done
+[ -n "$(ls -A "$XDG_CACHE_HOME/mesa_shader_cache" 2>/dev/null)" ] ||
+    fail "the Mesa shader cache in $XDG_CACHE_HOME is empty"
+[ -z "$(ls -A "$TMPDIR")" ] || fail "the warm-up left files in TMPDIR: $(ls "$TMPDIR")"
+# The last frame is the still view at its preset: the climb went on after the warm-up.
+last=$(tail -n 1 "$out/frames.csv" | cut -d, -f9)
+[ "$last" = still ] || fail "the still view did not reach final (last frame: $last)"
+"$check" "$out/final.png" || fail "the final view is blank"
+exit $status
