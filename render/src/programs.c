@@ -180,6 +180,8 @@ static void locate_lit(rd_program *p)
     p->u_self_specular = glGetUniformLocation(id, "u_self_specular");
     p->u_self_emissive = glGetUniformLocation(id, "u_self_emissive");
     p->u_self_shininess = glGetUniformLocation(id, "u_self_shininess");
+    p->u_self_kr = glGetUniformLocation(id, "u_self_kr");
+    p->u_self_blend = glGetUniformLocation(id, "u_self_blend");
     p->u_self_slot = glGetUniformLocation(id, "u_self_slot");
     p->u_self_uv_scale = glGetUniformLocation(id, "u_self_uv_scale");
     p->u_self_epsilon = glGetUniformLocation(id, "u_self_epsilon");

@@ -70,8 +70,8 @@ typedef struct rd_program {
         u_emitter_specular, u_emitter_emissive, u_emitter_shininess,
         u_emitter_sphere; /* emitters.c */
     int u_self_nodes, u_self_tris, u_self_textures, u_self_base, u_self_ambient, u_self_diffuse,
-        u_self_specular, u_self_emissive, u_self_shininess, u_self_slot, u_self_uv_scale,
-        u_self_epsilon, u_self_rays, u_self_grid; /* self_trace.c */
+        u_self_specular, u_self_emissive, u_self_shininess, u_self_kr, u_self_blend, u_self_slot,
+        u_self_uv_scale, u_self_epsilon, u_self_rays, u_self_grid; /* self_trace.c */
 } rd_program;
 
 /* Lit program variants by material feature: a bit each. */

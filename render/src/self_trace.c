@@ -15,7 +15,9 @@
  * at most four triangles a leaf) in two buffer textures, and left out of the probe's capture.
  * The lookup (lit.frag, SELF_TRACE) traces the reflected ray, and through glass the refracted
  * one, against them; a hit is shaded as the tracer's secondary ray shades it (eqs. 1-7 seen
- * from the reflecting point, unshadowed, RENDERING.md section 6's one bounce), a miss reads the
+ * from the reflecting point, unshadowed), and a reflective part (chrome seen in chrome or
+ * through a pane) adds a second bounce, its own reflection read from the probe and blended by
+ * its k_r (section 6), where drawn plain it would be its dark diffuse colour; a miss reads the
  * probe, which now holds only what lies beyond. A blurred lookup traces
  * rd_reflection_defaults.self_reflections directions of its lobe a sample, stratified over the
  * pixel's samples. The tracer's rules hold: the ray leaves its own triangle out
@@ -511,10 +513,11 @@ void rd_set_self_trace_uniforms(rd_context *ctx, const rd_program *prog, const r
 {
     const rd_self_bvh *b = &p->self;
     float amb[RD_MAX_SELF_PARTS][3], dif[RD_MAX_SELF_PARTS][3], spec[RD_MAX_SELF_PARTS][3],
-        emis[RD_MAX_SELF_PARTS][3], shin[RD_MAX_SELF_PARTS], uv_scale[RD_MAX_SELF_PARTS][2];
+        emis[RD_MAX_SELF_PARTS][3], shin[RD_MAX_SELF_PARTS], kr[RD_MAX_SELF_PARTS],
+        uv_scale[RD_MAX_SELF_PARTS][2];
     /* An object outside the hierarchy (glass, which the trace leaves out) owns none of its
      * triangles: -1 keeps its gl_PrimitiveID from naming a member's triangle of that number. */
-    int slot[RD_MAX_SELF_PARTS], textures = 0, base = -1;
+    int slot[RD_MAX_SELF_PARTS], blend[RD_MAX_SELF_PARTS], textures = 0, base = -1;
     for (int i = 0; i < b->part_count; i++) {
         const rd_object_desc *o = &s->objects[b->part_object[i]];
         const rd_material *m = &o->material;
@@ -523,6 +526,8 @@ void rd_set_self_trace_uniforms(rd_context *ctx, const rd_program *prog, const r
         memcpy(spec[i], m->specular, sizeof spec[i]);
         memcpy(emis[i], m->emissive, sizeof emis[i]);
         shin[i] = m->shininess;
+        kr[i] = fminf(fmaxf(m->reflectivity, 0.0f), 1.0f);
+        blend[i] = (int)m->blend;
         uv_scale[i][0] = m->uv_scale[0] > 0.0f ? m->uv_scale[0] : 1.0f;
         uv_scale[i][1] = m->uv_scale[1] > 0.0f ? m->uv_scale[1] : 1.0f;
         slot[i] = -1;
@@ -551,6 +556,8 @@ void rd_set_self_trace_uniforms(rd_context *ctx, const rd_program *prog, const r
     glUniform3fv(prog->u_self_specular, n, &spec[0][0]);
     glUniform3fv(prog->u_self_emissive, n, &emis[0][0]);
     glUniform1fv(prog->u_self_shininess, n, shin);
+    glUniform1fv(prog->u_self_kr, n, kr);
+    glUniform1iv(prog->u_self_blend, n, blend);
     glUniform1iv(prog->u_self_slot, n, slot);
     glUniform2fv(prog->u_self_uv_scale, n, &uv_scale[0][0]);
     /* The tracer's ray offset, 1e-5 of the scene's diagonal (ref_scene.c): here the proxy's,

@@ -10,6 +10,10 @@
  *   none when it is turned off, none under the interactive preset.
  * - a moved neighbour is traced where it now is: the counter moved 10 cm down after a first
  *   frame gives the image of a scene built with it there (within 50 dB).
+ * - a reflective part shows what it reflects: tests/data/scenes/chrome-behind-glass.json (a
+ *   chrome ball behind a clear pane, which traces it as a neighbour), print: the ball seen
+ *   through the pane is as bright as the same ball without the pane, times the pane's
+ *   transmission, within a third (drawn plain, chrome is its dark diffuse colour: a quarter).
  *
  * GL through TESSERA_GL (EGL unless it says osmesa); some seconds on two cores. */
 #include "../common/check.h"
@@ -132,6 +136,56 @@ static void moved_neighbour(rd_context *ctx, app_project *p, const rd_view *view
     CHECK_MSG(same >= 50.0, "moved counter: %.2f dB from the scene built with it there", same);
 }
 
+/* The mean linear luminance of the w x h pixels at (x0, y0) of a width-wide RGBA image. */
+static double window_mean(const float *img, int width, int x0, int y0, int w, int h)
+{
+    double sum = 0.0;
+    for (int y = y0; y < y0 + h; y++)
+        for (int x = x0; x < x0 + w; x++) {
+            const float *px = img + 4 * ((size_t)y * width + x);
+            sum += (px[0] + px[1] + px[2]) / 3.0;
+        }
+    return sum / (w * h);
+}
+
+static void chrome_behind_glass(rd_context *ctx, float *through, float *bare)
+{
+    char err[2048];
+    app_project p;
+    if (app_project_read(TESSERA_SOURCE_DIR "/tests/data/scenes/chrome-behind-glass.json", &p, err,
+                         sizeof err) != APP_OK) {
+        CHECK_MSG(0, "%s", err);
+        return;
+    }
+    rd_view view;
+    CHECK(app_view_from_camera(&p, NULL, W, H, &view, err, sizeof err) == APP_OK);
+    view.supersample = 4;
+    int pane = find_object(&p, "screen");
+    CHECK_MSG(pane == p.object_count - 1, "the pane is not the scene's last object");
+    rd_frame_stats st;
+    int ok =
+        pane == p.object_count - 1 && gpu_render(ctx, &p, &view, "print", NULL, 0, through, &st);
+    if (ok) {
+        p.object_count--; /* the same room without the pane */
+        ok = gpu_render(ctx, &p, &view, "print", NULL, 0, bare, NULL);
+        p.object_count++;
+    }
+    if (ok) {
+        /* The ball's lower half (the coloured bands behind the camera), clear of the lamp's
+         * highlight: the ball's centre projects 3 pixels below the image's centre, 45 pixels
+         * across. */
+        double t = window_mean(through, W, 74, 47, 12, 8), b = window_mean(bare, W, 74, 47, 12, 8);
+        float transmission = p.materials[p.objects[pane].material].transparency;
+        printf("chrome ball behind a pane, print: %.4f through the pane, %.4f without it "
+               "(ratio %.2f, the pane's transparency %.2f); %d probes traced\n",
+               t, b, b > 0.0 ? t / b : 0.0, transmission, st.self_traced_probes);
+        CHECK_MSG(st.self_traced_probes >= 1, "the pane traced nothing");
+        CHECK_MSG(t >= 0.67 * transmission * b && t <= 1.33 * b,
+                  "the ball through the pane %.4f against %.4f without it", t, b);
+    }
+    app_project_free(&p);
+}
+
 int main(void)
 {
     rd_context *ctx = NULL;
@@ -156,6 +210,7 @@ int main(void)
     if (a && b && mask) {
         against_tracer(ctx, &p, &view, a, b, mask);
         moved_neighbour(ctx, &p, &view, a, b, mask);
+        chrome_behind_glass(ctx, a, b);
     }
     free(a);
     free(b);
