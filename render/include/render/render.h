@@ -370,6 +370,12 @@ void rd_shadow_disk_tap(int i, int n, float rotation, float out[2]);
 /* Soft taps per sample at s x s supersampling: the pixel's taps shared by its s^2 samples, at
  * least 2 (1 when hard). */
 int rd_shadow_taps_per_sample(const rd_shadow_settings *s, int supersample);
+/* Makes at most max_faces (at least 1) of the shadow-map faces the scene's lights and settings
+ * still lack (a point light's cube counts six faces, a spot or directional light one), so that
+ * a window can spread a change of settings over frames; *left gets the faces still to make (0:
+ * the maps are ready). The next rd_render completes what is left; the maps come out the same
+ * however the work was split. Waits for the GPU, so the work falls within the call. */
+rd_result rd_scene_prepare_shadows(rd_context *ctx, rd_scene *scene, int max_faces, int *left);
 
 /* Probes the scene holds now (one per reflective object or group); for tests and stats. */
 int rd_scene_probe_count(const rd_scene *scene);
