@@ -144,6 +144,7 @@ static int begin_still(planner *p, int fw, int fh)
         ui_accum_restart(&p->live.accum);
     apply_preset(p, p->live.ladder.steps[0].preset);
     p->live.still_ev_ok = 0;
+    p->live.shadows_pending = 1;
     return 0;
 }
 
@@ -172,14 +173,72 @@ static int waits_for_shaders(const planner *p)
     return !ui_live_done(l) && !planner_warmup_ready(p, l->steps[l->step].preset);
 }
 
+/* A step's new shadow settings remake every light's maps (final's soft shadows: five lights,
+ * four of them cubes of six faces; print's at 2048 texels), a second or two in one go on
+ * llvmpipe. So before a step's first strip its maps are made a face at a time, as many faces
+ * a frame as fit the strip's budget (at least one), while the last step's picture stays on
+ * screen; the maps come out the same as made at once (rd_scene_prepare_shadows). Returns the
+ * milliseconds spent, -1 on failure. */
+static float prepare_shadows(planner *p, float budget_ms)
+{
+    if (!p->live.shadows_pending)
+        return 0.0f;
+    double t0 = glfwGetTime(), face_ms = 0.0;
+    int left = 0;
+    do {
+        double t = glfwGetTime();
+        if (rd_scene_prepare_shadows(p->ctx, p->scene.scene, 1, &left) != RD_OK)
+            return -1.0f;
+        face_ms = (glfwGetTime() - t) * 1e3;
+    } while (left > 0 && (glfwGetTime() - t0) * 1e3 + face_ms <= budget_ms);
+    p->live.shadow_faces_left = left;
+    p->live.shadows_pending = left > 0;
+    return (float)((glfwGetTime() - t0) * 1e3);
+}
+
+/* What a step needs before its first strip, each in frames of its own: its shadow maps (a
+ * few faces a frame), then the exposure of the whole view at its settings (a small render of
+ * its own, which captures the SH9 ambient and a probe). Returns 1 when this frame went to
+ * them, 0 when the strip may follow, -1 on failure; *spent_ms gets their time. */
+static int prepare_step(planner *p, int fw, int fh, float budget_ms, float *spent_ms)
+{
+    *spent_ms = prepare_shadows(p, budget_ms);
+    if (*spent_ms < 0.0f)
+        return -1;
+    /* A strip waits for the maps, and for a frame of its own when they took most of this one. */
+    if (p->live.shadows_pending || budget_ms - *spent_ms < STRIP_MIN_MS)
+        return 1;
+    if (p->live.still_ev_ok)
+        return 0;
+    /* One exposure for the whole picture: a strip that metered itself would expose the bright
+     * ceiling's rows darker than the floor's, and the still would show bands. */
+    rd_view v;
+    planner_view(p, fw, fh, &v);
+    double t0 = glfwGetTime();
+    if (rd_measure_view_exposure(p->ctx, p->scene.scene, &v, &p->live.still_ev) != RD_OK)
+        return -1;
+    p->live.still_ev_ok = 1;
+    *spent_ms += (float)((glfwGetTime() - t0) * 1e3);
+    return 1;
+}
+
 static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
 {
     ui_live *l = &p->live.ladder;
     *rw = fw;
     *rh = fh;
     p->render_scale = 1.0f;
+    float budget = 0.0f, spent_ms = 0.0f;
+    int busy_frame = 0;
     if (!ui_live_done(l) && !waits_for_shaders(p)) {
-        int rows = ui_live_strip_rows(l, strip_budget(p), fh);
+        budget = strip_budget(p);
+        busy_frame = prepare_step(p, fw, fh, budget, &spent_ms);
+        if (busy_frame < 0)
+            return render_failed();
+        *render_ms = spent_ms;
+    }
+    if (!ui_live_done(l) && !waits_for_shaders(p) && !busy_frame) {
+        int rows = ui_live_strip_rows(l, budget - spent_ms, fh);
         size_t size = (size_t)fw * (size_t)rows * 4;
         if (size > p->live.strip_size) {
             free(p->live.strip);
@@ -199,13 +258,6 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         v.full_width = fw;
         v.full_height = fh;
         ui_jitter(l->pass, v.jitter);
-        /* One exposure for the whole picture: a strip that metered itself would expose the
-         * bright ceiling's rows darker than the floor's, and the still would show bands. */
-        if (!p->live.still_ev_ok) {
-            if (rd_measure_view_exposure(p->ctx, p->scene.scene, &v, &p->live.still_ev) != RD_OK)
-                return render_failed();
-            p->live.still_ev_ok = 1;
-        }
         v.exposure_ev = p->live.still_ev;
         v.auto_exposure = 0;
         double t0 = glfwGetTime();
@@ -217,11 +269,13 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         int busy = st.probes_held > 0;
         if (!busy)
             ui_accum_add(&p->live.accum, 0, l->row, fw, rows, p->live.strip);
-        *render_ms = (float)((glfwGetTime() - t0) * 1e3);
-        if (ui_live_strip_done(l, rows, *render_ms, fh, busy)) {
+        float strip_ms = (float)((glfwGetTime() - t0) * 1e3);
+        *render_ms = spent_ms + strip_ms;
+        if (ui_live_strip_done(l, rows, strip_ms, fh, busy)) {
             apply_preset(p, l->steps[l->step].preset);
             ui_accum_restart(&p->live.accum);
             p->live.still_ev_ok = 0; /* the new preset's light: measured again */
+            p->live.shadows_pending = 1;
         }
     }
     const unsigned char *shown = planner_bake_fade(p, p->live.accum.image, fw, fh);
@@ -262,6 +316,10 @@ void planner_live_overlay(planner *p, ui_rect pane)
         if (waits_for_shaders(p))
             ui_gui_text("refining to %s: %.0f %% (preparing the %s shaders)",
                         ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset);
+        else if (p->live.shadows_pending)
+            ui_gui_text("refining to %s: %.0f %% (%s shadow maps, %d faces to go)",
+                        ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset,
+                        p->live.shadow_faces_left);
         else
             ui_gui_text("refining to %s: %.0f %% (%s pass %d of %d)%s",
                         ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset,
@@ -289,6 +347,7 @@ void planner_live_restart(planner *p)
     ui_live_begin(&p->live.ladder, p->quality, p->live.last_ms / rows * px_scale);
     ui_accum_restart(&p->live.accum); /* shows the old picture until strips replace it */
     apply_preset(p, p->live.ladder.steps[0].preset);
+    p->live.shadows_pending = 1;
 }
 
 void planner_live_free(planner *p)
