@@ -800,7 +800,30 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         int faces = faces_to_capture(s, p, u, every);
         if (!faces)
             continue;
-        if (budget > 0 && (faces != 0x3f || s->reflection.split_captures)) {
+        int complete = faces == 0x3f; /* this frame ends with all six faces fresh */
+        if (budget > 0 && faces == 0x3f && s->reflection.split_captures >= 2) {
+            /* A first capture split by faces: the faces still missing, as many as the budget
+             * leaves, in face order; the probe is held until its last face, then blurred. The
+             * faces are what one capture would make (the scene has not changed since the
+             * first of them: their stamps say so). */
+            int fresh = 0;
+            for (int f = 0; f < 6; f++)
+                if ((p->faces_valid & (1 << f)) && p->face_stamp[f] == s->change_counter)
+                    fresh |= 1 << f;
+            p->faces_valid = fresh; /* a face of an older scene is made again */
+            int missing = 0x3f & ~fresh, take = 0;
+            for (int f = 0; f < 6 && spent < budget; f++)
+                if (missing & (1 << f)) {
+                    take |= 1 << f;
+                    spent++;
+                }
+            if (take != missing)
+                stats->probes_held++;
+            if (!take)
+                continue; /* its turn comes in a later frame */
+            faces = take;
+            complete = take == missing;
+        } else if (budget > 0 && (faces != 0x3f || s->reflection.split_captures)) {
             int n = __builtin_popcount((unsigned)faces);
             if (spent + n > budget && (faces != 0x3f || spent > 0)) {
                 stats->probes_held++;
@@ -809,7 +832,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             spent += n;
         }
         float far_m = capture_far(p->centre, bmin, bmax);
-        if (faces == 0x3f) {
+        if (complete) {
             p->captured_stamp = s->change_counter;
             /* Time-sliced probes end their first round after 1 to 6 faces, by index, so that
              * their blurs (one per round) fall on different frames. */
@@ -827,7 +850,11 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             }
         rd_phase_mark("probe captures");
         int round_done = 0;
-        if (u == RD_PROBE_TIME_SLICED && faces != 0x3f) {
+        if (complete) {
+            /* a first capture's last face, split or not: the blur below */
+        } else if (faces != 0x3f && p->faces_valid != 0x3f) {
+            continue; /* a split first capture under way: no blur before its last face */
+        } else if (u == RD_PROBE_TIME_SLICED && faces != 0x3f) {
             p->next_face = (p->next_face + 1) % 6;
             round_done = ++p->faces_since_blur >= 6;
             if (round_done)
@@ -842,7 +869,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         }
         /* Blur when a full set of faces is fresh: every full capture, or at the end of each
          * time-sliced round. */
-        if (faces == 0x3f || round_done) {
+        if (complete || round_done) {
             p->captured_frame = s->frame;
             r = blur_probe(ctx, s, p, p->capture, p->size, stats);
             if (r != RD_OK)
