@@ -23,6 +23,8 @@
 /* Probe faces a still frame may capture: a probe's six faces at 256 texels cost about a
  * strip's budget on llvmpipe (docs/benchmarks.md, "Reflection probes"). */
 #define STILL_FACES_PER_FRAME 6
+/* A face's cost before one was measured: a 256-texel face on llvmpipe, alone. */
+#define FIRST_FACE_MS 3.0f
 #define SCALE_FLOOR 0.35f
 
 /* The scene takes preset `index`'s settings. Probes are captured on change, never every
@@ -47,6 +49,7 @@ static void apply_preset(planner *p, int index)
     d.split_captures = 1;
     rd_scene_set_reflection_defaults(p->scene.scene, &d);
     p->live.applied = index;
+    p->live.preset_faces = d.max_faces_per_frame;
 }
 
 /* Everything that changes the picture: a difference from the last frame means moving. */
@@ -90,6 +93,7 @@ static rd_result present_view(planner *p)
 static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
 {
     apply_preset(p, ui_live_moving_preset(p->quality));
+    rd_scene_set_capture_budget(p->scene.scene, p->live.preset_faces, 1); /* a still's undone */
     /* Back from a still: start at the scale the last moving frames held. */
     if (p->live.still && p->live.last_w > 0)
         p->render_scale = (float)p->live.last_w / (float)fw;
@@ -196,6 +200,29 @@ static float prepare_shadows(planner *p, float budget_ms)
     return (float)((glfwGetTime() - t0) * 1e3);
 }
 
+/* The probe faces this strip may capture: as many as the budget left after its rows holds at
+ * the learnt cost of a face, at least one, at most STILL_FACES_PER_FRAME. A probe's first
+ * capture is split by faces (split_captures 2), so no frame captures a whole probe of six
+ * faces and prefilters it when a face costs more than a sixth of the budget. */
+static void set_face_budget(planner *p, float budget_ms)
+{
+    float face_ms = p->live.probe_face_ms > 0.0f ? p->live.probe_face_ms : FIRST_FACE_MS;
+    int faces = budget_ms > 0.0f ? (int)(budget_ms / face_ms) : 1;
+    faces = faces < 1 ? 1 : faces > STILL_FACES_PER_FRAME ? STILL_FACES_PER_FRAME : faces;
+    rd_scene_set_capture_budget(p->scene.scene, faces, 2);
+}
+
+/* Learns a face's cost from a strip that captured `faces`: the strip's time beyond its rows'
+ * (the blur of a probe's last face included). Quick to learn a dearer cost, as the rows are. */
+static void learn_face_cost(planner *p, float extra_ms, int faces)
+{
+    if (faces <= 0)
+        return;
+    float m = extra_ms > 0.0f ? extra_ms / (float)faces : 0.0f;
+    float *f = &p->live.probe_face_ms;
+    *f = m > *f ? m : *f + 0.3f * (m - *f);
+}
+
 /* What a step needs before its first strip, each in frames of its own: its shadow maps (a
  * few faces a frame), then the exposure of the whole view at its settings (a small render of
  * its own, which captures the SH9 ambient and a probe). Returns 1 when this frame went to
@@ -260,6 +287,7 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         ui_jitter(l->pass, v.jitter);
         v.exposure_ev = p->live.still_ev;
         v.auto_exposure = 0;
+        set_face_budget(p, budget - spent_ms - l->ms_per_row * (float)rows);
         double t0 = glfwGetTime();
         if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK ||
             rd_read_rgba8(p->ctx, p->live.strip, size) != RD_OK)
@@ -271,6 +299,7 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
             ui_accum_add(&p->live.accum, 0, l->row, fw, rows, p->live.strip);
         float strip_ms = (float)((glfwGetTime() - t0) * 1e3);
         *render_ms = spent_ms + strip_ms;
+        learn_face_cost(p, strip_ms - l->ms_per_row * (float)rows, st.faces_captured);
         if (ui_live_strip_done(l, rows, strip_ms, fh, busy)) {
             apply_preset(p, l->steps[l->step].preset);
             ui_accum_restart(&p->live.accum);
