@@ -430,6 +430,10 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
     return r;
 }
 
+/* What a probe's blur costs a split capture's budget, in faces: the prefilter of a 256-texel
+ * map takes about as long as two of its faces' captures on llvmpipe. */
+#define SPLIT_BLUR_FACES 2
+
 /* Which faces this frame's policy captures (a bit each). */
 static int faces_to_capture(const rd_scene *s, rd_probe *p, rd_probe_update u, int every)
 {
@@ -797,10 +801,30 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
          * it comes into view. */
         if (!probe_visible(s, p, planes) && !probe_seen_in_mirror(s, p, planes))
             continue;
+        if (p->blur_waits) {
+            /* A split first capture's blur: in the frame of its last face when the budget
+             * leaves room for it, else in a frame of its own; the faces stay as they were. */
+            p->blur_waits = 0;
+            if (p->faces_valid == 0x3f && p->captured_stamp == s->change_counter) {
+                if (budget > 0 && spent + SPLIT_BLUR_FACES > budget && spent > 0) {
+                    p->blur_waits = 1;
+                    stats->probes_held++;
+                    continue;
+                }
+                spent += SPLIT_BLUR_FACES;
+                p->captured_frame = s->frame;
+                r = blur_probe(ctx, s, p, p->capture, p->size, stats);
+                if (r != RD_OK)
+                    return r;
+                depth_fresh |= depth;
+                continue;
+            }
+        }
         int faces = faces_to_capture(s, p, u, every);
         if (!faces)
             continue;
         int complete = faces == 0x3f; /* this frame ends with all six faces fresh */
+        int split = 0;
         if (budget > 0 && faces == 0x3f && s->reflection.split_captures >= 2) {
             /* A first capture split by faces: the faces still missing, as many as the budget
              * leaves, in face order; the probe is held until its last face, then blurred. The
@@ -823,6 +847,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                 continue; /* its turn comes in a later frame */
             faces = take;
             complete = take == missing;
+            split = 1;
         } else if (budget > 0 && (faces != 0x3f || s->reflection.split_captures)) {
             int n = __builtin_popcount((unsigned)faces);
             if (spent + n > budget && (faces != 0x3f || spent > 0)) {
@@ -850,7 +875,11 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             }
         rd_phase_mark("probe captures");
         int round_done = 0;
-        if (complete) {
+        if (complete && split && spent + SPLIT_BLUR_FACES > budget) {
+            p->blur_waits = 1; /* no room left for the blur: the next frame's */
+            stats->probes_held++;
+            continue;
+        } else if (complete) {
             /* a first capture's last face, split or not: the blur below */
         } else if (faces != 0x3f && p->faces_valid != 0x3f) {
             continue; /* a split first capture under way: no blur before its last face */
@@ -869,6 +898,8 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         }
         /* Blur when a full set of faces is fresh: every full capture, or at the end of each
          * time-sliced round. */
+        if (complete && split)
+            spent += SPLIT_BLUR_FACES;
         if (complete || round_done) {
             p->captured_frame = s->frame;
             r = blur_probe(ctx, s, p, p->capture, p->size, stats);

@@ -1,10 +1,10 @@
 /* A probe's first capture split by faces (rd_reflection_defaults.split_captures = 2, what the
  * window's still view asks for): two chrome spheres in a room with a red block, probes
- * captured on change. With a budget of four faces a frame no render captures more than four
- * faces, the probes count as held until their last face, the twelve faces take three renders,
- * and the image afterwards equals, byte for byte, the image of the same scene whose probes were
- * captured whole (six faces, one probe a frame). A new budget set with
- * rd_scene_set_capture_budget captures nothing again. The backend comes from TESSERA_GL. */
+ * captured on change. With a budget of four faces a frame (a blur counting as two) no render
+ * captures more than four faces, the probes count as held until their blur, and the image
+ * afterwards equals, byte for byte, the image of the same scene whose probes were captured
+ * whole (six faces, one probe a frame). A new budget set with rd_scene_set_capture_budget
+ * captures nothing again. The backend comes from TESSERA_GL. */
 #include "../common/check.h"
 #include "../common/gl_scene.h"
 #include "render/render.h"
@@ -93,8 +93,10 @@ int main(void)
 
     rd_scene *b = make_scene(ctx, box, sphere, 4, 2);
     renders = settle(ctx, b, 4, &faces);
-    CHECK_MSG(renders == 3 && faces == 12, "four faces a frame: %d renders, %d faces", renders,
-              faces);
+    /* Twelve faces and two blurs (two faces' worth each) in four-face frames: four renders at
+     * least; greedy packing wastes at most one more. */
+    CHECK_MSG(renders >= 4 && renders <= 5 && faces == 12,
+              "four faces a frame: %d renders, %d faces", renders, faces);
     rd_scene_set_capture_budget(b, 3, 2);
     CHECK(rd_render(ctx, b, &view) == RD_OK);
     CHECK_MSG(rd_last_frame_stats(ctx).faces_captured == 0, "a new budget captured %d faces again",

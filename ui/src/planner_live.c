@@ -23,6 +23,9 @@
 /* Probe faces a still frame may capture: a probe's six faces at 256 texels cost about a
  * strip's budget on llvmpipe (docs/benchmarks.md, "Reflection probes"). */
 #define STILL_FACES_PER_FRAME 6
+/* The most a strip's split captures may take, in faces: a probe's six and its blur (which
+ * counts as two, probe.c), as one whole capture did, where faces are cheap. */
+#define SPLIT_MAX_FACES 8
 /* A face's cost before one was measured: a 256-texel face on llvmpipe, alone. */
 #define FIRST_FACE_MS 3.0f
 #define SCALE_FLOOR 0.35f
@@ -201,14 +204,14 @@ static float prepare_shadows(planner *p, float budget_ms)
 }
 
 /* The probe faces this strip may capture: as many as the budget left after its rows holds at
- * the learnt cost of a face, at least one, at most STILL_FACES_PER_FRAME. A probe's first
- * capture is split by faces (split_captures 2), so no frame captures a whole probe of six
- * faces and prefilters it when a face costs more than a sixth of the budget. */
+ * the learnt cost of a face, at least one, at most SPLIT_MAX_FACES. A probe's first capture
+ * is split by faces and its blur waits for a frame with room for it (split_captures 2), so no
+ * frame captures a whole probe of six faces and prefilters it when faces are dear. */
 static void set_face_budget(planner *p, float budget_ms)
 {
     float face_ms = p->live.probe_face_ms > 0.0f ? p->live.probe_face_ms : FIRST_FACE_MS;
     int faces = budget_ms > 0.0f ? (int)(budget_ms / face_ms) : 1;
-    faces = faces < 1 ? 1 : faces > STILL_FACES_PER_FRAME ? STILL_FACES_PER_FRAME : faces;
+    faces = faces < 1 ? 1 : faces > SPLIT_MAX_FACES ? SPLIT_MAX_FACES : faces;
     rd_scene_set_capture_budget(p->scene.scene, faces, 2);
 }
 
