@@ -621,9 +621,14 @@ static int probe_seen_in_mirror(const rd_scene *s, const rd_probe *p, vec4 plane
  * probes included, captured at the proxy's centre with distances and surfaces as a "depth"
  * probe is, and blurred for the glossiness of every object that searches it. It is made on the
  * frames that capture a "depth" probe completely, so the two always show the same scene. */
+/* Captures the room probe: all six faces and its blur at once when *faces_left < 0, else (a
+ * split capture, split_captures 2) at most *faces_left faces this frame, the faces already
+ * made for the scene as it is kept, the blur after the last face in a frame with room for it
+ * (SPLIT_BLUR_FACES) or that captured nothing else (frame_idle); until then the probe is held.
+ * *faces_left is charged what was spent. */
 static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmin[3],
-                                   const float bmax[3], float g_min, float g_max,
-                                   rd_frame_stats *stats)
+                                   const float bmax[3], float g_min, float g_max, int *faces_left,
+                                   int frame_idle, rd_frame_stats *stats)
 {
     rd_probe *p = &s->room_probe;
     for (int i = 0; i < s->object_count; i++) {
@@ -641,6 +646,7 @@ static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmi
         free_probe_textures(p);
         p->size = size;
         p->levels = rd_level_count(size);
+        p->faces_valid = 0;
         rd_result r = rd_alloc_cube(&p->capture, size, p->levels);
         if (r == RD_OK)
             r = rd_alloc_cube(&p->surface, size, 1);
@@ -653,15 +659,34 @@ static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmi
     for (int k = 0; k < 3; k++)
         p->centre[k] = 0.5f * (bmin[k] + bmax[k]);
     float far_m = capture_far(p->centre, bmin, bmax);
+    int split = *faces_left >= 0, fresh = 0, made = 0;
+    for (int f = 0; f < 6 && split; f++)
+        if ((p->faces_valid & (1 << f)) && p->face_stamp[f] == s->change_counter)
+            fresh |= 1 << f;
+    p->faces_valid = fresh;
     rd_phase_mark("probe set-up");
     for (int f = 0; f < 6; f++) {
+        if ((fresh & (1 << f)) || (split && *faces_left <= 0))
+            continue;
         rd_result r = rd_probe_capture_face(ctx, s, p, f, far_m);
         if (r != RD_OK)
             return r;
+        p->faces_valid |= 1 << f;
+        p->face_stamp[f] = s->change_counter;
         stats->faces_captured++;
+        made++;
+        if (split)
+            --*faces_left;
     }
     rd_phase_mark("probe captures");
-    p->faces_valid = 0x3f;
+    /* The blur where the budget leaves room for it, or in a frame that captured nothing else. */
+    if (p->faces_valid != 0x3f ||
+        (split && *faces_left < SPLIT_BLUR_FACES && (made || !frame_idle))) {
+        stats->probes_held++; /* the rest, or the blur, in a later frame */
+        return RD_OK;
+    }
+    if (split)
+        *faces_left -= SPLIT_BLUR_FACES;
     p->captured_frame = s->frame;
     p->captured_stamp = s->change_counter;
     stats->room_probe = 1;
@@ -924,8 +949,14 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     int room_for_glazes = stats->glazed > 0 &&
                           (room->faces_valid != 0x3f || room->captured_stamp != s->change_counter ||
                            !(room->gloss_min <= glaze_min));
+    /* A room probe for the glazes alone splits as the cube probes do; one for the "depth"
+     * lookups follows their blur in the same frame. */
+    int room_faces = budget > 0 && s->reflection.split_captures >= 2 && !room_for_depth
+                         ? (budget > spent ? budget - spent : 0)
+                         : -1;
     if ((room_for_depth || room_for_glazes) &&
-        (r = room_probe_update(ctx, s, bmin, bmax, glaze_min, glaze_max, stats)) != RD_OK)
+        (r = room_probe_update(ctx, s, bmin, bmax, glaze_min, glaze_max, &room_faces, spent == 0,
+                               stats)) != RD_OK)
         return r;
     if ((r = planar_captures(ctx, s, planar, planes, bmin, bmax, stats)) != RD_OK)
         return r;
