@@ -303,7 +303,9 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         float strip_ms = (float)((glfwGetTime() - t0) * 1e3);
         *render_ms = spent_ms + strip_ms;
         learn_face_cost(p, strip_ms - l->ms_per_row * (float)rows, st.faces_captured);
-        if (ui_live_strip_done(l, rows, strip_ms, fh, busy)) {
+        /* A row's cost is learnt from strips that captured nothing: a thin strip's captures
+         * spread over its few rows would make the next strips thin as well. */
+        if (ui_live_strip_done(l, rows, st.faces_captured ? 0.0f : strip_ms, fh, busy)) {
             apply_preset(p, l->steps[l->step].preset);
             ui_accum_restart(&p->live.accum);
             p->live.still_ev_ok = 0; /* the new preset's light: measured again */
