@@ -722,8 +722,9 @@ static rd_result planar_captures(rd_context *ctx, rd_scene *s, const rd_planar_v
 }
 
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
-                           const float eye[3], float pixels_per_tan, int supersample,
-                           const rd_planar_view *planar, rd_frame_stats *stats)
+                           const float capture_view_proj[16], const float eye[3],
+                           float pixels_per_tan, int supersample, const rd_planar_view *planar,
+                           rd_frame_stats *stats)
 {
     rd_result r = rd_probes_sync(s);
     if (r == RD_OK)
@@ -747,9 +748,11 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     float bmin[3], bmax[3];
     rd_effective_proxy(s, bmin, bmax);
     mat4 vp;
-    vec4 planes[6];
+    vec4 planes[6], whole[6];
     memcpy(vp, view_proj, sizeof vp);
     glm_frustum_planes(vp, planes);
+    memcpy(vp, capture_view_proj ? capture_view_proj : view_proj, sizeof vp);
+    glm_frustum_planes(vp, whole);
     /* The frame budget for refreshing probes:
      * at most max_faces_per_frame faces re-captured a frame, the probes taking turns from a
      * start that moves every frame. A probe's first, complete capture is held back only when
@@ -824,7 +827,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         /* An object out of view, and out of every mirror in view, needs no fresh reflection
          * this frame (section 8: compute only what the scene needs); its policy resumes when
          * it comes into view. */
-        if (!probe_visible(s, p, planes) && !probe_seen_in_mirror(s, p, planes))
+        if (!probe_visible(s, p, whole) && !probe_seen_in_mirror(s, p, whole))
             continue;
         if (p->blur_waits) {
             /* A split first capture's blur: in the frame of its last face when the budget
@@ -943,7 +946,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
      * since its last capture (compute only what the scene needs), blurred for both kinds of
      * reader. */
     float glaze_min, glaze_max;
-    stats->glazed = rd_glazes_in_view(s, planes, &glaze_min, &glaze_max);
+    stats->glazed = rd_glazes_in_view(s, whole, &glaze_min, &glaze_max);
     const rd_probe *room = &s->room_probe;
     int room_for_depth = depth_fresh && s->reflection.room_probe != RD_SWITCH_OFF;
     int room_for_glazes = stats->glazed > 0 &&

@@ -4,7 +4,8 @@
  * counting as two) no render captures more than four faces, the probes count as held until their
  * blur, and the image afterwards equals, byte for byte, the image of the same scene whose probes
  * were captured whole (six faces, one probe a frame). A new budget set with
- * rd_scene_set_capture_budget captures nothing again. The backend comes from TESSERA_GL. */
+ * rd_scene_set_capture_budget captures nothing again. A strip that shows no sphere captures for
+ * the whole picture under split captures. The backend comes from TESSERA_GL. */
 #include "../common/check.h"
 #include "../common/gl_scene.h"
 #include "render/render.h"
@@ -113,6 +114,31 @@ int main(void)
     for (int i = 0; i < W * H * 4; i++)
         differ += whole[i] != sliced[i];
     CHECK_MSG(differ == 0, "%d bytes differ between whole and split captures", differ);
+
+    /* A strip of the picture's top rows shows no sphere, yet under split captures it captures
+     * (and holds) the probes the whole picture needs; the whole-capture mode leaves them. */
+    rd_view strip = view;
+    strip.height = 6;
+    strip.crop_y = 0;
+    strip.full_width = W;
+    strip.full_height = H;
+    for (int split = 1; split <= 2; split++) {
+        rd_scene *c = make_scene(ctx, box, sphere, 4, split);
+        CHECK_MSG(rd_render(ctx, c, &strip) == RD_OK, "%s", rd_last_error());
+        rd_frame_stats st = rd_last_frame_stats(ctx);
+        int cubes = st.faces_captured - (st.room_probe ? 6 : 0);
+        printf("top strip, split_captures %d: %d faces, %d held\n", split, st.faces_captured,
+               st.probes_held);
+        if (split == 2)
+            CHECK_MSG(st.faces_captured == 4 && st.probes_held > 0,
+                      "split: the strip captured %d faces, held %d probes", st.faces_captured,
+                      st.probes_held);
+        else
+            CHECK_MSG(cubes <= 0 && st.probes_held == 0,
+                      "whole: the strip captured %d cube faces, held %d probes", cubes,
+                      st.probes_held);
+        rd_scene_destroy(c);
+    }
 
     free(whole);
     free(sliced);

@@ -219,9 +219,9 @@ static void set_face_budget(planner *p, float budget_ms)
  * (the blur of a probe's last face included). Quick to learn a dearer cost, as the rows are. */
 static void learn_face_cost(planner *p, float extra_ms, int faces)
 {
-    if (faces <= 0)
-        return;
-    float m = extra_ms > 0.0f ? extra_ms / (float)faces : 0.0f;
+    if (faces <= 0 || extra_ms <= 0.0f)
+        return; /* the rows' estimate was off, not the faces' */
+    float m = extra_ms / (float)faces;
     float *f = &p->live.probe_face_ms;
     *f = m > *f ? m : *f + 0.3f * (m - *f);
 }
