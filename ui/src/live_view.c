@@ -59,6 +59,9 @@ int ui_live_strip_done(ui_live *l, int rows, float ms, int height, int probes_bu
         return 0;
     l->pass = 0;
     l->step++;
+    /* A dearer preset's rows cost more (soft shadows, planar mirrors; print's traces): its
+     * first strip starts from a guess above the last step's, and learns from there. */
+    l->ms_per_row *= UI_LIVE_STEP_COST;
     return !ui_live_done(l);
 }
 
