@@ -223,9 +223,7 @@ static void learn_face_cost(planner *p, float extra_ms, int faces)
         return; /* the rows' estimate was off, not the faces' */
     float m = extra_ms / (float)faces;
     float *f = &p->live.probe_face_ms;
-    /* Slow to come down: probes differ in size (32 to 256 texels), and a run of small ones
-     * must not leave a budget that a large one overruns. */
-    *f = m > *f ? m : *f + 0.1f * (m - *f);
+    *f = m > *f ? m : *f + 0.3f * (m - *f);
 }
 
 /* What a step needs before its first strip, each in frames of its own: its shadow maps (a
