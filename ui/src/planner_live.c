@@ -248,6 +248,7 @@ static int prepare_step(planner *p, int fw, int fh, float budget_ms, float *spen
     if (rd_measure_view_exposure(p->ctx, p->scene.scene, &v, &p->live.still_ev) != RD_OK)
         return -1;
     p->live.still_ev_ok = 1;
+    p->live.view_ev = p->live.still_ev; /* this frame's render: the frame log's exposure */
     *spent_ms += (float)((glfwGetTime() - t0) * 1e3);
     return 1;
 }
