@@ -430,6 +430,10 @@ rd_result rd_probe_capture_face(rd_context *ctx, rd_scene *s, rd_probe *p, int f
     return r;
 }
 
+/* What a probe's blur costs a split capture's budget, in faces: the prefilter of a 256-texel
+ * map takes about as long as two of its faces' captures on llvmpipe. */
+#define SPLIT_BLUR_FACES 2
+
 /* Which faces this frame's policy captures (a bit each). */
 static int faces_to_capture(const rd_scene *s, rd_probe *p, rd_probe_update u, int every)
 {
@@ -617,9 +621,14 @@ static int probe_seen_in_mirror(const rd_scene *s, const rd_probe *p, vec4 plane
  * probes included, captured at the proxy's centre with distances and surfaces as a "depth"
  * probe is, and blurred for the glossiness of every object that searches it. It is made on the
  * frames that capture a "depth" probe completely, so the two always show the same scene. */
+/* Captures the room probe: all six faces and its blur at once when *faces_left < 0, else (a
+ * split capture, split_captures 2) at most *faces_left faces this frame, the faces already
+ * made for the scene as it is kept, the blur after the last face in a frame with room for it
+ * (SPLIT_BLUR_FACES) or that captured nothing else (frame_idle); until then the probe is held.
+ * *faces_left is charged what was spent. */
 static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmin[3],
-                                   const float bmax[3], float g_min, float g_max,
-                                   rd_frame_stats *stats)
+                                   const float bmax[3], float g_min, float g_max, int *faces_left,
+                                   int frame_idle, rd_frame_stats *stats)
 {
     rd_probe *p = &s->room_probe;
     for (int i = 0; i < s->object_count; i++) {
@@ -637,6 +646,7 @@ static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmi
         free_probe_textures(p);
         p->size = size;
         p->levels = rd_level_count(size);
+        p->faces_valid = 0;
         rd_result r = rd_alloc_cube(&p->capture, size, p->levels);
         if (r == RD_OK)
             r = rd_alloc_cube(&p->surface, size, 1);
@@ -649,15 +659,34 @@ static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmi
     for (int k = 0; k < 3; k++)
         p->centre[k] = 0.5f * (bmin[k] + bmax[k]);
     float far_m = capture_far(p->centre, bmin, bmax);
+    int split = *faces_left >= 0, fresh = 0, made = 0;
+    for (int f = 0; f < 6 && split; f++)
+        if ((p->faces_valid & (1 << f)) && p->face_stamp[f] == s->change_counter)
+            fresh |= 1 << f;
+    p->faces_valid = fresh;
     rd_phase_mark("probe set-up");
     for (int f = 0; f < 6; f++) {
+        if ((fresh & (1 << f)) || (split && *faces_left <= 0))
+            continue;
         rd_result r = rd_probe_capture_face(ctx, s, p, f, far_m);
         if (r != RD_OK)
             return r;
+        p->faces_valid |= 1 << f;
+        p->face_stamp[f] = s->change_counter;
         stats->faces_captured++;
+        made++;
+        if (split)
+            --*faces_left;
     }
     rd_phase_mark("probe captures");
-    p->faces_valid = 0x3f;
+    /* The blur where the budget leaves room for it, or in a frame that captured nothing else. */
+    if (p->faces_valid != 0x3f ||
+        (split && *faces_left < SPLIT_BLUR_FACES && (made || !frame_idle))) {
+        stats->probes_held++; /* the rest, or the blur, in a later frame */
+        return RD_OK;
+    }
+    if (split)
+        *faces_left -= SPLIT_BLUR_FACES;
     p->captured_frame = s->frame;
     p->captured_stamp = s->change_counter;
     stats->room_probe = 1;
@@ -693,8 +722,9 @@ static rd_result planar_captures(rd_context *ctx, rd_scene *s, const rd_planar_v
 }
 
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
-                           const float eye[3], float pixels_per_tan, int supersample,
-                           const rd_planar_view *planar, rd_frame_stats *stats)
+                           const float capture_view_proj[16], const float eye[3],
+                           float pixels_per_tan, int supersample, const rd_planar_view *planar,
+                           rd_frame_stats *stats)
 {
     rd_result r = rd_probes_sync(s);
     if (r == RD_OK)
@@ -718,9 +748,11 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
     float bmin[3], bmax[3];
     rd_effective_proxy(s, bmin, bmax);
     mat4 vp;
-    vec4 planes[6];
+    vec4 planes[6], whole[6];
     memcpy(vp, view_proj, sizeof vp);
     glm_frustum_planes(vp, planes);
+    memcpy(vp, capture_view_proj ? capture_view_proj : view_proj, sizeof vp);
+    glm_frustum_planes(vp, whole);
     /* The frame budget for refreshing probes:
      * at most max_faces_per_frame faces re-captured a frame, the probes taking turns from a
      * start that moves every frame. A probe's first, complete capture is held back only when
@@ -795,12 +827,56 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         /* An object out of view, and out of every mirror in view, needs no fresh reflection
          * this frame (section 8: compute only what the scene needs); its policy resumes when
          * it comes into view. */
-        if (!probe_visible(s, p, planes) && !probe_seen_in_mirror(s, p, planes))
+        if (!probe_visible(s, p, whole) && !probe_seen_in_mirror(s, p, whole))
             continue;
+        if (p->blur_waits) {
+            /* A split first capture's blur: in the frame of its last face when the budget
+             * leaves room for it, else in a frame of its own; the faces stay as they were. */
+            p->blur_waits = 0;
+            if (p->faces_valid == 0x3f && p->captured_stamp == s->change_counter) {
+                if (budget > 0 && spent + SPLIT_BLUR_FACES > budget && spent > 0) {
+                    p->blur_waits = 1;
+                    stats->probes_held++;
+                    continue;
+                }
+                spent += SPLIT_BLUR_FACES;
+                p->captured_frame = s->frame;
+                r = blur_probe(ctx, s, p, p->capture, p->size, stats);
+                if (r != RD_OK)
+                    return r;
+                depth_fresh |= depth;
+                continue;
+            }
+        }
         int faces = faces_to_capture(s, p, u, every);
         if (!faces)
             continue;
-        if (budget > 0 && (faces != 0x3f || s->reflection.split_captures)) {
+        int complete = faces == 0x3f; /* this frame ends with all six faces fresh */
+        int split = 0;
+        if (budget > 0 && faces == 0x3f && s->reflection.split_captures >= 2) {
+            /* A first capture split by faces: the faces still missing, as many as the budget
+             * leaves, in face order; the probe is held until its last face, then blurred. The
+             * faces are what one capture would make (the scene has not changed since the
+             * first of them: their stamps say so). */
+            int fresh = 0;
+            for (int f = 0; f < 6; f++)
+                if ((p->faces_valid & (1 << f)) && p->face_stamp[f] == s->change_counter)
+                    fresh |= 1 << f;
+            p->faces_valid = fresh; /* a face of an older scene is made again */
+            int missing = 0x3f & ~fresh, take = 0;
+            for (int f = 0; f < 6 && spent < budget; f++)
+                if (missing & (1 << f)) {
+                    take |= 1 << f;
+                    spent++;
+                }
+            if (take != missing)
+                stats->probes_held++;
+            if (!take)
+                continue; /* its turn comes in a later frame */
+            faces = take;
+            complete = take == missing;
+            split = 1;
+        } else if (budget > 0 && (faces != 0x3f || s->reflection.split_captures)) {
             int n = __builtin_popcount((unsigned)faces);
             if (spent + n > budget && (faces != 0x3f || spent > 0)) {
                 stats->probes_held++;
@@ -809,7 +885,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             spent += n;
         }
         float far_m = capture_far(p->centre, bmin, bmax);
-        if (faces == 0x3f) {
+        if (complete) {
             p->captured_stamp = s->change_counter;
             /* Time-sliced probes end their first round after 1 to 6 faces, by index, so that
              * their blurs (one per round) fall on different frames. */
@@ -827,7 +903,15 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             }
         rd_phase_mark("probe captures");
         int round_done = 0;
-        if (u == RD_PROBE_TIME_SLICED && faces != 0x3f) {
+        if (complete && split && spent + SPLIT_BLUR_FACES > budget) {
+            p->blur_waits = 1; /* no room left for the blur: the next frame's */
+            stats->probes_held++;
+            continue;
+        } else if (complete) {
+            /* a first capture's last face, split or not: the blur below */
+        } else if (faces != 0x3f && p->faces_valid != 0x3f) {
+            continue; /* a split first capture under way: no blur before its last face */
+        } else if (u == RD_PROBE_TIME_SLICED && faces != 0x3f) {
             p->next_face = (p->next_face + 1) % 6;
             round_done = ++p->faces_since_blur >= 6;
             if (round_done)
@@ -842,7 +926,9 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
         }
         /* Blur when a full set of faces is fresh: every full capture, or at the end of each
          * time-sliced round. */
-        if (faces == 0x3f || round_done) {
+        if (complete && split)
+            spent += SPLIT_BLUR_FACES;
+        if (complete || round_done) {
             p->captured_frame = s->frame;
             r = blur_probe(ctx, s, p, p->capture, p->size, stats);
             if (r != RD_OK)
@@ -860,14 +946,20 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
      * since its last capture (compute only what the scene needs), blurred for both kinds of
      * reader. */
     float glaze_min, glaze_max;
-    stats->glazed = rd_glazes_in_view(s, planes, &glaze_min, &glaze_max);
+    stats->glazed = rd_glazes_in_view(s, whole, &glaze_min, &glaze_max);
     const rd_probe *room = &s->room_probe;
     int room_for_depth = depth_fresh && s->reflection.room_probe != RD_SWITCH_OFF;
     int room_for_glazes = stats->glazed > 0 &&
                           (room->faces_valid != 0x3f || room->captured_stamp != s->change_counter ||
                            !(room->gloss_min <= glaze_min));
+    /* A room probe for the glazes alone splits as the cube probes do; one for the "depth"
+     * lookups follows their blur in the same frame. */
+    int room_faces = budget > 0 && s->reflection.split_captures >= 2 && !room_for_depth
+                         ? (budget > spent ? budget - spent : 0)
+                         : -1;
     if ((room_for_depth || room_for_glazes) &&
-        (r = room_probe_update(ctx, s, bmin, bmax, glaze_min, glaze_max, stats)) != RD_OK)
+        (r = room_probe_update(ctx, s, bmin, bmax, glaze_min, glaze_max, &room_faces, spent == 0,
+                               stats)) != RD_OK)
         return r;
     if ((r = planar_captures(ctx, s, planar, planes, bmin, bmax, stats)) != RD_OK)
         return r;

@@ -15,10 +15,14 @@ void rd_probes_destroy(rd_scene *s);
 
 /* Captures and filters what this frame's policies ask for, before the main pass. The eye,
  * the main view's projection scale (pixels per unit of tan) and the supersampling decide the
- * "auto" resolutions; `planar` (probe_planar.h) the planar mirrors'. */
+ * "auto" resolutions; `planar` (probe_planar.h) the planar mirrors'. capture_view_proj (NULL:
+ * view_proj) is the frustum whose cube probes and glazes count as in view: a strip of a
+ * split capture passes the whole image's, so every probe the picture needs is captured (or
+ * held) whichever strip is drawn. */
 struct rd_planar_view;
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
-                           const float eye[3], float pixels_per_tan, int supersample,
+                           const float capture_view_proj[16], const float eye[3],
+                           float pixels_per_tan, int supersample,
                            const struct rd_planar_view *planar, rd_frame_stats *stats);
 
 /* The effective settings of object i's material and probe after the scene's defaults. */

@@ -148,8 +148,22 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
                              {(float)(v->width * shaded), (float)(v->height * shaded)},
                              pixels_per_tan * (float)shaded,
                              adaptive(v, samples) ? 1.0f : 0.0f};
+    /* A strip of a split capture (the window's still view) captures for the whole image:
+     * its strips are kept only once no probe in the picture waits. */
+    float whole_vp[16];
+    const float *capture_vp = NULL;
+    if (r == RD_OK && scene->reflection.split_captures >= 2 && v->full_width > 0) {
+        rd_view whole = *v;
+        whole.crop_x = whole.crop_y = whole.full_width = whole.full_height = 0;
+        whole.width = v->full_width;
+        whole.height = v->full_height;
+        rd_scene_view_input in = {scene};
+        if (rd_camera_matrices(ctx, &whole, &in, whole_vp, NULL, NULL) == RD_OK)
+            capture_vp = whole_vp;
+    }
     if (r == RD_OK)
-        r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &planar, &stats);
+        r = rd_probes_update(ctx, scene, vp, capture_vp, v->eye, pixels_per_tan, samples, &planar,
+                             &stats);
     if (r == RD_OK)
         r = rd_sphere_maps_update(ctx, scene, view_rot);
     if (r == RD_OK)

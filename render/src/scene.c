@@ -188,6 +188,14 @@ void rd_scene_set_reflection_defaults(rd_scene *s, const rd_reflection_defaults 
     }
 }
 
+void rd_scene_set_capture_budget(rd_scene *s, int max_faces_per_frame, int split_captures)
+{
+    if (s) {
+        s->reflection.max_faces_per_frame = max_faces_per_frame > 0 ? max_faces_per_frame : 0;
+        s->reflection.split_captures = split_captures;
+    }
+}
+
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *s)
 {
     rd_reflection_defaults none = {0};

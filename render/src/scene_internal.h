@@ -35,10 +35,11 @@ typedef struct rd_probe {
     int faces_valid;          /* bit f: face f holds a capture */
     int next_face;            /* time slicing: the face captured next */
     int faces_since_blur;     /* time slicing: faces captured since the last blur */
-    long long face_stamp[6];  /* the scene's change counter when face f was last captured */
-    int filtered_level;       /* the lower prefiltered level that holds data; -1 none */
-    int mips_valid;           /* box mips generated since the last capture */
-    unsigned sphere_map;      /* material.sphere_map: the probe as a sphere map for this view */
+    int blur_waits; /* a split first capture (split_captures 2): its faces are in, its blur not */
+    long long face_stamp[6]; /* the scene's change counter when face f was last captured */
+    int filtered_level;      /* the lower prefiltered level that holds data; -1 none */
+    int mips_valid;          /* box mips generated since the last capture */
+    unsigned sphere_map;     /* material.sphere_map: the probe as a sphere map for this view */
     int sphere_size;
     /* "depth" correction: the captured surfaces' normals (octahedral), specular and shininess,
      * for highlights seen from the reflecting point (probe.c); 0 for the other modes. */

@@ -29,6 +29,12 @@ struct rd_shadow_maps {
     long long stamp; /* the scene's change counter the maps were made at */
     int light_count;
     rd_shadow_settings settings;
+    /* A remake under way (rd_scene_prepare_shadows): the state it is for and the next face to
+     * draw, counting every light's faces in light order (a cube light six, others one). */
+    int building, next_face, face_total;
+    long long build_stamp;
+    int build_lights;
+    rd_shadow_settings build_settings;
     int taps_per_sample;    /* this frame's (rd_shadow_frame) */
     float sample_offset[2]; /* this frame's window origin in samples, y from the bottom */
     int tile[RD_MAX_LIGHTS], cube[RD_MAX_LIGHTS];
@@ -228,9 +234,9 @@ static void set_perspective_depth(rd_shadow_maps *m, int i, float near_m, float 
     m->depth[i][2] = 0.0f;
 }
 
-/* Renders light i's tiles and fills its lookup data. */
-static void render_light(rd_context *ctx, const rd_scene *s, rd_shadow_maps *m, int i,
-                         const float lo[3], const float hi[3])
+/* Renders face f of light i's tiles (f = 0 for a one-tile light) and fills its lookup data. */
+static void render_light_face(rd_context *ctx, const rd_scene *s, rd_shadow_maps *m, int i, int f,
+                              const float lo[3], const float hi[3])
 {
     const rd_light *l = &s->lights[i];
     float face = (float)m->face;
@@ -239,15 +245,13 @@ static void render_light(rd_context *ctx, const rd_scene *s, rd_shadow_maps *m, 
         set_perspective_depth(m, i, near_m, far_m);
         m->texel[i][0] = 0.0f;
         m->texel[i][1] = 2.0f / face; /* tan 45 = 1: a face spans 2 d over `face` texels */
-        for (int f = 0; f < 6; f++) {
-            mat4 view, proj, vp;
-            vec3 target;
-            glm_vec3_add((float *)l->position, (float *)face_fwd[f], target);
-            glm_lookat((float *)l->position, target, (float *)face_up[f], view);
-            glm_perspective(glm_rad(90.0f), 1.0f, near_m, far_m, proj);
-            glm_mat4_mul(proj, view, vp);
-            draw_casters(ctx, s, m, m->tile[i] + f, (const float *)vp);
-        }
+        mat4 view, proj, vp;
+        vec3 target;
+        glm_vec3_add((float *)l->position, (float *)face_fwd[f], target);
+        glm_lookat((float *)l->position, target, (float *)face_up[f], view);
+        glm_perspective(glm_rad(90.0f), 1.0f, near_m, far_m, proj);
+        glm_mat4_mul(proj, view, vp);
+        draw_casters(ctx, s, m, m->tile[i] + f, (const float *)vp);
         return;
     }
     vec3 dir = {l->direction[0], l->direction[1], l->direction[2]};
@@ -288,23 +292,28 @@ static void render_light(rd_context *ctx, const rd_scene *s, rd_shadow_maps *m, 
     draw_casters(ctx, s, m, m->tile[i], (const float *)vp);
 }
 
-static rd_result shadow_maps_update(rd_context *ctx, rd_scene *s)
+/* 1 when the maps were made for the scene as it is now. */
+static int maps_current(const rd_shadow_maps *m, const rd_scene *s)
 {
-    if (s->shadows.mode == RD_SHADOWS_OFF || s->light_count == 0)
-        return RD_OK;
-    if (!s->shadow_maps) {
-        s->shadow_maps = calloc(1, sizeof *s->shadow_maps);
-        if (!s->shadow_maps)
-            return rd_fail(RD_ERR_OUT_OF_MEMORY, "out of memory for shadow maps");
-        s->shadow_maps->stamp = -1;
-    }
-    rd_shadow_maps *m = s->shadow_maps;
-    if (m->atlas && m->stamp == s->change_counter && m->light_count == s->light_count &&
-        !memcmp(&m->settings, &s->shadows, sizeof m->settings))
-        return RD_OK; /* nothing moved: the maps stand */
+    return m->atlas && !m->building && m->stamp == s->change_counter &&
+           m->light_count == s->light_count &&
+           !memcmp(&m->settings, &s->shadows, sizeof m->settings);
+}
+
+/* 1 when the remake under way is for the scene as it is now (else it starts again). */
+static int build_current(const rd_shadow_maps *m, const rd_scene *s)
+{
+    return m->building && m->build_stamp == s->change_counter &&
+           m->build_lights == s->light_count &&
+           !memcmp(&m->build_settings, &s->shadows, sizeof m->build_settings);
+}
+
+/* Lays the atlas out for the scene's lights and settings and starts a remake at face 0. */
+static rd_result begin_build(rd_context *ctx, rd_scene *s, rd_shadow_maps *m)
+{
     /* Cube lights first, a row each (their six faces side by side: shadow.glsl finds face f
      * at the light's origin plus f tiles), then the one-tile lights, six to a row. */
-    int tiles = 0;
+    int tiles = 0, faces = 0;
     for (int pass = 0; pass < 2; pass++)
         for (int i = 0; i < s->light_count; i++) {
             const rd_light *l = &s->lights[i];
@@ -315,6 +324,7 @@ static rd_result shadow_maps_update(rd_context *ctx, rd_scene *s)
             m->cube[i] = cube;
             m->tile[i] = tiles;
             tiles += cube ? ATLAS_COLS : 1;
+            faces += cube ? 6 : 1;
         }
     int rows = (tiles + ATLAS_COLS - 1) / ATLAS_COLS;
     int limit = ctx->max_size;
@@ -323,9 +333,24 @@ static rd_result shadow_maps_update(rd_context *ctx, rd_scene *s)
                          4LL * ATLAS_COLS * face * rows * face > ATLAS_MAX_BYTES))
         face /= 2;
     m->face = face;
+    m->building = 0;
     rd_result r = ensure_gl(m, ATLAS_COLS * face, rows * face);
     if (r != RD_OK)
         return r;
+    m->building = 1;
+    m->next_face = 0;
+    m->face_total = faces;
+    m->build_stamp = s->change_counter;
+    m->build_lights = s->light_count;
+    m->build_settings = s->shadows;
+    return RD_OK;
+}
+
+/* Draws up to max_faces (all when <= 0) of the remake's next faces; ends the remake after its
+ * last face. The faces are drawn in the same order whatever the slicing, each into its own
+ * cleared tile, so the atlas ends up the same as when made at once. */
+static rd_result draw_faces(rd_context *ctx, rd_scene *s, rd_shadow_maps *m, int max_faces)
+{
     float lo[3], hi[3];
     rd_scene_depth_bounds(s, lo, hi);
     glBindFramebuffer(GL_FRAMEBUFFER, m->fbo);
@@ -335,24 +360,78 @@ static rd_result shadow_maps_update(rd_context *ctx, rd_scene *s)
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE); /* both sides cast: open sheets and closed meshes alike */
-    for (int i = 0; i < s->light_count; i++)
-        render_light(ctx, s, m, i, lo, hi);
+    int drawn = 0, first = 0;
+    for (int i = 0; i < s->light_count; i++) {
+        int n = m->cube[i] ? 6 : 1;
+        for (int f = 0; f < n; f++, first++) {
+            if (first < m->next_face || (max_faces > 0 && drawn >= max_faces))
+                continue;
+            render_light_face(ctx, s, m, i, f, lo, hi);
+            drawn++;
+        }
+    }
+    m->next_face += drawn;
     glDisable(GL_SCISSOR_TEST);
     glBindVertexArray(0);
     unsigned err = rd_gl_drain_errors();
-    if (err != GL_NO_ERROR)
+    if (err != GL_NO_ERROR) {
+        m->building = 0;
         return rd_fail(RD_ERR_GL, "OpenGL error 0x%x in the shadow pass", err);
-    m->stamp = s->change_counter;
-    m->light_count = s->light_count;
-    m->settings = s->shadows;
+    }
+    if (m->next_face >= m->face_total) {
+        m->building = 0;
+        m->stamp = m->build_stamp;
+        m->light_count = m->build_lights;
+        m->settings = m->build_settings;
+    }
     return RD_OK;
+}
+
+/* Makes up to max_faces (all when <= 0) of the faces the scene's maps lack; *left gets how
+ * many remain. */
+static rd_result shadow_maps_step(rd_context *ctx, rd_scene *s, int max_faces, int *left)
+{
+    *left = 0;
+    if (s->shadows.mode == RD_SHADOWS_OFF || s->light_count == 0)
+        return RD_OK;
+    if (!s->shadow_maps) {
+        s->shadow_maps = calloc(1, sizeof *s->shadow_maps);
+        if (!s->shadow_maps)
+            return rd_fail(RD_ERR_OUT_OF_MEMORY, "out of memory for shadow maps");
+        s->shadow_maps->stamp = -1;
+    }
+    rd_shadow_maps *m = s->shadow_maps;
+    if (maps_current(m, s))
+        return RD_OK; /* nothing moved: the maps stand */
+    rd_result r = RD_OK;
+    if (!build_current(m, s))
+        r = begin_build(ctx, s, m);
+    if (r == RD_OK)
+        r = draw_faces(ctx, s, m, max_faces);
+    *left = m->building ? m->face_total - m->next_face : 0;
+    return r;
 }
 
 rd_result rd_shadow_maps_update(rd_context *ctx, rd_scene *s)
 {
     rd_phase_mark("probe captures"); /* TESSERA_PHASES: the probes' tail (phase_timer.h) */
-    rd_result r = shadow_maps_update(ctx, s);
+    int left;
+    rd_result r = shadow_maps_step(ctx, s, 0, &left);
     rd_phase_mark("shadow maps");
+    return r;
+}
+
+rd_result rd_scene_prepare_shadows(rd_context *ctx, rd_scene *scene, int max_faces, int *left)
+{
+    if (left)
+        *left = 0;
+    if (!ctx || !scene || !left)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_prepare_shadows: missing argument");
+    if (ctx->ops)
+        ctx->ops->make_current(ctx->backend_state);
+    rd_result r = shadow_maps_step(ctx, scene, max_faces > 0 ? max_faces : 1, left);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glFinish(); /* the faces' rasterising falls in this call, not in the caller's next frame */
     return r;
 }
 

@@ -62,6 +62,22 @@ static void check_ladder(void)
     ui_live_strip_done(&l, rows, (float)rows * 2.0f, 720, 0);
     CHECK(ui_live_strip_rows(&l, 50.0f, 720) * 2.0f <= 50.0f);
 
+    /* While probes settle (the last strip waited for a capture) the strip is the thinnest: the
+     * frame is the capture's; the next strip after them takes the budget again. */
+    ui_live_begin(&l, 2, 1.0f);
+    CHECK(ui_live_strip_rows(&l, 50.0f, 720) == 50);
+    ui_live_strip_done(&l, 50, 50.0f, 720, 1);
+    CHECK(ui_live_strip_rows(&l, 50.0f, 720) == UI_LIVE_MIN_ROWS);
+    ui_live_strip_done(&l, UI_LIVE_MIN_ROWS, 4.0f, 720, 0);
+    CHECK(ui_live_strip_rows(&l, 50.0f, 720) == 50);
+
+    /* The first strip of a new step is thinner: its rows are guessed dearer. */
+    ui_live_begin(&l, 2, 1.0f);
+    CHECK(ui_live_strip_rows(&l, 50.0f, 100) == 50);
+    ui_live_strip_done(&l, 50, 50.0f, 100, 0);
+    CHECK(ui_live_strip_done(&l, 50, 50.0f, 100, 0) == 1);
+    CHECK(ui_live_strip_rows(&l, 50.0f, 100) == (int)(50.0f / UI_LIVE_STEP_COST));
+
     /* A step change is reported once per step; a busy strip does not advance. */
     ui_live_begin(&l, 2, 1.0f);
     int changes = 0;

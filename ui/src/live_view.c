@@ -32,8 +32,10 @@ int ui_live_strip_rows(const ui_live *l, float budget_ms, int height)
 {
     int rows = (int)(budget_ms / (l->ms_per_row > 1e-3f ? l->ms_per_row : 1e-3f));
     int left = height - l->row;
-    if (rows < 4)
-        rows = 4;
+    /* While probes are captured a probe a frame, the strip is most likely drawn again: the
+     * fewest rows leave the frame to the capture. */
+    if (rows < UI_LIVE_MIN_ROWS || l->settling)
+        rows = UI_LIVE_MIN_ROWS;
     return rows > left ? left : rows;
 }
 
@@ -57,6 +59,9 @@ int ui_live_strip_done(ui_live *l, int rows, float ms, int height, int probes_bu
         return 0;
     l->pass = 0;
     l->step++;
+    /* A dearer preset's rows cost more (soft shadows, planar mirrors; print's traces): its
+     * first strip starts from a guess above the last step's, and learns from there. */
+    l->ms_per_row *= UI_LIVE_STEP_COST;
     return !ui_live_done(l);
 }
 

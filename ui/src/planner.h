@@ -92,6 +92,11 @@ typedef struct planner {
         size_t strip_size;
         int window_w, window_h; /* where this frame presents: the window's size */
         ui_rect pane;           /* and the 3D view's pane in it */
+
+        int shadows_pending;   /* 1: the step's shadow maps may lack faces (made before strips) */
+        int shadow_faces_left; /* what the last frame's faces left to make */
+        int preset_faces;      /* the applied preset's probe faces a frame (moving frames) */
+        float probe_face_ms;   /* what a probe face's capture costs a strip, smoothed */
     } live;
 
     ui_catalog_browser browser;

@@ -23,6 +23,11 @@
 /* Probe faces a still frame may capture: a probe's six faces at 256 texels cost about a
  * strip's budget on llvmpipe (docs/benchmarks.md, "Reflection probes"). */
 #define STILL_FACES_PER_FRAME 6
+/* The most a strip's split captures may take, in faces: a probe's six and its blur (which
+ * counts as two, probe.c), as one whole capture did, where faces are cheap. */
+#define SPLIT_MAX_FACES 8
+/* A face's cost before one was measured: a 256-texel face on llvmpipe, alone. */
+#define FIRST_FACE_MS 3.0f
 #define SCALE_FLOOR 0.35f
 
 /* The scene takes preset `index`'s settings. Probes are captured on change, never every
@@ -47,6 +52,7 @@ static void apply_preset(planner *p, int index)
     d.split_captures = 1;
     rd_scene_set_reflection_defaults(p->scene.scene, &d);
     p->live.applied = index;
+    p->live.preset_faces = d.max_faces_per_frame;
 }
 
 /* Everything that changes the picture: a difference from the last frame means moving. */
@@ -90,6 +96,7 @@ static rd_result present_view(planner *p)
 static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
 {
     apply_preset(p, ui_live_moving_preset(p->quality));
+    rd_scene_set_capture_budget(p->scene.scene, p->live.preset_faces, 1); /* a still's undone */
     /* Back from a still: start at the scale the last moving frames held. */
     if (p->live.still && p->live.last_w > 0)
         p->render_scale = (float)p->live.last_w / (float)fw;
@@ -144,6 +151,7 @@ static int begin_still(planner *p, int fw, int fh)
         ui_accum_restart(&p->live.accum);
     apply_preset(p, p->live.ladder.steps[0].preset);
     p->live.still_ev_ok = 0;
+    p->live.shadows_pending = 1;
     return 0;
 }
 
@@ -172,14 +180,96 @@ static int waits_for_shaders(const planner *p)
     return !ui_live_done(l) && !planner_warmup_ready(p, l->steps[l->step].preset);
 }
 
+/* A step's new shadow settings remake every light's maps (final's soft shadows: five lights,
+ * four of them cubes of six faces; print's at 2048 texels), a second or two in one go on
+ * llvmpipe. So before a step's first strip its maps are made a face at a time, as many faces
+ * a frame as fit the strip's budget (at least one), while the last step's picture stays on
+ * screen; the maps come out the same as made at once (rd_scene_prepare_shadows). Returns the
+ * milliseconds spent, -1 on failure. */
+static float prepare_shadows(planner *p, float budget_ms)
+{
+    if (!p->live.shadows_pending)
+        return 0.0f;
+    double t0 = glfwGetTime(), face_ms = 0.0;
+    int left = 0;
+    do {
+        double t = glfwGetTime();
+        if (rd_scene_prepare_shadows(p->ctx, p->scene.scene, 1, &left) != RD_OK)
+            return -1.0f;
+        face_ms = (glfwGetTime() - t) * 1e3;
+    } while (left > 0 && (glfwGetTime() - t0) * 1e3 + face_ms <= budget_ms);
+    p->live.shadow_faces_left = left;
+    p->live.shadows_pending = left > 0;
+    return (float)((glfwGetTime() - t0) * 1e3);
+}
+
+/* The probe faces this strip may capture: as many as the budget left after its rows holds at
+ * the learnt cost of a face, at least one, at most SPLIT_MAX_FACES. A probe's first capture
+ * is split by faces and its blur waits for a frame with room for it (split_captures 2), so no
+ * frame captures a whole probe of six faces and prefilters it when faces are dear. */
+static void set_face_budget(planner *p, float budget_ms)
+{
+    float face_ms = p->live.probe_face_ms > 0.0f ? p->live.probe_face_ms : FIRST_FACE_MS;
+    int faces = budget_ms > 0.0f ? (int)(budget_ms / face_ms) : 1;
+    faces = faces < 1 ? 1 : faces > SPLIT_MAX_FACES ? SPLIT_MAX_FACES : faces;
+    rd_scene_set_capture_budget(p->scene.scene, faces, 2);
+}
+
+/* Learns a face's cost from a strip that captured `faces`: the strip's time beyond its rows'
+ * (the blur of a probe's last face included). Quick to learn a dearer cost, as the rows are. */
+static void learn_face_cost(planner *p, float extra_ms, int faces)
+{
+    if (faces <= 0 || extra_ms <= 0.0f)
+        return; /* the rows' estimate was off, not the faces' */
+    float m = extra_ms / (float)faces;
+    float *f = &p->live.probe_face_ms;
+    *f = m > *f ? m : *f + 0.3f * (m - *f);
+}
+
+/* What a step needs before its first strip, each in frames of its own: its shadow maps (a
+ * few faces a frame), then the exposure of the whole view at its settings (a small render of
+ * its own, which captures the SH9 ambient and a probe). Returns 1 when this frame went to
+ * them, 0 when the strip may follow, -1 on failure; *spent_ms gets their time. */
+static int prepare_step(planner *p, int fw, int fh, float budget_ms, float *spent_ms)
+{
+    *spent_ms = prepare_shadows(p, budget_ms);
+    if (*spent_ms < 0.0f)
+        return -1;
+    /* A strip waits for the maps, and for a frame of its own when they took most of this one. */
+    if (p->live.shadows_pending || budget_ms - *spent_ms < STRIP_MIN_MS)
+        return 1;
+    if (p->live.still_ev_ok)
+        return 0;
+    /* One exposure for the whole picture: a strip that metered itself would expose the bright
+     * ceiling's rows darker than the floor's, and the still would show bands. */
+    rd_view v;
+    planner_view(p, fw, fh, &v);
+    double t0 = glfwGetTime();
+    if (rd_measure_view_exposure(p->ctx, p->scene.scene, &v, &p->live.still_ev) != RD_OK)
+        return -1;
+    p->live.still_ev_ok = 1;
+    p->live.view_ev = p->live.still_ev; /* this frame's render: the frame log's exposure */
+    *spent_ms += (float)((glfwGetTime() - t0) * 1e3);
+    return 1;
+}
+
 static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
 {
     ui_live *l = &p->live.ladder;
     *rw = fw;
     *rh = fh;
     p->render_scale = 1.0f;
+    float budget = 0.0f, spent_ms = 0.0f;
+    int busy_frame = 0;
     if (!ui_live_done(l) && !waits_for_shaders(p)) {
-        int rows = ui_live_strip_rows(l, strip_budget(p), fh);
+        budget = strip_budget(p);
+        busy_frame = prepare_step(p, fw, fh, budget, &spent_ms);
+        if (busy_frame < 0)
+            return render_failed();
+        *render_ms = spent_ms;
+    }
+    if (!ui_live_done(l) && !waits_for_shaders(p) && !busy_frame) {
+        int rows = ui_live_strip_rows(l, budget - spent_ms, fh);
         size_t size = (size_t)fw * (size_t)rows * 4;
         if (size > p->live.strip_size) {
             free(p->live.strip);
@@ -199,15 +289,9 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         v.full_width = fw;
         v.full_height = fh;
         ui_jitter(l->pass, v.jitter);
-        /* One exposure for the whole picture: a strip that metered itself would expose the
-         * bright ceiling's rows darker than the floor's, and the still would show bands. */
-        if (!p->live.still_ev_ok) {
-            if (rd_measure_view_exposure(p->ctx, p->scene.scene, &v, &p->live.still_ev) != RD_OK)
-                return render_failed();
-            p->live.still_ev_ok = 1;
-        }
         v.exposure_ev = p->live.still_ev;
         v.auto_exposure = 0;
+        set_face_budget(p, budget - spent_ms - l->ms_per_row * (float)rows);
         double t0 = glfwGetTime();
         if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK ||
             rd_read_rgba8(p->ctx, p->live.strip, size) != RD_OK)
@@ -217,11 +301,16 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         int busy = st.probes_held > 0;
         if (!busy)
             ui_accum_add(&p->live.accum, 0, l->row, fw, rows, p->live.strip);
-        *render_ms = (float)((glfwGetTime() - t0) * 1e3);
-        if (ui_live_strip_done(l, rows, *render_ms, fh, busy)) {
+        float strip_ms = (float)((glfwGetTime() - t0) * 1e3);
+        *render_ms = spent_ms + strip_ms;
+        learn_face_cost(p, strip_ms - l->ms_per_row * (float)rows, st.faces_captured);
+        /* A row's cost is learnt from strips that captured nothing: a thin strip's captures
+         * spread over its few rows would make the next strips thin as well. */
+        if (ui_live_strip_done(l, rows, st.faces_captured ? 0.0f : strip_ms, fh, busy)) {
             apply_preset(p, l->steps[l->step].preset);
             ui_accum_restart(&p->live.accum);
             p->live.still_ev_ok = 0; /* the new preset's light: measured again */
+            p->live.shadows_pending = 1;
         }
     }
     const unsigned char *shown = planner_bake_fade(p, p->live.accum.image, fw, fh);
@@ -262,6 +351,10 @@ void planner_live_overlay(planner *p, ui_rect pane)
         if (waits_for_shaders(p))
             ui_gui_text("refining to %s: %.0f %% (preparing the %s shaders)",
                         ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset);
+        else if (p->live.shadows_pending)
+            ui_gui_text("refining to %s: %.0f %% (%s shadow maps, %d faces to go)",
+                        ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset,
+                        p->live.shadow_faces_left);
         else
             ui_gui_text("refining to %s: %.0f %% (%s pass %d of %d)%s",
                         ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset,
@@ -289,6 +382,7 @@ void planner_live_restart(planner *p)
     ui_live_begin(&p->live.ladder, p->quality, p->live.last_ms / rows * px_scale);
     ui_accum_restart(&p->live.accum); /* shows the old picture until strips replace it */
     apply_preset(p, p->live.ladder.steps[0].preset);
+    p->live.shadows_pending = 1;
 }
 
 void planner_live_free(planner *p)

@@ -306,7 +306,10 @@ typedef struct rd_reflection_defaults {
     int split_captures;      /* 1: first captures keep to max_faces_per_frame too (one probe a
                                 frame at least); probes held back are drawn unfinished and
                                 counted in rd_frame_stats.probes_held, so the caller can wait
-                                (the planner's still view). 0: a first capture is never held */
+                                (the planner's still view). 0: a first capture is never held.
+                                2: a first capture too is split, at most max_faces_per_frame
+                                faces a frame in face order, blurred after its last face (the
+                                map as one capture makes it, reached over frames) */
     /* Switches: RD_SWITCH_UNSET takes the renderer's default, named with each. */
     rd_switch planar_mirrors; /* ON: a flat mirror's probe is captured from the eye's mirror
                                  image, clipped at its plane, at the view's resolution (a planar
@@ -335,6 +338,9 @@ typedef struct rd_reflection_defaults {
 } rd_reflection_defaults;
 void rd_scene_set_reflection_defaults(rd_scene *scene, const rd_reflection_defaults *d);
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
+/* Changes only the capture budget (max_faces_per_frame and split_captures above) without the
+ * new captures a change of defaults asks for: a live view sets it frame by frame. */
+void rd_scene_set_capture_budget(rd_scene *scene, int max_faces_per_frame, int split_captures);
 
 /* Shadows from every light (docs/rendering.md, "Shadows"): shadow maps in one depth atlas, a
  * cube (six faces) per point light, one face per spot and directional light. Objects with
@@ -370,6 +376,12 @@ void rd_shadow_disk_tap(int i, int n, float rotation, float out[2]);
 /* Soft taps per sample at s x s supersampling: the pixel's taps shared by its s^2 samples, at
  * least 2 (1 when hard). */
 int rd_shadow_taps_per_sample(const rd_shadow_settings *s, int supersample);
+/* Makes at most max_faces (at least 1) of the shadow-map faces the scene's lights and settings
+ * still lack (a point light's cube counts six faces, a spot or directional light one), so that
+ * a window can spread a change of settings over frames; *left gets the faces still to make (0:
+ * the maps are ready). The next rd_render completes what is left; the maps come out the same
+ * however the work was split. Waits for the GPU, so the work falls within the call. */
+rd_result rd_scene_prepare_shadows(rd_context *ctx, rd_scene *scene, int max_faces, int *left);
 
 /* Probes the scene holds now (one per reflective object or group); for tests and stats. */
 int rd_scene_probe_count(const rd_scene *scene);

@@ -30,6 +30,10 @@ def summary(path):
             out["still_median_ms"] = statistics.median(refining)
             out["still_longest_ms"] = max(refining)
             out["still_over_100"] = f"{sum(1 for f in refining if f > 100)} of {len(refining)}"
+            # The 3D view's own time in those frames (the rest is the panels, present and swap).
+            views = [float(rows[i]["render_ms"]) for i in range(start, done)]
+            out["view_longest_ms"] = max(views)
+            out["view_over_100"] = sum(1 for v in views if v > 100)
     return out
 
 
@@ -37,12 +41,13 @@ def cell(d, key, fmt):
     return fmt.format(d[key]) if key in d else "-"
 
 
-print("| log | frames | median frame while dragging | render scale | longest frame | stop to still at preset | refining frames: median / longest / over 100 ms |")
-print("|---|---|---|---|---|---|---|")
+print("| log | frames | median frame while dragging | render scale | longest frame | stop to still at preset | refining frames: median / longest / over 100 ms | their 3D view: longest / over 100 ms |")
+print("|---|---|---|---|---|---|---|---|")
 for path in sys.argv[1:]:
     d = summary(path)
     print(f"| {path} | {d['frames']} | {cell(d, 'drag_median_ms', '{:.1f} ms')} "
           f"({cell(d, 'drag_fps', '{:.1f} fps')}) | {cell(d, 'drag_scale', '{:.2f}')} | "
           f"{d['longest_ms']:.0f} ms | {cell(d, 'to_still_s', '{:.2f} s')} | "
           f"{cell(d, 'still_median_ms', '{:.1f}')} / {cell(d, 'still_longest_ms', '{:.0f} ms')} / "
-          f"{cell(d, 'still_over_100', '{}')} |")
+          f"{cell(d, 'still_over_100', '{}')} | "
+          f"{cell(d, 'view_longest_ms', '{:.0f} ms')} / {cell(d, 'view_over_100', '{}')} |")
