@@ -334,7 +334,8 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
                                    .planar_off = 1,
                                    .min_solid_radius = 0.25f * sample_tan,
                                    .full_meshes = 1,
-                                   .depth_prepass = 1});
+                                   .depth_prepass = 1,
+                                   .panes_over = 1});
     unsigned e = rd_gl_drain_errors();
     if (r == RD_OK && e != GL_NO_ERROR)
         r = rd_fail(e == GL_OUT_OF_MEMORY ? RD_ERR_OUT_OF_MEMORY : RD_ERR_GL,
