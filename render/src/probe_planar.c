@@ -323,11 +323,10 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
      * glass out, as every other capture). A thin pane is blended over what the capture drew
      * behind it, last (rd_pass.panes_over): a straight ray through it from the eye's image sees
      * exactly that, where the pane's probe would show it from the pane's centre. Another planar
-     * mirror's capture belongs to the view's
-     * eye, not this one: such a mirror is drawn plain. A depth prepass, as the main view's,
-     * shades each texel once: sorted from the mirror's centre, the fixtures seen in it are not
-     * always drawn before the walls behind them, and chrome drawn with its probe is the
-     * dearest fragment the capture has. */
+     * mirror's capture belongs to the view's eye, not this one: such a mirror is drawn plain.
+     * A depth prepass, as the main view's, shades each texel once: sorted from the mirror's centre,
+     * the fixtures seen in it are not always drawn before the walls behind them, and chrome drawn
+     * with its probe is the dearest fragment the capture has. */
     float sample_tan = 1.0f / fmaxf(v->samples_per_tan, 1.0f);
     r = rd_draw_objects(ctx, s,
                         &(rd_pass){.view_proj = &vp[0][0],
