@@ -240,10 +240,56 @@ static void test_stand_in_reflects(void)
               lit[1]);
 }
 
+/* A strip light tilted under a shelf's edge, its centre in the shelf's plane (a mirror light's
+ * diffuser over its rectangle light): the shelf's underside is lit by the half of the rectangle
+ * below it, as the GPU and the tracer shade it by the clipped form factor, and the floor under
+ * the shelf gets that light back. Lowered by a centimetre, the light changes that little; a
+ * point light at the centre would light the underside only once the centre is below it. */
+static float shelf_bounce(float drop)
+{
+    ref_scene *s = ref_scene_create();
+    add_quad(s, 0.0f, 0.0f, 0.0f, 2.0f, 0);
+    float z = 0.5f;
+    float p[12] = {-1, -1, z, 1, -1, z, 1, 1, z, -1, 1, z};
+    float n[12] = {0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1};
+    uint32_t idx[6] = {0, 2, 1, 0, 3, 2};
+    ref_mesh_desc d = {.positions = p,
+                       .normals = n,
+                       .indices = idx,
+                       .vertex_count = 4,
+                       .index_count = 6,
+                       .material = {.diffuse = {0.8f, 0.8f, 0.8f}}};
+    CHECK(ref_scene_add_mesh(s, &d) == REF_OK);
+    rd_light l = {.type = RD_LIGHT_RECT,
+                  .position = {0.9f, 0.0f, z - drop},
+                  .direction = {-0.9701425f, 0.0f, -0.2425356f},
+                  .diffuse = {5.0f, 5.0f, 5.0f},
+                  .half_width = {0.0f, 0.3f, 0.0f},
+                  .half_height = {-0.0048507f, 0.0f, 0.0194029f}};
+    CHECK(ref_scene_add_light(s, &l) == REF_OK);
+    unsigned char lightmapped[2] = {1, 0};
+    ref_bake b;
+    ref_bake_desc bd = {.samples = 64, .threads = 2, .passes = 1, .lightmapped = lightmapped};
+    CHECK(ref_bake_run(s, &bd, &b) == REF_OK);
+    float v = floor_light(&b, 0.6f, 0.0f);
+    ref_bake_free(&b);
+    ref_scene_destroy(s);
+    return v;
+}
+
+static void test_rect_light_near_field(void)
+{
+    float level = shelf_bounce(0.0f), lowered = shelf_bounce(0.01f);
+    CHECK_MSG(lowered > 0.0f && level > 0.5f * lowered,
+              "floor under the shelf: light centre in the shelf's plane %.4f, 1 cm below %.4f",
+              level, lowered);
+}
+
 int main(void)
 {
     test_atlas_pack();
     test_contact_and_partial();
     test_stand_in_reflects();
+    test_rect_light_near_field();
     return check_report("test_ref_bake");
 }

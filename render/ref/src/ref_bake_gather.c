@@ -197,21 +197,26 @@ static int hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh, 
         const rd_light *l = &s->lights[i];
         float to_l[3], factor;
         rd_ref_light_incidence(l, p, ng, to_l, &factor);
+        /* A rectangle light by its clipped form factor, as the GPU's direct light and the tracer
+         * shade it (shade_ref.c): near it, its centre is no stand-in for it (a lamp's diffuser
+         * beside its strip light has the centre in its own plane, where N.L is 0). */
+        int rect = l->type == RD_LIGHT_RECT;
         float ndl = ref_dot(ng, to_l);
-        if (!(ndl > 0.0f) || !(factor > 0.0f))
+        float irradiance = rect ? rd_ref_rect_form_factor(p, ng, l) : factor * ndl;
+        if (!(irradiance > 0.0f) || (!rect && !(ndl > 0.0f)))
             continue;
         float tfar = INFINITY;
         if (l->type != RD_LIGHT_DIRECTIONAL) {
             float d[3] = {l->position[0] - org[0], l->position[1] - org[1],
                           l->position[2] - org[2]};
             tfar = sqrtf(ref_dot(d, d)) - 0.01f; /* a light set into a ceiling is not behind it */
-            if (!(tfar > 0.0f))
+            if (!(tfar > 0.0f) && !rect)
                 continue;
         }
-        if (occluded(s, org, to_l, tfar))
+        if (tfar > 0.0f && occluded(s, org, to_l, tfar))
             continue;
         for (int k = 0; k < 3; k++)
-            direct[k] += factor * l->diffuse[k] * ndl;
+            direct[k] += irradiance * l->diffuse[k];
     }
     /* The light arriving at the hit leaves it by the diffuse lobe and by the glossy one, as in
      * the path tracer (ref_path.c), and a reflective surface sends k_r of it on as a mirror
