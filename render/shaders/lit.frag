@@ -86,6 +86,9 @@ uniform float u_lod; // level of detail for the glossiness (0 for a mirror)
 uniform int u_blend; // 0 mix, 1 add, 2 fresnel
 uniform float u_transparency, u_ior, u_dispersion;
 uniform int u_thin; // a double-sided sheet: light passes straight through
+// 1: a thin pane blended over what a planar mirror's capture drew behind it (draw.c): the colour
+// leaves out what is seen through the pane, alpha is the weight the blend gives it.
+uniform int u_pane_over;
 #endif
 
 #ifdef GLAZE
@@ -627,6 +630,8 @@ void main()
                 break;
             }
         }
+        if (u_pane_over == 1)
+            refr = vec3(0.0);
         lit = mix(lit, refr, u_transparency);
     }
 #endif
@@ -646,6 +651,13 @@ void main()
     // A probe capture keeps the distance to what it saw for the "depth" lookup (reflect.glsl).
     frag_color = vec4(max(u_mat_emissive, lit),
                       u_store_distance > 0.0 ? length(v_world - u_eye) : 1.0); // eq. 7
+#ifdef HAS_REFLECTION
+    // The blend is linear in what the pane shows through it: that colour's weight.
+    if (u_pane_over == 1)
+        frag_color.a = dot(blend_reflection(u_blend, u_kr, u_mat_specular, vec3(u_transparency),
+                                            vec3(0.0), dot(N, V)),
+                           vec3(1.0 / 3.0));
+#endif
     // Emissive surfaces keep no highlight: the max of eq. 7 mostly hides it.
     frag_surface = vec4(oct_encode(N),
                         any(greaterThan(u_mat_emissive, vec3(0.0))) ? 0.0

@@ -353,16 +353,32 @@ static int outside_frustum(vec4 planes[6], const float sphere[4])
     return 0;
 }
 
+/* Whether object o is a thin pane (a double-sided sheet of glass: light passes straight
+ * through) that the pass blends over what lies behind it. From the eye of a planar mirror's
+ * capture the view behind a thin pane is the capture's own, drawn from the ray's true origin:
+ * the pane's probe, centred elsewhere, shows what lies far behind it through an opening (the
+ * window's exterior through the window) from the wrong place. */
+static int pane_over(const rd_pass *pass, const rd_object_desc *o)
+{
+    return pass->panes_over && pass->reflections && o->material.transparency > 0.0f &&
+           o->double_sided;
+}
+
 /* One walk over the sorted objects. depth_only: the depth prepass, the same programs and
- * the same culling with colour writes off, so the shaded walk's depths match exactly. */
+ * the same culling with colour writes off, so the shaded walk's depths match exactly.
+ * panes: the walk over the panes of pane_over alone, back to front; the other walks leave
+ * them out. */
 static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass,
                            const draw_item *items, vec4 planes[6], int *frame_uniforms_set,
-                           unsigned *light_masks, int depth_only, int fast_paths)
+                           unsigned *light_masks, int depth_only, int fast_paths, int panes)
 {
     int shadows = pass->shadows && rd_shadows_active(scene);
-    for (int i = 0; i < scene->object_count; i++) {
+    for (int n = 0; n < scene->object_count; n++) {
+        int i = panes ? scene->object_count - 1 - n : n;
         int index = items[i].index;
         const rd_object_desc *o = &scene->objects[index];
+        if (pane_over(pass, o) != panes)
+            continue;
         if (pass->exclude_key && rd_object_key(scene, index) == pass->exclude_key)
             continue;
         if (pass->exclude_traced && rd_self_bvh_holds(pass->exclude_traced, index))
@@ -478,8 +494,10 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                 glActiveTexture(GL_TEXTURE0);
                 glBindTexture(GL_TEXTURE_2D, t->name);
             }
-            if (probe)
+            if (probe) {
                 set_reflection_uniforms(p, scene, probe, o);
+                glUniform1i(p->u_pane_over, panes);
+            }
             if (variant & RD_LIT_GLAZE)
                 set_glaze_uniforms(p, scene, &o->material);
             if (variant & RD_LIT_SELF_TRACE)
@@ -555,13 +573,22 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
          * prepass costs the vertices twice and a rasterisation without shading. */
         static const GLenum none = GL_NONE, colour = GL_COLOR_ATTACHMENT0;
         glDrawBuffers(1, &none);
-        r = draw_list(ctx, scene, pass, items, planes, frame_uniforms_set, light_masks, 1, fast);
+        r = draw_list(ctx, scene, pass, items, planes, frame_uniforms_set, light_masks, 1, fast, 0);
         glDrawBuffers(1, &colour);
         glDepthFunc(GL_LEQUAL);
         glDepthMask(GL_FALSE);
     }
     if (r == RD_OK)
-        r = draw_list(ctx, scene, pass, items, planes, frame_uniforms_set, light_masks, 0, fast);
+        r = draw_list(ctx, scene, pass, items, planes, frame_uniforms_set, light_masks, 0, fast, 0);
+    if (r == RD_OK && pass->panes_over && pass->reflections) {
+        /* colour = pane + weight (alpha) x what is behind it (lit.frag, u_pane_over) */
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_ONE, GL_SRC_ALPHA);
+        glDepthFunc(GL_LEQUAL);
+        glDepthMask(GL_FALSE);
+        r = draw_list(ctx, scene, pass, items, planes, frame_uniforms_set, light_masks, 0, fast, 1);
+        glDisable(GL_BLEND);
+    }
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     if (pass->isotropic_textures)

@@ -25,6 +25,8 @@ typedef struct rd_pass {
     int sample_grid; /* the view's samples a pixel side (the lookups' lobe strata); 0 = 1 */
     int rect_lights_as_points; /* 1: unshadowed programs light with rectangle lights as point
                                   lights of their power (rd_view.live) */
+    int panes_over; /* 1: thin panes with their probes are blended over what was drawn behind
+                       them, last (a planar mirror's capture: draw.c, pane_over) */
 } rd_pass;
 
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);

@@ -146,6 +146,7 @@ static void locate_lit(rd_program *p)
     p->u_ior = glGetUniformLocation(id, "u_ior");
     p->u_dispersion = glGetUniformLocation(id, "u_dispersion");
     p->u_thin = glGetUniformLocation(id, "u_thin");
+    p->u_pane_over = glGetUniformLocation(id, "u_pane_over");
     p->u_probe_distance = glGetUniformLocation(id, "u_probe_distance");
     p->u_store_distance = glGetUniformLocation(id, "u_store_distance");
     p->u_planar = glGetUniformLocation(id, "u_planar");

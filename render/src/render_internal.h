@@ -60,7 +60,7 @@ typedef struct rd_program {
     int u_sh, u_sphere_map, u_view_rot;
     int u_lightmap, u_bake_from_lightmap;
     int u_probe, u_probe_centre, u_correction, u_proxy_min, u_proxy_max, u_proxy_radius, u_kr,
-        u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin;
+        u_lod, u_blend, u_transparency, u_ior, u_dispersion, u_thin, u_pane_over;
     int u_probe_distance, u_store_distance; /* the "depth" correction (reflect.glsl) */
     int u_planar, u_planar_view_proj;       /* a flat mirror's planar capture (probe_planar.c) */
     int u_probe_surface, u_surface_highlights, u_lobe_exponent, u_depth_steps;

@@ -154,6 +154,12 @@ static void test_contact_and_partial(void)
     float near_ao = floor_value(&b, 1.32f, 0.0f, 1), open_ao = floor_value(&e, 1.32f, 0.0f, 1);
     CHECK_MSG(near_ao < 0.8f && open_ao > 0.99f, "occlusion beside the block %.3f, open %.3f",
               near_ao, open_ao);
+    /* Under the block the floor sees only the block's inside: those texels take their
+     * neighbours' light, so a bilinear lookup beside the block does not read their darkness. */
+    float under = floor_light(&b, 1.05f, 0.0f), edge_in = floor_light(&b, 0.82f, 0.0f);
+    CHECK_MSG(under > 0.5f * open && edge_in > 0.5f * near,
+              "floor under the block %.4f, just inside its edge %.4f (beside %.4f, open %.4f)",
+              under, edge_in, near, open);
     ref_bake_free(&e);
     ref_scene_destroy(empty);
     CHECK(b.baked_texels == b.total_texels && b.total_texels > 1000);
@@ -192,9 +198,98 @@ static void test_contact_and_partial(void)
     ref_scene_destroy(s);
 }
 
+/* A glowing ceiling that stands in for a light (a lamp's shade, a window's exterior) brings the
+ * floor the light it reflects, as a ceiling of a faint glow would, and none of its own glow:
+ * that comes in through the light it stands for. (Both glow, so neither stores baked light.) */
+static void test_stand_in_reflects(void)
+{
+    float lit[2];
+    for (int stand_in = 0; stand_in < 2; stand_in++) {
+        ref_scene *s = ref_scene_create();
+        add_quad(s, 0.0f, 0.0f, 0.0f, 2.0f, 0);
+        float glow = stand_in ? 5.0f : 1e-6f;
+        float p[12] = {-2, -2, 2.6f, 2, -2, 2.6f, 2, 2, 2.6f, -2, 2, 2.6f};
+        float n[12] = {0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1};
+        uint32_t idx[6] = {0, 2, 1, 0, 3, 2};
+        ref_mesh_desc d = {.positions = p,
+                           .normals = n,
+                           .indices = idx,
+                           .vertex_count = 4,
+                           .index_count = 6,
+                           .material = {.ambient = {0.8f, 0.8f, 0.8f},
+                                        .diffuse = {0.8f, 0.8f, 0.8f},
+                                        .emissive = {glow, glow, glow}},
+                           .background = 1,
+                           .light_stand_in = stand_in};
+        CHECK(ref_scene_add_mesh(s, &d) == REF_OK);
+        rd_light l = {.type = RD_LIGHT_POINT,
+                      .position = {0.0f, 0.0f, 0.3f},
+                      .diffuse = {3.0f, 3.0f, 3.0f},
+                      .attenuation = {1.0f, 0.0f, 0.0f}};
+        CHECK(ref_scene_add_light(s, &l) == REF_OK);
+        unsigned char lightmapped[2] = {1, 0};
+        ref_bake b;
+        ref_bake_desc bd = {.samples = 64, .threads = 2, .lightmapped = lightmapped};
+        CHECK(ref_bake_run(s, &bd, &b) == REF_OK);
+        lit[stand_in] = floor_light(&b, 0.5f, 0.5f);
+        ref_bake_free(&b);
+        ref_scene_destroy(s);
+    }
+    CHECK_MSG(lit[0] > 0.0f && fabsf(lit[1] - lit[0]) < 0.02f * lit[0],
+              "floor under a faintly glowing ceiling %.4f, under a glowing stand-in %.4f", lit[0],
+              lit[1]);
+}
+
+/* A strip light tilted under a shelf's edge, its centre in the shelf's plane (a mirror light's
+ * diffuser over its rectangle light): the shelf's underside is lit by the half of the rectangle
+ * below it, as the GPU and the tracer shade it by the clipped form factor, and the floor under
+ * the shelf gets that light back. Lowered by a centimetre, the light changes that little; a
+ * point light at the centre would light the underside only once the centre is below it. */
+static float shelf_bounce(float drop)
+{
+    ref_scene *s = ref_scene_create();
+    add_quad(s, 0.0f, 0.0f, 0.0f, 2.0f, 0);
+    float z = 0.5f;
+    float p[12] = {-1, -1, z, 1, -1, z, 1, 1, z, -1, 1, z};
+    float n[12] = {0, 0, -1, 0, 0, -1, 0, 0, -1, 0, 0, -1};
+    uint32_t idx[6] = {0, 2, 1, 0, 3, 2};
+    ref_mesh_desc d = {.positions = p,
+                       .normals = n,
+                       .indices = idx,
+                       .vertex_count = 4,
+                       .index_count = 6,
+                       .material = {.diffuse = {0.8f, 0.8f, 0.8f}}};
+    CHECK(ref_scene_add_mesh(s, &d) == REF_OK);
+    rd_light l = {.type = RD_LIGHT_RECT,
+                  .position = {0.9f, 0.0f, z - drop},
+                  .direction = {-0.9701425f, 0.0f, -0.2425356f},
+                  .diffuse = {5.0f, 5.0f, 5.0f},
+                  .half_width = {0.0f, 0.3f, 0.0f},
+                  .half_height = {-0.0048507f, 0.0f, 0.0194029f}};
+    CHECK(ref_scene_add_light(s, &l) == REF_OK);
+    unsigned char lightmapped[2] = {1, 0};
+    ref_bake b;
+    ref_bake_desc bd = {.samples = 64, .threads = 2, .passes = 1, .lightmapped = lightmapped};
+    CHECK(ref_bake_run(s, &bd, &b) == REF_OK);
+    float v = floor_light(&b, 0.6f, 0.0f);
+    ref_bake_free(&b);
+    ref_scene_destroy(s);
+    return v;
+}
+
+static void test_rect_light_near_field(void)
+{
+    float level = shelf_bounce(0.0f), lowered = shelf_bounce(0.01f);
+    CHECK_MSG(lowered > 0.0f && level > 0.5f * lowered,
+              "floor under the shelf: light centre in the shelf's plane %.4f, 1 cm below %.4f",
+              level, lowered);
+}
+
 int main(void)
 {
     test_atlas_pack();
     test_contact_and_partial();
+    test_stand_in_reflects();
+    test_rect_light_near_field();
     return check_report("test_ref_bake");
 }

@@ -38,7 +38,7 @@ const app_bake_stats *app_bake_last_stats(void)
 }
 
 /* Bump when the bake's meaning or the file's layout changes: old files are then ignored. */
-#define BAKE_FORMAT 4
+#define BAKE_FORMAT 6
 static const char MAGIC[8] = "TSBAKE2";
 
 /* FNV-1a, 64 bits (Fowler, Noll and Vo). */

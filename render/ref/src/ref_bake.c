@@ -214,7 +214,7 @@ static ref_result bake(ref_scene *s, const ref_bake_desc *d, ref_bake *b)
     if (r == REF_OK && d->previous)
         r = check_previous(d, b);
     float *cur = NULL, *next = NULL;
-    unsigned char *recomputed = NULL, *changed = NULL;
+    unsigned char *recomputed = NULL, *changed = NULL, *buried = NULL;
     bake_point *pts = NULL;
     int point_count = 0;
     if (r == REF_OK) {
@@ -222,7 +222,8 @@ static ref_result bake(ref_scene *s, const ref_bake_desc *d, ref_bake *b)
         next = calloc(4 * (size_t)l.slots + 4, sizeof *next);
         recomputed = calloc((size_t)l.slots + 1, 1);
         changed = calloc((size_t)s->mesh_count + 1, 1);
-        if (!cur || !next || !recomputed || !changed)
+        buried = calloc((size_t)l.slots + 1, 1);
+        if (!cur || !next || !recomputed || !changed || !buried)
             r = ref_fail(REF_ERR_OUT_OF_MEMORY, "ref_bake: out of memory");
     }
     if (r == REF_OK && d->previous) {
@@ -243,6 +244,7 @@ static ref_result bake(ref_scene *s, const ref_bake_desc *d, ref_bake *b)
                            .layout = &l,
                            .points = pts,
                            .point_count = point_count,
+                           .buried = buried,
                            .samples = samples,
                            .ao_distance = ao,
                            .threads = d->threads,
@@ -260,7 +262,7 @@ static ref_result bake(ref_scene *s, const ref_bake_desc *d, ref_bake *b)
         r = ref_bake_gather(&job);
         if (r != REF_OK)
             break;
-        ref_bake_filter_atlas(b, next);
+        ref_bake_filter_atlas(b, next, buried);
         /* Texels that were not computed keep what they had (filtered once already). */
         for (int i = 0; i < l.texels; i++)
             if (b->cover[i] && !recomputed[i])
@@ -306,6 +308,7 @@ static ref_result bake(ref_scene *s, const ref_bake_desc *d, ref_bake *b)
     free(next);
     free(recomputed);
     free(changed);
+    free(buried);
     free(pts);
     layout_free(&l, s->mesh_count);
     return r;

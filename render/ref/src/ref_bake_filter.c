@@ -3,7 +3,8 @@
  * Illumination Filtering"): a 5x5 B3-spline kernel at steps 1, 2, 4, 8, confined to the texels of
  * one chart (one plane: the normal guide is the chart, the position guide the kernel's reach),
  * and stopped by the occlusion, so a contact shadow's edge stays sharp while flat light is
- * smoothed. Then the gutter and the texels off the polygon take their covered neighbours' mean,
+ * smoothed. Then the gutter, the texels off the polygon and those buried in a fixture take their
+ * covered neighbours' mean,
  * so bilinear lookups at a polygon's edge see no black. The vertices: a few rounds of averaging
  * with the neighbours across each edge, weighted by how alike the normals are. */
 #include "ref_bake_internal.h"
@@ -17,15 +18,22 @@ static const float B3[5] = {1.0f / 16, 1.0f / 4, 3.0f / 8, 1.0f / 4, 1.0f / 16};
 #define SIGMA_OCCLUSION 0.08f
 #define SIGMA_RELATIVE_LIGHT 0.6f
 
-static void atrous_chart(const ref_bake *b, const ref_bake_chart *c, const float *in, float *out,
-                         int step)
+/* Whether texel i holds light of its surface: covered by the chart's polygon and not buried
+ * in a fixture (ref_bake_gather.c); the others are filled from their neighbours. */
+static int holds_light(const ref_bake *b, const unsigned char *buried, size_t i)
+{
+    return b->cover[i] && !(buried && buried[i]);
+}
+
+static void atrous_chart(const ref_bake *b, const unsigned char *buried, const ref_bake_chart *c,
+                         const float *in, float *out, int step)
 {
     int W = b->atlas_width;
     for (int y = c->y; y < c->y + c->height; y++)
         for (int x = c->x; x < c->x + c->width; x++) {
             size_t i = (size_t)y * (size_t)W + (size_t)x;
             const float *centre = in + 4 * i;
-            if (!b->cover[i]) {
+            if (!holds_light(b, buried, i)) {
                 memcpy(out + 4 * i, centre, 4 * sizeof(float));
                 continue;
             }
@@ -37,7 +45,7 @@ static void atrous_chart(const ref_bake *b, const ref_bake_chart *c, const float
                     if (xx < c->x || yy < c->y || xx >= c->x + c->width || yy >= c->y + c->height)
                         continue;
                     size_t j = (size_t)yy * (size_t)W + (size_t)xx;
-                    if (!b->cover[j])
+                    if (!holds_light(b, buried, j))
                         continue;
                     const float *q = in + 4 * j;
                     float ql = 0.2126f * q[0] + 0.7152f * q[1] + 0.0722f * q[2];
@@ -55,7 +63,8 @@ static void atrous_chart(const ref_bake *b, const ref_bake_chart *c, const float
 
 /* Texels off the polygon (and the gutter) take the mean of their filled 8-neighbours, ring by
  * ring; what no ring reaches takes the chart's mean. */
-static void dilate_chart(const ref_bake *b, const ref_bake_chart *c, float *v, unsigned char *fill)
+static void dilate_chart(const ref_bake *b, const unsigned char *buried, const ref_bake_chart *c,
+                         float *v, unsigned char *fill)
 {
     int W = b->atlas_width;
     double mean[4] = {0, 0, 0, 0};
@@ -63,7 +72,7 @@ static void dilate_chart(const ref_bake *b, const ref_bake_chart *c, float *v, u
     for (int y = c->y; y < c->y + c->height; y++)
         for (int x = c->x; x < c->x + c->width; x++) {
             size_t i = (size_t)y * (size_t)W + (size_t)x;
-            fill[i] = b->cover[i];
+            fill[i] = (unsigned char)holds_light(b, buried, i);
             if (fill[i]) {
                 covered++;
                 for (int k = 0; k < 4; k++)
@@ -107,7 +116,7 @@ static void dilate_chart(const ref_bake *b, const ref_bake_chart *c, float *v, u
         }
 }
 
-void ref_bake_filter_atlas(ref_bake *b, float *values)
+void ref_bake_filter_atlas(ref_bake *b, float *values, const unsigned char *buried)
 {
     size_t texels = (size_t)b->atlas_width * (size_t)b->atlas_height;
     if (!texels || !b->chart_count)
@@ -123,13 +132,13 @@ void ref_bake_filter_atlas(ref_bake *b, float *values)
         const ref_bake_chart *c = &b->charts[ci];
         float *src = values, *dst = tmp;
         for (int step = 1; step <= 8; step *= 2) {
-            atrous_chart(b, c, src, dst, step);
+            atrous_chart(b, buried, c, src, dst, step);
             float *t = src;
             src = dst;
             dst = t;
         }
         /* Four steps: the result is back in values. */
-        dilate_chart(b, c, values, fill);
+        dilate_chart(b, buried, c, values, fill);
     }
     free(tmp);
     free(fill);

@@ -160,24 +160,24 @@ static void albedo_of(const ref_scene *s, const ref_mesh *m, float scale[3])
     }
 }
 
-/* Radiance leaving hit (mesh m, triangle prim, barycentrics) toward the gathering point. */
-static void hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh, const float dir[3],
-                         float out[3])
+/* Radiance leaving hit (mesh m, triangle prim, barycentrics) toward the gathering point; 1 when
+ * the ray met the back of a closed mesh (the point is inside it or under it). */
+static int hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh, const float dir[3],
+                        float out[3])
 {
     const ref_scene *s = job->scene;
     const ref_mesh *m = &s->meshes[rh->hit.geomID];
-    if (m->light_stand_in) {
-        /* A window's exterior panel or a lamp's glowing shape: its light reaches the room
-         * through the lights of the list (the window's rectangle light and sun, the lamp's
-         * light), which the GPU draws as direct light. */
-        out[0] = out[1] = out[2] = 0.0f;
-        return;
-    }
+    /* A window's exterior panel or a lamp's glowing shape: its glow reaches the room through
+     * the lights of the list (the window's rectangle light and sun, the lamp's light), which the
+     * GPU draws as direct light, so it brings back only the light it reflects, as the path
+     * tracer's paths that reach it after a lobe sample do (ref_path.c): a lamp's diffuser lit by
+     * its own rectangle light a centimetre away throws much of it on the wall beside it. */
+    int stand_in = m->light_stand_in;
     const float *tn = m->tri_normals + 3 * (size_t)rh->hit.primID;
     float ng_dot = ref_dot(tn, dir);
     if (ng_dot >= 0.0f && !m->double_sided) {
         out[0] = out[1] = out[2] = 0.0f; /* inside a closed mesh */
-        return;
+        return 1;
     }
     float len = sqrtf(ref_dot(tn, tn));
     float flip = ng_dot < 0.0f ? 1.0f : -1.0f;
@@ -197,21 +197,26 @@ static void hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh,
         const rd_light *l = &s->lights[i];
         float to_l[3], factor;
         rd_ref_light_incidence(l, p, ng, to_l, &factor);
+        /* A rectangle light by its clipped form factor, as the GPU's direct light and the tracer
+         * shade it (shade_ref.c): near it, its centre is no stand-in for it (a lamp's diffuser
+         * beside its strip light has the centre in its own plane, where N.L is 0). */
+        int rect = l->type == RD_LIGHT_RECT;
         float ndl = ref_dot(ng, to_l);
-        if (!(ndl > 0.0f) || !(factor > 0.0f))
+        float irradiance = rect ? rd_ref_rect_form_factor(p, ng, l) : factor * ndl;
+        if (!(irradiance > 0.0f) || (!rect && !(ndl > 0.0f)))
             continue;
         float tfar = INFINITY;
         if (l->type != RD_LIGHT_DIRECTIONAL) {
             float d[3] = {l->position[0] - org[0], l->position[1] - org[1],
                           l->position[2] - org[2]};
             tfar = sqrtf(ref_dot(d, d)) - 0.01f; /* a light set into a ceiling is not behind it */
-            if (!(tfar > 0.0f))
+            if (!(tfar > 0.0f) && !rect)
                 continue;
         }
-        if (occluded(s, org, to_l, tfar))
+        if (tfar > 0.0f && occluded(s, org, to_l, tfar))
             continue;
         for (int k = 0; k < 3; k++)
-            direct[k] += factor * l->diffuse[k] * ndl;
+            direct[k] += irradiance * l->diffuse[k];
     }
     /* The light arriving at the hit leaves it by the diffuse lobe and by the glossy one, as in
      * the path tracer (ref_path.c), and a reflective surface sends k_r of it on as a mirror
@@ -229,8 +234,10 @@ static void hit_radiance(const bake_gather_job *job, const struct RTCRayHit *rh,
     for (int k = 0; k < 3; k++) {
         float bounce = albedo[k] * mat->ambient[k] + fmaxf(mat->specular[k], 0.0f) * glossy;
         float lit = albedo[k] * mat->diffuse[k] * direct[k] + bounce * prev[k];
-        out[k] = fmaxf(mat->emissive[k], (1.0f - kr) * lit + kr * (prev[k] + direct[k]));
+        float reflected = (1.0f - kr) * lit + kr * (prev[k] + direct[k]);
+        out[k] = stand_in ? reflected : fmaxf(mat->emissive[k], reflected);
     }
+    return 0;
 }
 
 static void gather_point(const bake_gather_job *job, const bake_point *pt, long long *rays)
@@ -247,7 +254,7 @@ static void gather_point(const bake_gather_job *job, const bake_point *pt, long 
     float org[3] = {pt->p[0] + lift * pt->n[0], pt->p[1] + lift * pt->n[1],
                     pt->p[2] + lift * pt->n[2]};
     float sum[3] = {0.0f, 0.0f, 0.0f};
-    int near_hits = 0;
+    int near_hits = 0, back_hits = 0;
     int n = job->samples;
     bake_ctx c;
     for (int i = 0; i < n; i++) {
@@ -275,7 +282,7 @@ static void gather_point(const bake_gather_job *job, const bake_point *pt, long 
         if (rh.ray.tfar < job->ao_distance)
             near_hits++;
         float l[3];
-        hit_radiance(job, &rh, dir, l);
+        back_hits += hit_radiance(job, &rh, dir, l);
         *rays += s->light_count;
         for (int k = 0; k < 3; k++)
             sum[k] += l[k];
@@ -284,6 +291,12 @@ static void gather_point(const bake_gather_job *job, const bake_point *pt, long 
     for (int k = 0; k < 3; k++)
         out[k] = n > 0 ? sum[k] / (float)n : 0.0f;
     out[3] = n > 0 ? 1.0f - (float)near_hits / (float)n : 1.0f;
+    /* A texel whose centre a fixture covers (a wall behind a mirror or a cabinet) sees mostly
+     * that fixture's inside. Its darkness is no light of the surface: bilinear lookups beside
+     * the fixture would carry it onto the visible texels next to it (a strip of wall between a
+     * mirror and the lamp over it), so the filter fills it from its neighbours instead. */
+    if (job->buried)
+        job->buried[pt->slot] = (unsigned char)(2 * back_hits > n);
 }
 
 typedef struct worker {

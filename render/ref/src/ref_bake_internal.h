@@ -35,8 +35,9 @@ typedef struct bake_gather_job {
     const bake_layout *layout;
     const bake_point *points;
     int point_count;
-    const float *prev; /* the stored light the hits look up (4 per slot) */
-    float *out;        /* written at the points' slots */
+    const float *prev;     /* the stored light the hits look up (4 per slot) */
+    float *out;            /* written at the points' slots */
+    unsigned char *buried; /* per slot: 1 where the point lies inside a closed mesh */
     int samples;
     float ao_distance;
     int pass;
@@ -53,7 +54,7 @@ ref_result ref_bake_gather(bake_gather_job *job);
 /* Noise filters (ref_bake_filter.c): an edge-avoiding a-trous filter of the atlas inside each
  * chart, then the gutter and uncovered texels filled from covered neighbours; a smoothing of the
  * per-vertex values across a mesh's edges between vertices of like normals. */
-void ref_bake_filter_atlas(ref_bake *b, float *values);
+void ref_bake_filter_atlas(ref_bake *b, float *values, const unsigned char *buried);
 void ref_bake_filter_vertices(const ref_scene *s, const ref_bake *b, const bake_layout *layout,
                               float *values, const unsigned char *changed);
 
