@@ -26,8 +26,8 @@ uniform vec3 u_light_diffuse[MAX_LIGHTS];   // I_d
 uniform vec3 u_light_specular[MAX_LIGHTS];  // I_s
 uniform vec3 u_light_attenuation[MAX_LIGHTS];
 uniform vec2 u_light_spot[MAX_LIGHTS]; // cos(inner), cos(outer)
-// The main loop's lights by two lists: point and spot lights, and the rest (directional, and
-// rectangles as points in live frames); rectangle lights (type 3) have their own loop below.
+// The main loop's lights by two lists: point and spot lights (and rectangles as points in live
+// frames), and the rest (directional); rectangle lights (type 3) have their own loop below.
 uniform int u_local_count;
 uniform int u_local_index[MAX_LIGHTS];
 uniform int u_other_count;
@@ -133,7 +133,10 @@ float spot_factor(float cos_angle, vec2 inner_outer)
 // Point or spot light i as seen from x: its unit direction L and the factor of its distance
 // attenuation and spot cone; n stands in for L at the light's own position. The main loop's
 // point and spot lights take this alone: llvmpipe runs every side of a branch on the type, so
-// light_towards' other cases would cost each of them.
+// light_towards' other cases would cost each of them. A rectangle as a point light of its
+// power (4, a live frame's main loop) comes with the attenuation (0, 0, pi / A) of its area A
+// (draw.c), so k is A / (pi d^2), and turns it into area_light.glsl's rect_solid_angle / pi,
+// A cos / (pi d^2) at most 2, by its emitting cosine.
 float local_light_towards(int i, vec3 x, vec3 n, out vec3 L)
 {
     vec3 d = u_light_position[i] - x;
@@ -141,8 +144,11 @@ float local_light_towards(int i, vec3 x, vec3 n, out vec3 L)
     L = dist > 0.0 ? d / dist : n;
     vec3 a = u_light_attenuation[i];
     float k = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-4);
+    float cos_out = dot(-L, u_light_direction[i]);
     if (u_light_type[i] == 1)
-        k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
+        k *= spot_factor(cos_out, u_light_spot[i]);
+    else if (u_light_type[i] == 4)
+        k = min(k * max(cos_out, 0.0), 2.0);
     return k;
 }
 
@@ -160,7 +166,7 @@ float light_towards(int i, vec3 x, vec3 n, out vec3 L)
     float k = local_light_towards(i, x, n, L);
 #ifdef AREA_LIGHTS
     // A rectangle as a point light of its power: the lookups of probe captures (3), and the
-    // main loop of a live view's moving frames (4, rd_view.live), which skip its own loop.
+    // lookups of a live view's moving frames (4, rd_view.live), which skip its own loop.
     if (u_light_type[i] >= 3)
         return rect_solid_angle(x, u_light_position[i], u_light_direction[i], u_light_half_width[i],
                                 u_light_half_height[i]) / 3.14159265;

@@ -21,8 +21,24 @@
 #define PLANAR_UNIT 15
 
 /* lit.frag's light type of a rectangle light in the main loop as a point light of its power
- * (rd_pass.rect_lights_as_points): its own loop, the clipped form factor, is left out. */
+ * (rd_pass.rect_lights_as_points): its own loop, the clipped form factor, is left out. It joins
+ * the point and spot lights' loop with the attenuation of a point of its power (rect_as_point). */
 #define LIGHT_RECT_AS_POINT 4
+
+/* A rectangle light's attenuation as a point light of its power: the solid angle of area A at
+ * distance d is A cos / d^2, so its irradiance factor over pi is A / (pi d^2) before lit.frag's
+ * local_light_towards applies the cosine. A rectangle of no area lights nothing. */
+static void rect_as_point_attenuation(const rd_light *l, float att[3])
+{
+    float uu = l->half_width[0] * l->half_width[0] + l->half_width[1] * l->half_width[1] +
+               l->half_width[2] * l->half_width[2];
+    float vv = l->half_height[0] * l->half_height[0] + l->half_height[1] * l->half_height[1] +
+               l->half_height[2] * l->half_height[2];
+    float area = 4.0f * sqrtf(uu * vv);
+    att[0] = area > 0.0f ? 0.0f : 1e30f;
+    att[1] = 0.0f;
+    att[2] = area > 0.0f ? (float)GLM_PI / area : 0.0f;
+}
 
 /* The lights of `mask` (bit i: scene light i), packed in scene order: the light loop of
  * lit.frag runs over exactly these, and the rectangle loop over the rectangle lights, or
@@ -50,9 +66,12 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
         spot[n][1] = l->spot_outer_cos;
         memcpy(half_w[n], l->half_width, sizeof half_w[n]);
         memcpy(half_h[n], l->half_height, sizeof half_h[n]);
-        if (l->type == RD_LIGHT_RECT && rect_as_points)
+        int as_point = l->type == RD_LIGHT_RECT && rect_as_points;
+        if (as_point) {
             type[n] = LIGHT_RECT_AS_POINT;
-        if (l->type == RD_LIGHT_POINT || l->type == RD_LIGHT_SPOT)
+            rect_as_point_attenuation(l, att[n]);
+        }
+        if (l->type == RD_LIGHT_POINT || l->type == RD_LIGHT_SPOT || as_point)
             local_index[locals++] = n;
         else if (l->type == RD_LIGHT_RECT && !rect_as_points)
             rect_index[rects++] = n;
