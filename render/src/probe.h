@@ -15,11 +15,13 @@ void rd_probes_destroy(rd_scene *s);
 
 /* Captures and filters what this frame's policies ask for, before the main pass. The eye,
  * the main view's projection scale (pixels per unit of tan) and the supersampling decide the
- * "auto" resolutions; `planar` (probe_planar.h) the planar mirrors'. */
+ * "auto" resolutions; `planar` (probe_planar.h) the planar mirrors'. hold_sizes (a live view's
+ * moving frame, rd_view.live): a probe that has a size keeps it. */
 struct rd_planar_view;
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
                            const float eye[3], float pixels_per_tan, int supersample,
-                           const struct rd_planar_view *planar, rd_frame_stats *stats);
+                           const struct rd_planar_view *planar, int hold_sizes,
+                           rd_frame_stats *stats);
 
 /* The effective settings of object i's material and probe after the scene's defaults. */
 /* Under a scene-wide "depth" correction, materials with k_r and g both below these take the

@@ -149,7 +149,8 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
                              pixels_per_tan * (float)shaded,
                              adaptive(v, samples) ? 1.0f : 0.0f};
     if (r == RD_OK)
-        r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &planar, &stats);
+        r = rd_probes_update(ctx, scene, vp, v->eye, pixels_per_tan, samples, &planar, v->live,
+                             &stats);
     if (r == RD_OK)
         r = rd_sphere_maps_update(ctx, scene, view_rot);
     if (r == RD_OK)

@@ -2,7 +2,8 @@
  *  - probes refreshed on change within a face budget: an orbiting camera captures nothing, a
  *    moved object makes the probes re-capture at most the budget a frame until they are fresh,
  *    the reflection then shows the object where it now is, exactly as a scene built with it
- *    there, and a changed screen size within the hysteresis band keeps the probe's size;
+ *    there, a changed screen size within the hysteresis band keeps the probe's size, and a
+ *    live view's moving frame keeps it beyond the band;
  *  - the fast paths (depth prepass, the lean box-corrected reflecting variant) draw what the
  *    general path draws (TESSERA_NO_FAST_PATHS=1), to within one 8-bit step on a few pixels.
  * The backend comes from TESSERA_GL. */
@@ -141,6 +142,21 @@ static void test_on_change_probes(rd_context *ctx)
     CHECK(rd_render(ctx, h, &big) == RD_OK);
     CHECK_MSG(rd_last_frame_stats(ctx).faces_captured == 6,
               "zoomed out beyond the band: %d faces, expected a new capture",
+              rd_last_frame_stats(ctx).faces_captured);
+    /* Zoomed in beyond the band (a wanted 200 or more), a moving live frame keeps the size;
+     * the still frame that follows takes the new one. */
+    big = orbit_view(64, 1.2f);
+    big.width = 640;
+    big.height = 480;
+    big.live = 1;
+    CHECK(rd_render(ctx, h, &big) == RD_OK);
+    CHECK_MSG(rd_last_frame_stats(ctx).faces_captured == 0,
+              "live frame beyond the band: %d faces captured, expected the size kept",
+              rd_last_frame_stats(ctx).faces_captured);
+    big.live = 0;
+    CHECK(rd_render(ctx, h, &big) == RD_OK);
+    CHECK_MSG(rd_last_frame_stats(ctx).faces_captured == 6,
+              "still frame after the live one: %d faces, expected a new capture",
               rd_last_frame_stats(ctx).faces_captured);
     rd_scene_destroy(h);
 
