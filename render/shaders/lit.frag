@@ -482,19 +482,29 @@ void main()
 #ifdef HAS_SHADOWS
     shadow_begin(N); // this sample's soft-shadow disk, shared by the lights (shadow.glsl)
 #endif
+    // A fixed-light program (programs.c, rd_lit_program_fixed) knows the lists' lengths: its
+    // loops unroll, and each light's uniforms are read once, not per pixel.
+#ifdef FIXED_LOCAL_LIGHTS
+    for (int j = 0; j < FIXED_LOCAL_LIGHTS; j++) {
+#else
     for (int j = 0; j < u_local_count; j++) {
+#endif
         int i = u_local_index[j];
         vec3 L;
         float k = local_light_towards(i, v_world, N, L);
         lit += light_contribution(i, k, L, N, V, c_d);
     }
+#ifdef FIXED_OTHER_LIGHTS
+    for (int j = 0; j < FIXED_OTHER_LIGHTS; j++) {
+#else
     for (int j = 0; j < u_other_count; j++) {
+#endif
         int i = u_other_index[j];
         vec3 L;
         float k = light_towards(i, v_world, N, L);
         lit += light_contribution(i, k, L, N, V, c_d);
     }
-#ifdef AREA_LIGHTS
+#if defined(AREA_LIGHTS) && !defined(FIXED_LOCAL_LIGHTS)
     // Rectangle lights (area_light.glsl), by a list of their own: a loop bound every pixel
     // shares, where a branch on the light's type would make llvmpipe run this for every light.
     for (int r = 0; r < u_rect_count; r++) {
