@@ -588,11 +588,15 @@ void main()
         t_max = t_first;
     }
 #endif
+#ifndef NO_LAMP_LOOKUPS
+    // A fixed-light program of an object whose probe kept its lamps has no lookup: llvmpipe
+    // would run its shading for every pixel behind the uniform branch.
     if (u_emitter_count > 0) {
         vec3 lamp;
         if (emitter_reflection(v_world, r_seen, t_max, lamp))
             refl = lamp;
     }
+#endif
 #endif
 #ifndef BOX_OPAQUE_REFLECTION
     if (u_transparency > 0.0) {
@@ -616,8 +620,10 @@ void main()
             if (self_reflection(v_world, ray, t_seen, own))
                 seen = own;
 #endif
+#ifndef NO_LAMP_LOOKUPS
             if (u_emitter_count > 0 && emitter_reflection(v_world, ray, t_seen, lamp))
                 seen = lamp; // a lamp seen through the pane, as in the reflection above
+#endif
             refr[ch] = seen[ch];
             if (u_dispersion <= 0.0) {
                 refr = seen;

@@ -485,8 +485,10 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
          * leaving the lights out of an object's list that cannot reach it (lights_reaching),
          * and the same picture, as those add exactly zero. */
         int fixed = fast_paths && rect_as_points && !depth_only;
-        const rd_program *p = fixed ? rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others)
-                                    : rd_lit_program(ctx, variant);
+        int lamps = probe && probe->leaves_emitters && scene->emitter_count > 0;
+        const rd_program *p =
+            fixed ? rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others, lamps)
+                  : rd_lit_program(ctx, variant);
         if (!p)
             return RD_ERR_SHADER;
         /* By program name: a fixed-light program may have been made anew in its slot. */

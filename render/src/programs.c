@@ -255,12 +255,13 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
 }
 
 const rd_program *rd_lit_program_fixed(rd_context *ctx, int variant, int local_lights,
-                                       int other_lights)
+                                       int other_lights, int lamp_lookups)
 {
     struct rd_fixed_lit *slots = ctx->lit_fixed;
     for (int i = 0; i < RD_LIT_FIXED_SLOTS; i++)
         if (slots[i].program.id && slots[i].variant == variant &&
-            slots[i].local_lights == local_lights && slots[i].other_lights == other_lights)
+            slots[i].local_lights == local_lights && slots[i].other_lights == other_lights &&
+            slots[i].lamp_lookups == lamp_lookups)
             return &slots[i].program;
     /* A free slot, or the next in turn: a scene's live frames use a handful. */
     int slot = 0;
@@ -272,14 +273,16 @@ const rd_program *rd_lit_program_fixed(rd_context *ctx, int variant, int local_l
         glDeleteProgram(slots[slot].program.id);
     }
     memset(&slots[slot], 0, sizeof slots[slot]);
-    char extra[96];
-    snprintf(extra, sizeof extra, "#define FIXED_LOCAL_LIGHTS %d\n#define FIXED_OTHER_LIGHTS %d\n",
-             local_lights, other_lights);
+    char extra[128];
+    snprintf(extra, sizeof extra,
+             "#define FIXED_LOCAL_LIGHTS %d\n#define FIXED_OTHER_LIGHTS %d\n%s", local_lights,
+             other_lights, lamp_lookups ? "" : "#define NO_LAMP_LOOKUPS 1\n");
     if (!make_lit(&slots[slot].program, variant, extra))
         return NULL;
     slots[slot].variant = variant;
     slots[slot].local_lights = local_lights;
     slots[slot].other_lights = other_lights;
+    slots[slot].lamp_lookups = lamp_lookups;
     return &slots[slot].program;
 }
 

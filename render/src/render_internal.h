@@ -129,7 +129,7 @@ struct rd_context {
     rd_program lit[RD_LIT_VARIANTS]; /* by RD_LIT_* bits */
     /* Lit programs whose light loops run a fixed number of lights (rd_lit_program_fixed). */
     struct rd_fixed_lit {
-        int variant, local_lights, other_lights;
+        int variant, local_lights, other_lights, lamp_lookups;
         rd_program program;
     } lit_fixed[RD_LIT_FIXED_SLOTS];
     int lit_fixed_next; /* the slot a new one takes when all are in use */
@@ -186,9 +186,10 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant);
  * and rectangle-as-point lights and other_lights directional ones, as set_light_uniforms
  * (draw.c) packs them, and no rectangle loop: loops of a bound known when the shader is
  * compiled are unrolled, and llvmpipe then reads each light's uniforms once for all pixels
- * instead of gathering them pixel by pixel. NULL on failure. */
+ * instead of gathering them pixel by pixel. lamp_lookups 0: no lookup of lamps in reflections
+ * (emitters.c; the object's probe kept them). NULL on failure. */
 const rd_program *rd_lit_program_fixed(rd_context *ctx, int variant, int local_lights,
-                                       int other_lights);
+                                       int other_lights, int lamp_lookups);
 /* The tone map program for s samples per side, display or linear output; NULL on failure. */
 const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear);
 /* Adaptive supersampling's programs (renderer_adaptive.c): the resolve of a once-per-pixel
