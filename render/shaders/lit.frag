@@ -26,8 +26,8 @@ uniform vec3 u_light_diffuse[MAX_LIGHTS];   // I_d
 uniform vec3 u_light_specular[MAX_LIGHTS];  // I_s
 uniform vec3 u_light_attenuation[MAX_LIGHTS];
 uniform vec2 u_light_spot[MAX_LIGHTS]; // cos(inner), cos(outer)
-// The main loop's lights by two lists: point and spot lights, and the rest (directional, and
-// rectangles as points in live frames); rectangle lights (type 3) have their own loop below.
+// The main loop's lights by two lists: point and spot lights (and rectangles as points in live
+// frames), and the rest (directional); rectangle lights (type 3) have their own loop below.
 uniform int u_local_count;
 uniform int u_local_index[MAX_LIGHTS];
 uniform int u_other_count;
@@ -136,7 +136,10 @@ float spot_factor(float cos_angle, vec2 inner_outer)
 // Point or spot light i as seen from x: its unit direction L and the factor of its distance
 // attenuation and spot cone; n stands in for L at the light's own position. The main loop's
 // point and spot lights take this alone: llvmpipe runs every side of a branch on the type, so
-// light_towards' other cases would cost each of them.
+// light_towards' other cases would cost each of them. A rectangle as a point light of its
+// power (4, a live frame's main loop) comes with the attenuation (0, 0, pi / A) of its area A
+// (draw.c), so k is A / (pi d^2), and turns it into area_light.glsl's rect_solid_angle / pi,
+// A cos / (pi d^2) at most 2, by its emitting cosine.
 float local_light_towards(int i, vec3 x, vec3 n, out vec3 L)
 {
     vec3 d = u_light_position[i] - x;
@@ -144,8 +147,11 @@ float local_light_towards(int i, vec3 x, vec3 n, out vec3 L)
     L = dist > 0.0 ? d / dist : n;
     vec3 a = u_light_attenuation[i];
     float k = 1.0 / max(a.x + a.y * dist + a.z * dist * dist, 1e-4);
+    float cos_out = dot(-L, u_light_direction[i]);
     if (u_light_type[i] == 1)
-        k *= spot_factor(dot(-L, u_light_direction[i]), u_light_spot[i]);
+        k *= spot_factor(cos_out, u_light_spot[i]);
+    else if (u_light_type[i] == 4)
+        k = min(k * max(cos_out, 0.0), 2.0);
     return k;
 }
 
@@ -163,7 +169,7 @@ float light_towards(int i, vec3 x, vec3 n, out vec3 L)
     float k = local_light_towards(i, x, n, L);
 #ifdef AREA_LIGHTS
     // A rectangle as a point light of its power: the lookups of probe captures (3), and the
-    // main loop of a live view's moving frames (4, rd_view.live), which skip its own loop.
+    // lookups of a live view's moving frames (4, rd_view.live), which skip its own loop.
     if (u_light_type[i] >= 3)
         return rect_solid_angle(x, u_light_position[i], u_light_direction[i], u_light_half_width[i],
                                 u_light_half_height[i]) / 3.14159265;
@@ -498,19 +504,29 @@ void main()
 #ifdef HAS_SHADOWS
     shadow_begin(N); // this sample's soft-shadow disk, shared by the lights (shadow.glsl)
 #endif
+    // A fixed-light program (programs.c, rd_lit_program_fixed) knows the lists' lengths: its
+    // loops unroll, and each light's uniforms are read once, not per pixel.
+#ifdef FIXED_LOCAL_LIGHTS
+    for (int j = 0; j < FIXED_LOCAL_LIGHTS; j++) {
+#else
     for (int j = 0; j < u_local_count; j++) {
+#endif
         int i = u_local_index[j];
         vec3 L;
         float k = local_light_towards(i, v_world, N, L);
         lit += light_contribution(i, k, L, N, V, c_d);
     }
+#ifdef FIXED_OTHER_LIGHTS
+    for (int j = 0; j < FIXED_OTHER_LIGHTS; j++) {
+#else
     for (int j = 0; j < u_other_count; j++) {
+#endif
         int i = u_other_index[j];
         vec3 L;
         float k = light_towards(i, v_world, N, L);
         lit += light_contribution(i, k, L, N, V, c_d);
     }
-#ifdef AREA_LIGHTS
+#if defined(AREA_LIGHTS) && !defined(FIXED_LOCAL_LIGHTS)
     // Rectangle lights (area_light.glsl), by a list of their own: a loop bound every pixel
     // shares, where a branch on the light's type would make llvmpipe run this for every light.
     for (int r = 0; r < u_rect_count; r++) {
@@ -594,11 +610,15 @@ void main()
         t_max = t_first;
     }
 #endif
+#ifndef NO_LAMP_LOOKUPS
+    // A fixed-light program of an object whose probe kept its lamps has no lookup: llvmpipe
+    // would run its shading for every pixel behind the uniform branch.
     if (u_emitter_count > 0) {
         vec3 lamp;
         if (emitter_reflection(v_world, r_seen, t_max, lamp))
             refl = lamp;
     }
+#endif
 #endif
 #ifndef BOX_OPAQUE_REFLECTION
     if (u_transparency > 0.0) {
@@ -622,8 +642,10 @@ void main()
             if (self_reflection(v_world, ray, t_seen, own))
                 seen = own;
 #endif
+#ifndef NO_LAMP_LOOKUPS
             if (u_emitter_count > 0 && emitter_reflection(v_world, ray, t_seen, lamp))
                 seen = lamp; // a lamp seen through the pane, as in the reflection above
+#endif
             refr[ch] = seen[ch];
             if (u_dispersion <= 0.0) {
                 refr = seen;

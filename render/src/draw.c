@@ -21,8 +21,34 @@
 #define PLANAR_UNIT 15
 
 /* lit.frag's light type of a rectangle light in the main loop as a point light of its power
- * (rd_pass.rect_lights_as_points): its own loop, the clipped form factor, is left out. */
+ * (rd_pass.rect_lights_as_points): its own loop, the clipped form factor, is left out. It joins
+ * the point and spot lights' loop with the attenuation of a point of its power (rect_as_point). */
 #define LIGHT_RECT_AS_POINT 4
+
+/* A rectangle light's attenuation as a point light of its power: the solid angle of area A at
+ * distance d is A cos / d^2, so its irradiance factor over pi is A / (pi d^2) before lit.frag's
+ * local_light_towards applies the cosine. A rectangle of no area lights nothing. */
+static void rect_as_point_attenuation(const rd_light *l, float att[3])
+{
+    float uu = l->half_width[0] * l->half_width[0] + l->half_width[1] * l->half_width[1] +
+               l->half_width[2] * l->half_width[2];
+    float vv = l->half_height[0] * l->half_height[0] + l->half_height[1] * l->half_height[1] +
+               l->half_height[2] * l->half_height[2];
+    float area = 4.0f * sqrtf(uu * vv);
+    att[0] = area > 0.0f ? 0.0f : 1e30f;
+    att[1] = 0.0f;
+    att[2] = area > 0.0f ? (float)GLM_PI / area : 0.0f;
+}
+
+/* Which of lit.frag's light lists takes light l: the point and spot lights' (0), the
+ * rectangle lights' (1), or the rest (2, directional lights). */
+static int light_list(const rd_light *l, int rect_as_points)
+{
+    if (l->type == RD_LIGHT_POINT || l->type == RD_LIGHT_SPOT ||
+        (l->type == RD_LIGHT_RECT && rect_as_points))
+        return 0;
+    return l->type == RD_LIGHT_RECT ? 1 : 2;
+}
 
 /* The lights of `mask` (bit i: scene light i), packed in scene order: the light loop of
  * lit.frag runs over exactly these, and the rectangle loop over the rectangle lights, or
@@ -50,11 +76,14 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
         spot[n][1] = l->spot_outer_cos;
         memcpy(half_w[n], l->half_width, sizeof half_w[n]);
         memcpy(half_h[n], l->half_height, sizeof half_h[n]);
-        if (l->type == RD_LIGHT_RECT && rect_as_points)
+        if (l->type == RD_LIGHT_RECT && rect_as_points) {
             type[n] = LIGHT_RECT_AS_POINT;
-        if (l->type == RD_LIGHT_POINT || l->type == RD_LIGHT_SPOT)
+            rect_as_point_attenuation(l, att[n]);
+        }
+        int list = light_list(l, rect_as_points);
+        if (list == 0)
             local_index[locals++] = n;
-        else if (l->type == RD_LIGHT_RECT && !rect_as_points)
+        else if (list == 1)
             rect_index[rects++] = n;
         else
             other_index[others++] = n;
@@ -90,6 +119,18 @@ static void set_light_uniforms(const rd_program *p, const rd_scene *s, unsigned 
 static unsigned all_lights(const rd_scene *s)
 {
     return s->light_count >= 32 ? ~0u : (1u << s->light_count) - 1u;
+}
+
+/* The lengths of lit.frag's point-and-spot and directional lists for all of a scene's lights,
+ * rectangles as points: what a fixed-light program (rd_lit_program_fixed) is made for. */
+static void fixed_list_lengths(const rd_scene *s, int *locals, int *others)
+{
+    *locals = *others = 0;
+    for (int i = 0; i < s->light_count; i++) {
+        int list = light_list(&s->lights[i], 1);
+        *locals += list == 0;
+        *others += list == 2;
+    }
 }
 
 /* The lights that can reach a bounding sphere (centre, radius): a spot light whose cone
@@ -369,10 +410,12 @@ static int pane_over(const rd_pass *pass, const rd_object_desc *o)
  * panes: the walk over the panes of pane_over alone, back to front; the other walks leave
  * them out. */
 static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass,
-                           const draw_item *items, vec4 planes[6], int *frame_uniforms_set,
+                           const draw_item *items, vec4 planes[6], unsigned *frame_uniforms_set,
                            unsigned *light_masks, int depth_only, int fast_paths, int panes)
 {
     int shadows = pass->shadows && rd_shadows_active(scene);
+    int fixed_locals, fixed_others;
+    fixed_list_lengths(scene, &fixed_locals, &fixed_others);
     for (int n = 0; n < scene->object_count; n++) {
         int i = panes ? scene->object_count - 1 - n : n;
         int index = items[i].index;
@@ -452,12 +495,20 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
             variant |= RD_LIT_NO_SPECULAR;
         if (depth_only)
             variant = RD_LIT_DEPTH_ONLY;
-        const rd_program *p = rd_lit_program(ctx, variant);
-        if (!p)
-            return RD_ERR_SHADER;
         /* The shadow lookups know a rectangle light only as a rectangle. */
         int rect_as_points = pass->rect_lights_as_points && !(variant & RD_LIT_SHADOWS);
-        if (!frame_uniforms_set[variant]) {
+        /* A live frame's programs run all the scene's lights in unrolled loops: cheaper than
+         * leaving the lights out of an object's list that cannot reach it (lights_reaching),
+         * and the same picture, as those add exactly zero. */
+        int fixed = fast_paths && rect_as_points && !depth_only;
+        int lamps = probe && probe->leaves_emitters && scene->emitter_count > 0;
+        const rd_program *p =
+            fixed ? rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others, lamps)
+                  : rd_lit_program(ctx, variant);
+        if (!p)
+            return RD_ERR_SHADER;
+        /* By program name: a fixed-light program may have been made anew in its slot. */
+        if (frame_uniforms_set[variant] != p->id) {
             rd_set_frame_uniforms(p, scene, pass->view_proj, pass->eye);
             if (rect_as_points && !depth_only)
                 set_light_uniforms(p, scene, all_lights(scene), 1);
@@ -470,7 +521,7 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                 glUniform1f(p->u_store_distance, 1.0f);
             if (variant & RD_LIT_SHADOWS)
                 rd_shadow_set_uniforms(p, scene);
-            frame_uniforms_set[variant] = 1;
+            frame_uniforms_set[variant] = p->id;
         } else {
             glUseProgram(p->id);
         }
@@ -478,8 +529,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
          * shadow maps by light, and "depth" probes re-light what they saw with every light,
          * as the lookups of lamps left out of a probe light those lamps: all keep the
          * scene's list. */
-        if (!depth_only && fast_paths && scene->object_spheres && !(variant & RD_LIT_SHADOWS) &&
-            !(probe && (probe->surface || probe->leaves_emitters))) {
+        if (!depth_only && fast_paths && !fixed && scene->object_spheres &&
+            !(variant & RD_LIT_SHADOWS) && !(probe && (probe->surface || probe->leaves_emitters))) {
             unsigned mask = lights_reaching(scene, scene->object_spheres[index]);
             if (mask != light_masks[variant]) {
                 set_light_uniforms(p, scene, mask, rect_as_points);
@@ -543,8 +594,8 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
     vec4 planes[6];
     memcpy(vp, pass->view_proj, sizeof vp);
     glm_frustum_planes(vp, planes);
-    int frame_uniforms_set[RD_LIT_VARIANTS] = {0};
-    unsigned light_masks[RD_LIT_VARIANTS] = {0}; /* the lights each program holds now */
+    unsigned frame_uniforms_set[RD_LIT_VARIANTS] = {0}; /* the program set up, by variant */
+    unsigned light_masks[RD_LIT_VARIANTS] = {0};        /* the lights each program holds now */
     rd_result r = RD_OK;
     /* TESSERA_NO_FAST_PATHS=1 draws without the depth prepass and the lean variant: the
      * general path the fast ones must match (tests/render/test_frame_work.c). */

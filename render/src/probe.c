@@ -724,7 +724,7 @@ static rd_result planar_captures(rd_context *ctx, rd_scene *s, const rd_planar_v
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
                            const float capture_view_proj[16], const float eye[3],
                            float pixels_per_tan, int supersample, const rd_planar_view *planar,
-                           rd_frame_stats *stats)
+                           int hold_sizes, rd_frame_stats *stats)
 {
     rd_result r = rd_probes_sync(s);
     if (r == RD_OK)
@@ -799,7 +799,12 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             p->faces_valid = 0;
             continue;
         }
-        int size = probe_resolution(s, p, eye, pixels_per_tan, supersample, ctx->max_size);
+        /* A moving live view changes its eye and its render scale every frame, and a new size
+         * is a new, complete capture in one frame, for a reflection that motion blurs anyway:
+         * its probes keep their sizes until the view stands still. */
+        int size = hold_sizes && p->size > 0
+                       ? p->size
+                       : probe_resolution(s, p, eye, pixels_per_tan, supersample, ctx->max_size);
         if (size != p->size) {
             free_probe_textures(p);
             p->size = size;

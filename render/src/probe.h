@@ -18,12 +18,14 @@ void rd_probes_destroy(rd_scene *s);
  * "auto" resolutions; `planar` (probe_planar.h) the planar mirrors'. capture_view_proj (NULL:
  * view_proj) is the frustum whose cube probes and glazes count as in view: a strip of a
  * split capture passes the whole image's, so every probe the picture needs is captured (or
- * held) whichever strip is drawn. */
+ * held) whichever strip is drawn. hold_sizes (a live view's moving frame, rd_view.live): a
+ * probe that has a size keeps it. */
 struct rd_planar_view;
 rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[16],
                            const float capture_view_proj[16], const float eye[3],
                            float pixels_per_tan, int supersample,
-                           const struct rd_planar_view *planar, rd_frame_stats *stats);
+                           const struct rd_planar_view *planar, int hold_sizes,
+                           rd_frame_stats *stats);
 
 /* The effective settings of object i's material and probe after the scene's defaults. */
 /* Under a scene-wide "depth" correction, materials with k_r and g both below these take the

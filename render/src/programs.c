@@ -190,11 +190,9 @@ static void locate_lit(rd_program *p)
     p->u_self_grid = glGetUniformLocation(id, "u_self_grid");
 }
 
-const rd_program *rd_lit_program(rd_context *ctx, int variant)
+/* Links variant's lit program into *p, with `extra` appended to its defines. */
+static const rd_program *make_lit(rd_program *p, int variant, const char *extra)
 {
-    rd_program *p = &ctx->lit[variant];
-    if (p->id)
-        return p;
     int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
     int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
     int sphere = reflecting && (variant & RD_LIT_SPHERE_MAP);
@@ -219,10 +217,10 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
             (double)RD_WOOD_RING_SPACING, (double)RD_WOOD_AXIS_Y, (double)RD_WOOD_AXIS_Z,
             (double)RD_WOOD_WOBBLE, (double)RD_WOOD_RING_CONTRAST, (double)RD_WOOD_PORE_CONTRAST,
             (double)RD_WOOD_FIGURE_CONTRAST, (double)RD_WOOD_BAND_CONTRAST);
-    char defines[1000];
+    char defines[1100];
     snprintf(defines, sizeof defines,
              "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"
-             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s%s%s",
+             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s%s%s%s",
              RD_MAX_LIGHTS, RD_MAX_EMITTERS, RD_MAX_SELF_PARTS, RD_MAX_SELF_TEXTURES,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
@@ -236,7 +234,7 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
              self_trace ? "#define SELF_TRACE 1\n" : "",
              (variant & RD_LIT_AREA_LIGHTS) ? "#define AREA_LIGHTS 1\n" : "",
              (variant & RD_LIT_BAKED) ? "#define BAKED_LIGHT 1\n" : "",
-             glaze ? "#define GLAZE 1\n" : "", wood);
+             glaze ? "#define GLAZE 1\n" : "", wood, extra);
     if (variant == RD_LIT_DEPTH_ONLY)
         p->id = link("lit.vert", "depth_only.frag", defines);
     else
@@ -251,6 +249,44 @@ const rd_program *rd_lit_program(rd_context *ctx, int variant)
         return NULL;
     locate_lit(p);
     return p;
+}
+
+const rd_program *rd_lit_program(rd_context *ctx, int variant)
+{
+    rd_program *p = &ctx->lit[variant];
+    return p->id ? p : make_lit(p, variant, "");
+}
+
+const rd_program *rd_lit_program_fixed(rd_context *ctx, int variant, int local_lights,
+                                       int other_lights, int lamp_lookups)
+{
+    struct rd_fixed_lit *slots = ctx->lit_fixed;
+    for (int i = 0; i < RD_LIT_FIXED_SLOTS; i++)
+        if (slots[i].program.id && slots[i].variant == variant &&
+            slots[i].local_lights == local_lights && slots[i].other_lights == other_lights &&
+            slots[i].lamp_lookups == lamp_lookups)
+            return &slots[i].program;
+    /* A free slot, or the next in turn: a scene's live frames use a handful. */
+    int slot = 0;
+    while (slot < RD_LIT_FIXED_SLOTS && slots[slot].program.id)
+        slot++;
+    if (slot == RD_LIT_FIXED_SLOTS) {
+        slot = ctx->lit_fixed_next;
+        ctx->lit_fixed_next = (ctx->lit_fixed_next + 1) % RD_LIT_FIXED_SLOTS;
+        glDeleteProgram(slots[slot].program.id);
+    }
+    memset(&slots[slot], 0, sizeof slots[slot]);
+    char extra[128];
+    snprintf(extra, sizeof extra,
+             "#define FIXED_LOCAL_LIGHTS %d\n#define FIXED_OTHER_LIGHTS %d\n%s", local_lights,
+             other_lights, lamp_lookups ? "" : "#define NO_LAMP_LOOKUPS 1\n");
+    if (!make_lit(&slots[slot].program, variant, extra))
+        return NULL;
+    slots[slot].variant = variant;
+    slots[slot].local_lights = local_lights;
+    slots[slot].other_lights = other_lights;
+    slots[slot].lamp_lookups = lamp_lookups;
+    return &slots[slot].program;
 }
 
 rd_result rd_programs_create(rd_context *ctx)
@@ -366,6 +402,11 @@ void rd_programs_destroy(rd_context *ctx)
         if (ctx->lit[v].id) {
             glDeleteProgram(ctx->lit[v].id);
             ctx->lit[v].id = 0;
+        }
+    for (int i = 0; i < RD_LIT_FIXED_SLOTS; i++)
+        if (ctx->lit_fixed[i].program.id) {
+            glDeleteProgram(ctx->lit_fixed[i].program.id);
+            ctx->lit_fixed[i].program.id = 0;
         }
     for (int s = 0; s < 4; s++)
         for (int l = 0; l < 2; l++)

@@ -94,6 +94,8 @@ enum {
     RD_LIT_WOOD = 16384,       /* wood.glsl: the procedural grain (rd_material.pattern) */
     RD_LIT_VARIANTS = 32768
 };
+/* Fixed-light lit programs kept at once (rd_lit_program_fixed). */
+#define RD_LIT_FIXED_SLOTS 32
 
 struct rd_context {
     rd_backend backend;
@@ -125,6 +127,12 @@ struct rd_context {
     rd_frame_stats stats;
 
     rd_program lit[RD_LIT_VARIANTS]; /* by RD_LIT_* bits */
+    /* Lit programs whose light loops run a fixed number of lights (rd_lit_program_fixed). */
+    struct rd_fixed_lit {
+        int variant, local_lights, other_lights, lamp_lookups;
+        rd_program program;
+    } lit_fixed[RD_LIT_FIXED_SLOTS];
+    int lit_fixed_next; /* the slot a new one takes when all are in use */
     /* Tone map variants by samples per side (1..4) and output (display, linear); made on
      * first use. */
     struct rd_tonemap_program {
@@ -174,6 +182,14 @@ rd_result rd_programs_create(rd_context *ctx);
  * programs are the AREA_LIGHTS variant (area_light.glsl). */
 int rd_scene_has_area_lights(const rd_scene *s);
 const rd_program *rd_lit_program(rd_context *ctx, int variant);
+/* The lit program of a variant whose main light loops run exactly local_lights point, spot
+ * and rectangle-as-point lights and other_lights directional ones, as set_light_uniforms
+ * (draw.c) packs them, and no rectangle loop: loops of a bound known when the shader is
+ * compiled are unrolled, and llvmpipe then reads each light's uniforms once for all pixels
+ * instead of gathering them pixel by pixel. lamp_lookups 0: no lookup of lamps in reflections
+ * (emitters.c; the object's probe kept them). NULL on failure. */
+const rd_program *rd_lit_program_fixed(rd_context *ctx, int variant, int local_lights,
+                                       int other_lights, int lamp_lookups);
 /* The tone map program for s samples per side, display or linear output; NULL on failure. */
 const struct rd_tonemap_program *rd_tonemap_program(rd_context *ctx, int samples, int linear);
 /* Adaptive supersampling's programs (renderer_adaptive.c): the resolve of a once-per-pixel

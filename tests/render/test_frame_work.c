@@ -2,9 +2,11 @@
  *  - probes refreshed on change within a face budget: an orbiting camera captures nothing, a
  *    moved object makes the probes re-capture at most the budget a frame until they are fresh,
  *    the reflection then shows the object where it now is, exactly as a scene built with it
- *    there, and a changed screen size within the hysteresis band keeps the probe's size;
- *  - the fast paths (depth prepass, the lean box-corrected reflecting variant) draw what the
- *    general path draws (TESSERA_NO_FAST_PATHS=1), to within one 8-bit step on a few pixels.
+ *    there, a changed screen size within the hysteresis band keeps the probe's size, and a
+ *    live view's moving frame keeps it beyond the band;
+ *  - the fast paths (depth prepass, the lean box-corrected reflecting variant, a live frame's
+ *    fixed-light programs) draw what the general path draws (TESSERA_NO_FAST_PATHS=1), to
+ *    within one 8-bit step on a few pixels, in a still frame and in a live frame.
  * The backend comes from TESSERA_GL. */
 #include "../common/check.h"
 #include "../common/gl_scene.h"
@@ -142,6 +144,21 @@ static void test_on_change_probes(rd_context *ctx)
     CHECK_MSG(rd_last_frame_stats(ctx).faces_captured == 6,
               "zoomed out beyond the band: %d faces, expected a new capture",
               rd_last_frame_stats(ctx).faces_captured);
+    /* Zoomed in beyond the band (a wanted 200 or more), a moving live frame keeps the size;
+     * the still frame that follows takes the new one. */
+    big = orbit_view(64, 1.2f);
+    big.width = 640;
+    big.height = 480;
+    big.live = 1;
+    CHECK(rd_render(ctx, h, &big) == RD_OK);
+    CHECK_MSG(rd_last_frame_stats(ctx).faces_captured == 0,
+              "live frame beyond the band: %d faces captured, expected the size kept",
+              rd_last_frame_stats(ctx).faces_captured);
+    big.live = 0;
+    CHECK(rd_render(ctx, h, &big) == RD_OK);
+    CHECK_MSG(rd_last_frame_stats(ctx).faces_captured == 6,
+              "still frame after the live one: %d faces, expected a new capture",
+              rd_last_frame_stats(ctx).faces_captured);
     rd_scene_destroy(h);
 
     /* The block moves to the other side: the probe re-captures, the budget a frame. */
@@ -226,35 +243,51 @@ static void test_on_change_probes(rd_context *ctx)
     rd_mesh_destroy(ctx, sphere);
 }
 
+/* The fast paths against the general one, for a still frame and for a live view's moving
+ * frame (rd_view.live: a rectangle light as a point, every light in the fixed-light programs'
+ * unrolled loops, where the general path leaves out the spot light that misses an object). */
 static void test_fast_paths_match(rd_context *ctx)
 {
     rd_mesh box = test_upload_mesh(ctx, 0), sphere = test_upload_mesh(ctx, 1);
     static uint8_t img[2][W * H * 4];
-    for (int slow = 0; slow < 2; slow++) {
-        setenv("TESSERA_NO_FAST_PATHS", slow ? "1" : "0", 1);
-        rd_scene *s = make_scene(ctx, box, sphere, -0.3f, RD_PROBE_EVERY_FRAME, 32);
-        /* a second reflective sphere partly behind the first: overdraw among fixtures */
-        rd_object_desc second;
-        CHECK(rd_scene_object_desc(s, 2, &second) == RD_OK);
-        test_place(second.transform, 0.35f, 0.5f, 0.1f, 0.45f);
-        second.material.glossiness = 1.0f;
-        CHECK(rd_scene_add_object(s, &second) == RD_OK);
-        rd_view v = orbit_view(20, 1.7f);
-        CHECK(rd_render(ctx, s, &v) == RD_OK);
-        CHECK(rd_render(ctx, s, &v) == RD_OK);
-        CHECK(rd_read_rgba8(ctx, img[slow], sizeof img[slow]) == RD_OK);
-        rd_scene_destroy(s);
+    for (int live = 0; live < 2; live++) {
+        for (int slow = 0; slow < 2; slow++) {
+            setenv("TESSERA_NO_FAST_PATHS", slow ? "1" : "0", 1);
+            rd_scene *s = make_scene(ctx, box, sphere, -0.3f, RD_PROBE_EVERY_FRAME, 32);
+            /* a second reflective sphere partly behind the first: overdraw among fixtures */
+            rd_object_desc second;
+            CHECK(rd_scene_object_desc(s, 2, &second) == RD_OK);
+            test_place(second.transform, 0.35f, 0.5f, 0.1f, 0.45f);
+            second.material.glossiness = 1.0f;
+            CHECK(rd_scene_add_object(s, &second) == RD_OK);
+            /* a panel light over the block, facing down into the room */
+            rd_light panel = {.type = RD_LIGHT_RECT,
+                              .position = {-0.3f, 0.8f, 1.8f},
+                              .direction = {0, 0, -1},
+                              .diffuse = {0.6f, 0.5f, 0.4f},
+                              .specular = {1, 1, 1},
+                              .half_width = {0.3f, 0, 0},
+                              .half_height = {0, 0.1f, 0}};
+            CHECK(rd_scene_add_light(s, &panel) == RD_OK);
+            rd_view v = orbit_view(20, 1.7f);
+            v.live = live;
+            CHECK(rd_render(ctx, s, &v) == RD_OK);
+            CHECK(rd_render(ctx, s, &v) == RD_OK);
+            CHECK(rd_read_rgba8(ctx, img[slow], sizeof img[slow]) == RD_OK);
+            rd_scene_destroy(s);
+        }
+        unsetenv("TESSERA_NO_FAST_PATHS");
+        size_t differing;
+        double worst = max_diff(img[0], img[1], sizeof img[0], &differing);
+        CHECK_MSG(worst <= 1.0 && differing <= W * H / 100,
+                  "%s frame, fast paths vs general: max diff %g, %zu values differ",
+                  live ? "live" : "still", worst, differing);
+        /* the picture is not blank: the check above compares something */
+        size_t lit = 0;
+        for (size_t i = 0; i < sizeof img[0]; i += 4)
+            lit += img[0][i] > 20;
+        CHECK_MSG(lit > W * H / 2, "%s frame: only %zu lit pixels", live ? "live" : "still", lit);
     }
-    unsetenv("TESSERA_NO_FAST_PATHS");
-    size_t differing;
-    double worst = max_diff(img[0], img[1], sizeof img[0], &differing);
-    CHECK_MSG(worst <= 1.0 && differing <= W * H / 100,
-              "fast paths vs general: max diff %g, %zu values differ", worst, differing);
-    /* the picture is not blank: the check above compares something */
-    size_t lit = 0;
-    for (size_t i = 0; i < sizeof img[0]; i += 4)
-        lit += img[0][i] > 20;
-    CHECK_MSG(lit > W * H / 2, "only %zu lit pixels", lit);
     rd_mesh_destroy(ctx, box);
     rd_mesh_destroy(ctx, sphere);
 }

@@ -93,7 +93,10 @@ static rd_result present_view(planner *p)
                            (int)r->w, (int)r->h);
 }
 
-static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, int *rh)
+/* live: the view moves (a session's first frame does not: it draws with the still view's
+ * programs, so that a cold start compiles one set; the shader warm-up compiles the moving
+ * frames' before the first move, shader_warmup.c). */
+static int moving_frame(planner *p, int fw, int fh, int live, float *render_ms, int *rw, int *rh)
 {
     apply_preset(p, ui_live_moving_preset(p->quality));
     rd_scene_set_capture_budget(p->scene.scene, p->live.preset_faces, 1); /* a still's undone */
@@ -108,7 +111,7 @@ static int moving_frame(planner *p, int fw, int fh, float *render_ms, int *rw, i
     rd_view v;
     planner_view(p, *rw, *rh, &v);
     v.supersample = 1;
-    v.live = 1; /* cheaper where motion hides it; the still view renders exactly */
+    v.live = live; /* cheaper where motion hides it; the still view renders exactly */
     double t0 = glfwGetTime();
     if (rd_render(p->ctx, p->scene.scene, &v) != RD_OK)
         return render_failed();
@@ -335,7 +338,7 @@ int planner_live_frame(planner *p, int window_w, int window_h, ui_rect pane, flo
     if (moving)
         planner_bake_fade_stop(p); /* the old picture no longer matches the view */
     if (moving || p->live.last_w == 0)
-        return moving_frame(p, fw, fh, render_ms, rw, rh);
+        return moving_frame(p, fw, fh, moving, render_ms, rw, rh);
     if (!p->live.still && begin_still(p, fw, fh))
         return 1;
     return still_frame(p, fw, fh, render_ms, rw, rh);

@@ -5,8 +5,9 @@
  * probes) draws a dozen new variants in one strip: several seconds in one frame. Mesa keeps
  * what it compiles in its on-disk cache (XDG_CACHE_HOME/mesa_shader_cache), which a process
  * rendering the same scene fills for the window as well. So once the window's scene and its
- * baked light are ready, a background process renders the document at final and then at print
- * quality at a thumbnail's size, niced below the window, and the window's later climb reads the
+ * baked light are ready, background processes, niced below the window, draw the document's
+ * moving frame at interactive (the live programs of its light counts), then render it at final
+ * and at print quality, at a thumbnail's size, and the window's later moves and climb read the
  * compiled variants from the cache. While the view moves the render is stopped (SIGSTOP), so
  * that the moving frames keep both cores. TESSERA_SHADER_WARMUP=off leaves it out. */
 #include "planner.h"
@@ -28,8 +29,10 @@ extern char **environ;
 
 #define WARMUP_NICENESS 19
 
-static const char *const stages[] = {"final", "print"};
-enum { STAGE_COUNT = 2 };
+/* First the moving view's programs at interactive (render/src/programs.c's fixed-light ones,
+ * which no still frame draws), by a one-frame live bench; then final's and print's. */
+static const char *const stages[] = {"moving", "final", "print"};
+enum { STAGE_COUNT = 3, LIVE_STAGE = 0 };
 
 static int warmup_wanted(void)
 {
@@ -39,14 +42,37 @@ static int warmup_wanted(void)
 
 /* The render of one stage, its output into /dev/null; the child's pid or -1. Between fork and
  * exec only async-signal-safe calls (POSIX.1-2017, "fork"). */
-static pid_t spawn_render(const char *project, const char *quality, const char *image, int bake)
+static pid_t spawn_render(const char *project, int stage, const char *image, int bake)
 {
-    char *argv[] = {"tessera",       "render",
-                    (char *)project, "--quality",
-                    (char *)quality, "--size",
-                    "96x54",         "-o",
-                    (char *)image,   bake ? NULL : "--bake",
-                    "off",           NULL};
+    char *still[] = {"tessera",
+                     "render",
+                     (char *)project,
+                     "--quality",
+                     (char *)stages[stage],
+                     "--size",
+                     "96x54",
+                     "-o",
+                     (char *)image,
+                     bake ? NULL : "--bake",
+                     "off",
+                     NULL};
+    char *live[] = {"tessera",
+                    "bench",
+                    (char *)project,
+                    "--quality",
+                    "interactive",
+                    "--live",
+                    "on",
+                    "--size",
+                    "96x54",
+                    "--frames",
+                    "1",
+                    "--warmup",
+                    "0",
+                    bake ? NULL : "--bake",
+                    "off",
+                    NULL};
+    char **argv = stage == LIVE_STAGE ? live : still;
     int null_fd = open("/dev/null", O_WRONLY | O_CLOEXEC);
     if (null_fd < 0)
         return -1;
@@ -139,7 +165,7 @@ void planner_warmup_frame(planner *p)
     snprintf(project, sizeof project, "%s/project.json", w->folder);
     snprintf(image, sizeof image, "%s/warm.png", w->folder);
     w->started = glfwGetTime();
-    w->pid = spawn_render(project, stages[w->stage], image, p->bake != NULL);
+    w->pid = spawn_render(project, w->stage, image, p->bake != NULL);
     if (w->pid < 0) {
         w->pid = 0;
         w->finished = 1;

@@ -483,8 +483,9 @@ typedef struct rd_view {
     /* 1: a frame of a moving live view (the planner while the camera or a fixture moves),
      * drawn cheaper where the difference does not show in motion: rectangle lights as point
      * lights of their power at their centres (what probe captures' lookups use) instead of
-     * their clipped form factor, and diffuse textures without anisotropic filtering. A still
-     * view renders with 0, exactly. */
+     * their clipped form factor, diffuse textures without anisotropic filtering, and probes
+     * kept at the sizes they have (no new capture for a new size while the eye and the render
+     * scale change; the still view sizes them again). A still view renders with 0, exactly. */
     int live;
 } rd_view;
 
