@@ -482,9 +482,10 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
          * texel of the capture would cost more than the rest of it, for what is a small
          * reflection of a reflection. Glass still traces: its probe leaves out the neighbours
          * seen through it, and a pane is a sharp lookup, one ray a texel each way. */
-        int self_traced =
-            probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) && !probe->planar &&
-            (!pass->planar_off || o->material.transparency > 0.0f) && rd_self_traced(scene, probe);
+        int self_traced = probe && !(variant & (RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP)) &&
+                          !probe->planar &&
+                          (!pass->planar_off || (o->material.transparency > 0.0f && !panes)) &&
+                          rd_self_traced(scene, probe);
         if (self_traced)
             variant |= RD_LIT_SELF_TRACE; /* the full path's lookup, with its own parts */
         else if (probe && fast_paths && box_opaque(scene, probe, o))

@@ -320,9 +320,11 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
      * its own probe, as the eye would see it from there: chrome in a mirror is chrome and a
      * shower screen in front of it is glass (a second bounce, as a real mirror and the path
      * tracer show them; rd_reflection_defaults.mirror_bounce OFF draws them plain and leaves
-     * glass out, as every other capture). A thin pane is blended over what the capture drew
-     * behind it, last (rd_pass.panes_over): a straight ray through it from the eye's image sees
-     * exactly that, where the pane's probe would show it from the pane's centre. Another planar
+     * glass out, as every other capture). With rd_reflection_defaults.mirror_panes ON a thin
+     * pane is blended over what the capture drew behind it, last (rd_pass.panes_over): a
+     * straight ray through it from the eye's image sees exactly that, where the pane's probe
+     * shows it from the pane's centre; it costs the shading of what lies behind the pane, so
+     * it is a switch. Another planar
      * mirror's capture belongs to the view's eye, not this one: such a mirror is drawn plain.
      * A depth prepass, as the main view's, shades each texel once: sorted from the mirror's centre,
      * the fixtures seen in it are not always drawn before the walls behind them, and chrome drawn
@@ -337,7 +339,7 @@ rd_result rd_planar_capture(rd_context *ctx, rd_scene *s, rd_probe *p, const rd_
                                    .min_solid_radius = 0.25f * sample_tan,
                                    .full_meshes = 1,
                                    .depth_prepass = 1,
-                                   .panes_over = 1});
+                                   .panes_over = s->reflection.mirror_panes == RD_SWITCH_ON});
     unsigned e = rd_gl_drain_errors();
     if (r == RD_OK && e != GL_NO_ERROR)
         r = rd_fail(e == GL_OUT_OF_MEMORY ? RD_ERR_OUT_OF_MEMORY : RD_ERR_GL,

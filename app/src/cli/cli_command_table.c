@@ -6,8 +6,8 @@
 
 /* The options every command that renders through the GPU renderer takes. */
 #define RENDER_SETTINGS                                                                            \
-    "quality adaptive planar-mirrors mirror-bounce room-probe glaze exact-lamps self-reflections " \
-    "probe-resolution "                                                                            \
+    "quality adaptive planar-mirrors mirror-bounce mirror-panes room-probe glaze exact-lamps "     \
+    "self-reflections probe-resolution "                                                           \
     "shadows probes blur ambient backend bake bake-bounces tone exposure white-balance sky time "  \
     "room "
 

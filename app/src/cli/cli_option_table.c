@@ -224,6 +224,8 @@ static const cli_option_spec options[] = {
     SWITCH("planar-mirrors", planar_mirrors, "flat mirrors as planar reflections"),
     SWITCH("mirror-bounce", mirror_bounce,
            "glass and chrome in a planar mirror with their own probes (default on)"),
+    SWITCH("mirror-panes", mirror_panes,
+           "a planar mirror's capture blends a thin pane over what lies behind it (default off)"),
     SWITCH("room-probe", room_probe, "\"depth\" lookups also search the room probe"),
     SWITCH("glaze", glaze, "glazed tiles reflect the room probe by Fresnel"),
     SWITCH("live", live, "frames drawn as the window's while the view moves (cheaper lights)"),

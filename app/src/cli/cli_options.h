@@ -40,8 +40,8 @@ typedef struct cli_options {
     int bounces;      /* --bounces: indirect bounces of the reference (0 = direct light only) */
     int bake_bounces; /* --bake-bounces: passes of the bake (0 = REF_DEFAULT_BOUNCES) */
     const struct app_quality *quality; /* --quality: a preset (app/scene/quality.h) */
-    rd_switch adaptive, planar_mirrors, mirror_bounce, room_probe, exact_lamps, self_reflections,
-        glaze;
+    rd_switch adaptive, planar_mirrors, mirror_bounce, mirror_panes, room_probe, exact_lamps,
+        self_reflections, glaze;
     rd_switch live;       /* --live: frames drawn as a moving live view's (rd_view.live) */
     rd_switch bake;       /* --bake: baked indirect light (default on unless TESSERA_BAKE=off) */
     int self_rays;        /* --self-reflections N: its lobe directions a sample; 0 = default */

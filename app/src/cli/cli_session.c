@@ -135,12 +135,15 @@ int cli_session_start(const cli_options *o, cli_session *s)
     }
     /* Each switch given on the command line overrides the preset's; unset leaves it. */
     if (o->probes || o->blur || o->ambient || o->planar_mirrors || o->mirror_bounce ||
-        o->room_probe || o->glaze || o->exact_lamps || o->self_reflections || o->probe_resolution) {
+        o->mirror_panes || o->room_probe || o->glaze || o->exact_lamps || o->self_reflections ||
+        o->probe_resolution) {
         rd_reflection_defaults d = rd_scene_reflection_defaults(s->scene.scene);
         if (o->planar_mirrors)
             d.planar_mirrors = o->planar_mirrors;
         if (o->mirror_bounce)
             d.mirror_bounce = o->mirror_bounce;
+        if (o->mirror_panes)
+            d.mirror_panes = o->mirror_panes;
         if (o->room_probe)
             d.room_probe = o->room_probe;
         if (o->glaze)

@@ -319,6 +319,12 @@ typedef struct rd_reflection_defaults {
                                  with their own probes (a second bounce: chrome in a mirror is
                                  chrome); OFF: plain, glass left out, as in every other capture
                                  and the direct-only tracer. Default on */
+    rd_switch mirror_panes;   /* ON: a planar mirror's capture draws a thin pane (double-sided
+                                 glass) last, blended over what it drew behind it: the view
+                                 through the pane from the eye's image, exact (about 8 % more
+                                 CPU for a 4K print of the designed demo); otherwise the pane
+                                 shows what lies behind it from its own probe, centred on the
+                                 pane. Default off */
     rd_switch room_probe;     /* ON: the "depth" lookup searches the room probe beside the
                                  object's own probe; OFF: its own probe only (docs/rendering.md,
                                  "The room probe"). Default on */
