@@ -503,6 +503,32 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
          * and the same picture, as those add exactly zero. */
         int fixed = fast_paths && rect_as_points && !depth_only;
         int lamps = probe && probe->leaves_emitters && scene->emitter_count > 0;
+        /* A still view that compiles a variant anew (the bake's light arriving, a new material)
+         * in a context that also draws moving frames makes that variant's fixed-light program
+         * too, and draws one triangle with it under an empty scissor box: llvmpipe builds a
+         * program's code for the pipeline state at its first draw, so the next move finds it
+         * built instead of stopping on it. That joins the compile this frame does anyway.
+         * Renders that never move compile nothing more. */
+        if (ctx->drew_live && !fixed && !depth_only && pass->view_rot && !rect_as_points &&
+            !(variant & RD_LIT_SHADOWS) && !ctx->lit[variant].id) {
+            const rd_program *f =
+                rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others, lamps);
+            if (!f)
+                return RD_ERR_SHADER;
+            GLint box[4], scissor = 0;
+            glGetIntegerv(GL_SCISSOR_TEST, &scissor);
+            glGetIntegerv(GL_SCISSOR_BOX, box);
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(0, 0, 0, 0);
+            glUseProgram(f->id);
+            glBindVertexArray(m->vao);
+            glDrawElements(GL_TRIANGLES, m->index_count < 3 ? m->index_count : 3, GL_UNSIGNED_INT,
+                           0);
+            glScissor(box[0], box[1], box[2], box[3]);
+            if (!scissor)
+                glDisable(GL_SCISSOR_TEST);
+            frame_uniforms_set[variant] = 0; /* the variant's program is bound again below */
+        }
         const rd_program *p =
             fixed ? rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others, lamps)
                   : rd_lit_program(ctx, variant);
@@ -590,6 +616,8 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
     draw_item *items = sorted_draw_list(ctx, scene, pass->eye);
     if (!items)
         return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
+    if (pass->rect_lights_as_points)
+        ctx->drew_live = 1;
     /* Only what the view can see is drawn: a probe face sees a sixth of the room. */
     mat4 vp;
     vec4 planes[6];

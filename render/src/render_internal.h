@@ -133,6 +133,7 @@ struct rd_context {
         rd_program program;
     } lit_fixed[RD_LIT_FIXED_SLOTS];
     int lit_fixed_next; /* the slot a new one takes when all are in use */
+    int drew_live; /* a live view's moving frame has been drawn (rd_pass.rect_lights_as_points) */
     /* Tone map variants by samples per side (1..4) and output (display, linear); made on
      * first use. */
     struct rd_tonemap_program {
