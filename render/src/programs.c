@@ -191,6 +191,30 @@ static void locate_lit(rd_program *p)
 }
 
 /* Links variant's lit program into *p, with `extra` appended to its defines. */
+/* Every sampler on a unit of its own from the start, the units the draws bind (draw.c,
+ * shadow.c, self_trace.c): GL refuses a draw whose samplers of two types share a unit, and a
+ * new program's samplers all read unit 0 until a draw sets them. */
+static void default_sampler_units(const rd_program *p)
+{
+    const struct {
+        int location, unit;
+    } units[] = {{p->u_diffuse_texture, 0}, {p->u_probe, 1},         {p->u_sphere_map, 2},
+                 {p->u_probe_distance, 3},  {p->u_probe_surface, 4}, {p->u_room_probe, 6},
+                 {p->u_room_distance, 7},   {p->u_room_surface, 8},  {p->u_self_nodes, 9},
+                 {p->u_self_tris, 10},      {p->u_lightmap, 12},     {p->u_planar, 15}};
+    glUseProgram(p->id);
+    for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
+        if (units[i].location >= 0)
+            glUniform1i(units[i].location, units[i].unit);
+    GLint atlas = glGetUniformLocation(p->id, "u_shadow_atlas");
+    if (atlas >= 0)
+        glUniform1i(atlas, 5);
+    if (p->u_self_textures >= 0) {
+        static const int self_units[4] = {11, 12, 13, 14};
+        glUniform1iv(p->u_self_textures, 4, self_units);
+    }
+}
+
 static const rd_program *make_lit(rd_program *p, int variant, const char *extra)
 {
     int textured = variant & RD_LIT_TEXTURED, reflecting = variant & RD_LIT_REFLECTING;
@@ -248,6 +272,7 @@ static const rd_program *make_lit(rd_program *p, int variant, const char *extra)
     if (!p->id)
         return NULL;
     locate_lit(p);
+    default_sampler_units(p);
     return p;
 }
 
