@@ -157,9 +157,62 @@ static void check_accumulation(void)
     CHECK(a.image == NULL);
 }
 
+/* Final's and print's steps from the background render (still_render.h): the window's strips
+ * draw the interactive pass alone, the background steps come whole, a background picture that
+ * arrives early skips what is left of the steps before it, and the progress counts a background
+ * step by its render's fraction. */
+static void check_background_ladder(void)
+{
+    ui_live l;
+    int covered[100];
+    float worst;
+    ui_live_begin_background(&l, 1, 1.0f); /* interactive: nothing in the background */
+    CHECK(l.step_count == 1 && ui_live_next_background(&l) < 0 && !ui_live_on_background(&l));
+
+    ui_live_begin_background(&l, 2, 1.0f);
+    CHECK(l.step_count == 2 && !l.steps[0].background && l.steps[1].background);
+    CHECK(ui_live_next_background(&l) == 1 && !ui_live_on_background(&l));
+    /* The interactive pass in strips; the ladder then waits on the background step. */
+    int strips = 0;
+    while (!ui_live_on_background(&l) && strips++ < 1000) {
+        int rows = ui_live_strip_rows(&l, 20.0f, 100);
+        ui_live_strip_done(&l, rows, (float)rows, 100, 0);
+    }
+    CHECK(ui_live_on_background(&l) && !ui_live_done(&l) && l.step == 1);
+    CHECK_MSG(fabsf(ui_live_progress(&l) - 0.2f) < 1e-6f, "progress %.3f", ui_live_progress(&l));
+    l.background_fraction = 0.5f; /* (1 pass + half of final's 4) of 5 */
+    CHECK_MSG(fabsf(ui_live_progress(&l) - 0.6f) < 1e-6f, "progress %.3f", ui_live_progress(&l));
+    l.background_fraction = 7.0f; /* clamped */
+    CHECK(ui_live_progress(&l) <= 1.0f);
+    CHECK(ui_live_background_done(&l, 1) == 0 && ui_live_done(&l) && ui_live_progress(&l) == 1);
+
+    /* Print: final's picture arrives before the interactive pass is through. */
+    ui_live_begin_background(&l, 3, 1.0f);
+    CHECK(l.step_count == 3 && l.steps[1].background && l.steps[2].background);
+    ui_live_strip_done(&l, 10, 10.0f, 100, 0);
+    CHECK(l.step == 0 && l.row == 10);
+    CHECK(ui_live_background_done(&l, 1) == 1);
+    CHECK(l.step == 2 && l.row == 0 && l.pass == 0 && ui_live_on_background(&l));
+    CHECK(ui_live_next_background(&l) == 2);
+    /* A step that is not in the background, or one already passed, is no picture's. */
+    CHECK(ui_live_background_done(&l, 0) == 1 && l.step == 2);
+    CHECK(ui_live_background_done(&l, 2) == 0 && ui_live_done(&l));
+
+    /* The window's own climb (a failed background render turns the steps back): strips again. */
+    ui_live_begin_background(&l, 2, 1.0f);
+    l.steps[1].background = 0;
+    run_ladder(&l, 100, 1.0f, 20.0f, &worst, covered);
+    CHECK(ui_live_done(&l));
+    int all4 = 1;
+    for (int r = 0; r < 100; r++)
+        all4 &= covered[r] == 5; /* one interactive pass and final's four */
+    CHECK_MSG(all4, "every row once a pass of both steps");
+}
+
 int main(void)
 {
     check_ladder();
+    check_background_ladder();
     check_accumulation();
     return check_report("ui_live_view");
 }

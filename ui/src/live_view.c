@@ -19,13 +19,43 @@ void ui_live_begin(ui_live *l, int chosen, float ms_per_row)
      * and 16 offsets. Above interactive, one interactive pass first: a sharp picture at once,
      * before the dearer settings' first pass. */
     if (chosen <= INTERACTIVE) {
-        l->steps[l->step_count++] = (ui_live_step){chosen < 0 ? INTERACTIVE : chosen, 8};
+        l->steps[l->step_count++] = (ui_live_step){chosen < 0 ? INTERACTIVE : chosen, 8, 0};
         return;
     }
-    l->steps[l->step_count++] = (ui_live_step){INTERACTIVE, 1};
-    l->steps[l->step_count++] = (ui_live_step){FINAL, 4};
+    l->steps[l->step_count++] = (ui_live_step){INTERACTIVE, 1, 0};
+    l->steps[l->step_count++] = (ui_live_step){FINAL, 4, 0};
     if (chosen >= PRINT)
-        l->steps[l->step_count++] = (ui_live_step){PRINT, 16};
+        l->steps[l->step_count++] = (ui_live_step){PRINT, 16, 0};
+}
+
+void ui_live_begin_background(ui_live *l, int chosen, float ms_per_row)
+{
+    ui_live_begin(l, chosen, ms_per_row);
+    for (int i = 0; i < l->step_count; i++)
+        l->steps[i].background = l->steps[i].preset >= FINAL;
+}
+
+int ui_live_next_background(const ui_live *l)
+{
+    for (int i = l->step; i < l->step_count; i++)
+        if (l->steps[i].background)
+            return i;
+    return -1;
+}
+
+int ui_live_on_background(const ui_live *l)
+{
+    return !ui_live_done(l) && l->steps[l->step].background;
+}
+
+int ui_live_background_done(ui_live *l, int index)
+{
+    if (index < l->step || index >= l->step_count || !l->steps[index].background)
+        return !ui_live_done(l);
+    l->step = index + 1;
+    l->pass = l->row = l->settling = 0;
+    l->background_fraction = 0.0f;
+    return !ui_live_done(l);
 }
 
 int ui_live_strip_rows(const ui_live *l, float budget_ms, int height)
@@ -78,7 +108,14 @@ float ui_live_progress(const ui_live *l)
         if (i < l->step)
             done += l->steps[i].passes;
     }
-    if (l->step < l->step_count)
-        done += l->pass;
+    if (l->step < l->step_count) {
+        const ui_live_step *s = &l->steps[l->step];
+        float f = l->background_fraction < 0.0f   ? 0.0f
+                  : l->background_fraction > 1.0f ? 1.0f
+                                                  : l->background_fraction;
+        if (!s->background)
+            return (float)(done + l->pass) / (float)all;
+        return ((float)done + f * (float)s->passes) / (float)all;
+    }
     return all > 0 ? (float)done / (float)all : 1.0f;
 }

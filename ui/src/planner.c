@@ -227,7 +227,8 @@ static int frame(planner *p)
     if (p->frame_log && p->frame_count > 0) {
         double eye[3], target[3];
         planner_view_points(p, eye, target);
-        fprintf(p->frame_log, "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d,%s,%.3f,%.0f,%.0f,%.0f,%.3f,%.4f\n",
+        fprintf(p->frame_log,
+                "%ld,%s,%s,%.3f,%.3f,%.3f,%d,%d,%s,%.3f,%.0f,%.0f,%.0f,%.3f,%.4f,%.3f\n",
                 p->frame_count, ui_quality_names[p->quality],
                 p->dragging                ? "drag"
                 : planner_job_running(p)   ? "job"
@@ -238,7 +239,7 @@ static int frame(planner *p)
                 : ui_live_done(&p->live.ladder) ? "still"
                                                 : "refining",
                 p->live.still ? ui_live_progress(&p->live.ladder) : 0.0f, eye[0], eye[1], eye[2],
-                cpu_dt * 1e3, p->live.view_ev);
+                cpu_dt * 1e3, p->live.view_ev, p->waited_s * 1e3);
     }
     p->frame_count++;
     return 0;
@@ -265,7 +266,7 @@ int ui_run(const ui_options *o)
             return 1;
         }
         fprintf(p.frame_log, "frame,quality,state,frame_ms,render_ms,render_scale,width,height,"
-                             "live,progress,eye_x,eye_y,eye_z,cpu_ms,exposure_ev\n");
+                             "live,progress,eye_x,eye_y,eye_z,cpu_ms,exposure_ev,wait_ms\n");
     }
     glfwSetErrorCallback(glfw_error);
     if (!glfwInit()) {
@@ -325,10 +326,12 @@ int ui_run(const ui_options *o)
     while (!p.quit && !glfwWindowShouldClose(p.window)) {
         /* A finished still view waits for input instead of drawing the same frame again (the
          * machine is shared; a script keeps its own pace). */
-        if (planner_live_idle(&p) && !p.script.count)
+        double wait_start = glfwGetTime();
+        if (planner_live_idle(&p) && (!p.script.count || planner_script_idles(&p)))
             glfwWaitEventsTimeout(0.1);
         else
             glfwPollEvents();
+        p.waited_s = glfwGetTime() - wait_start; /* the frame log's wait_ms */
         if (frame(&p)) {
             rc = 1;
             break;

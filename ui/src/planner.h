@@ -19,6 +19,7 @@
 #include "quantities_panel.h"
 #include "render/render.h"
 #include "script.h"
+#include "still_render.h"
 #include "thumbnails.h"
 #include "ui/navigation.h"
 #include "ui/plan_view.h"
@@ -70,6 +71,7 @@ typedef struct planner {
     long stray_target_frames; /* frames whose panels found an off-screen target bound */
     double heap_logged_at;    /* heap_log.c: the last TESSERA_HEAP_LOG line */
     FILE *frame_log;
+    double waited_s; /* how long the loop waited for input before this frame (idle) */
 
     /* The live 3D view (planner_live.c): moving frames at a reduced scale, then the still view
      * refined in strips (live_view.h) into the accumulated full-resolution image. */
@@ -97,6 +99,10 @@ typedef struct planner {
         int shadow_faces_left; /* what the last frame's faces left to make */
         int preset_faces;      /* the applied preset's probe faces a frame (moving frames) */
         float probe_face_ms;   /* what a probe face's capture costs a strip, smoothed */
+
+        ui_still_render still_render; /* the ladder's background step under way */
+        int background_step;          /* the ladder's step it renders, -1 for none */
+        int background_failed;        /* 1: a background render failed for this still view */
     } live;
 
     ui_catalog_browser browser;
@@ -243,6 +249,9 @@ void planner_toggle_tour(planner *p);
 int planner_print_shot_now(planner *p);
 /* planner_script.c: runs this frame's share of the script; 0 ok, 1 failed (message printed). */
 int planner_script_step(planner *p);
+/* 1 while the script holds on wait-still: the window then waits for input between frames as
+ * it does without a script, so the background renders get the machine as they do for a user. */
+int planner_script_idles(const planner *p);
 int planner_screenshot(planner *p, const char *path);
 /* presentation.c */
 /* Starts a flight to a stored viewpoint over `seconds` (0 = jump). */

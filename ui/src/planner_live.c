@@ -1,8 +1,10 @@
 /* The live 3D view: while the view or a fixture moves, one render a frame at the scale that
  * holds the frame budget; once it stands still, the ladder of live_view.h renders the full
- * resolution a strip a frame at sub-pixel offsets, averaged by live_accum.h, switching the
- * scene to dearer presets step by step. No frame renders more than a strip's budget, so
- * final and print quality never freeze the window. */
+ * resolution a strip a frame at sub-pixel offsets, averaged by live_accum.h, and final's and
+ * print's pictures come whole from a render in another process (still_render.h), started as
+ * the view stops. No frame renders more than a strip's budget, so final and print quality
+ * never freeze the window. TESSERA_STILL_RENDER=window climbs to them in the window's own
+ * strips instead, a step's shadow maps, probes and exposure spread over its frames. */
 #include "planner.h"
 
 #include "gui.h"
@@ -10,6 +12,7 @@
 
 #include <GLFW/glfw3.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -98,6 +101,7 @@ static rd_result present_view(planner *p)
  * frames' before the first move, shader_warmup.c). */
 static int moving_frame(planner *p, int fw, int fh, int live, float *render_ms, int *rw, int *rh)
 {
+    ui_still_render_cancel(&p->live.still_render); /* its picture is of the view that was */
     apply_preset(p, ui_live_moving_preset(p->quality));
     rd_scene_set_capture_budget(p->scene.scene, p->live.preset_faces, 1); /* a still's undone */
     /* Back from a still: start at the scale the last moving frames held. */
@@ -137,13 +141,31 @@ static int moving_frame(planner *p, int fw, int fh, int live, float *render_ms, 
     return 0;
 }
 
+static int in_window_climb(void)
+{
+    const char *v = getenv("TESSERA_STILL_RENDER");
+    return v && !strcmp(v, "window");
+}
+
+/* The ladder towards the chosen preset, whose final and print steps render in the background
+ * (or in the window's strips, TESSERA_STILL_RENDER=window). */
+static void begin_ladder(planner *p, float ms_per_row)
+{
+    ui_still_render_cancel(&p->live.still_render);
+    p->live.background_failed = 0;
+    if (in_window_climb())
+        ui_live_begin(&p->live.ladder, p->quality, ms_per_row);
+    else
+        ui_live_begin_background(&p->live.ladder, p->quality, ms_per_row);
+}
+
 /* The view has just stopped: the still image starts as the last moving frame, scaled up. */
 static int begin_still(planner *p, int fw, int fh)
 {
     p->live.still = 1;
     float rows = p->live.last_h > 0 ? (float)p->live.last_h : (float)fh;
     float px_scale = p->live.last_w > 0 ? (float)fw / (float)p->live.last_w : 1.0f;
-    ui_live_begin(&p->live.ladder, p->quality, p->live.last_ms / rows * px_scale);
+    begin_ladder(p, p->live.last_ms / rows * px_scale);
     if (ui_accum_resize(&p->live.accum, fw, fh)) {
         fprintf(stderr, "tessera: out of memory for the still view\n");
         return 1;
@@ -180,7 +202,82 @@ static float strip_budget(planner *p)
 static int waits_for_shaders(const planner *p)
 {
     const ui_live *l = &p->live.ladder;
-    return !ui_live_done(l) && !planner_warmup_ready(p, l->steps[l->step].preset);
+    return !ui_live_done(l) && !ui_live_on_background(l) &&
+           !planner_warmup_ready(p, l->steps[l->step].preset);
+}
+
+/* The still strip's buffer, grown to `size` bytes. 0 ok. */
+static int strip_buffer(planner *p, size_t size)
+{
+    if (size <= p->live.strip_size)
+        return 0;
+    free(p->live.strip);
+    p->live.strip = malloc(size);
+    p->live.strip_size = p->live.strip ? size : 0;
+    if (p->live.strip)
+        return 0;
+    fprintf(stderr, "tessera: out of memory for the still view\n");
+    return 1;
+}
+
+/* A failed background render leaves its steps to the window's strips: slower to come, but
+ * the picture is the same preset's. */
+static void background_failed(planner *p, const char *err)
+{
+    ui_live *l = &p->live.ladder;
+    fprintf(stderr, "tessera: %s; the window renders it itself\n", err);
+    planner_status(p, "%s; the window renders it itself", err);
+    p->live.background_failed = 1;
+    for (int i = l->step; i < l->step_count; i++)
+        l->steps[i].background = 0;
+    if (!ui_live_done(l)) {
+        apply_preset(p, l->steps[l->step].preset);
+        ui_accum_restart(&p->live.accum);
+        p->live.still_ev_ok = 0;
+        p->live.shadows_pending = 1;
+    }
+}
+
+/* The ladder's next background step: started as soon as the view stands still and its light
+ * has settled (the render reads the window's bake from the cache), polled each frame, its
+ * picture shown whole when it comes. Returns 1 on a failure that stops the view. */
+static int background_frame(planner *p, int fw, int fh)
+{
+    ui_live *l = &p->live.ladder;
+    ui_still_render *s = &p->live.still_render;
+    int index = ui_live_next_background(l);
+    if (index < 0)
+        return 0;
+    char err[1024];
+    if (!ui_still_render_busy(s)) {
+        if (!planner_bake_settled(p))
+            return 0;
+        double eye[3], target[3];
+        planner_view_points(p, eye, target);
+        double fov = p->camera >= 0 ? p->project.cameras[p->camera].fov_deg : 60.0;
+        int preset = l->steps[index].preset;
+        if (strip_buffer(p, (size_t)fw * (size_t)fh * 4))
+            return 1;
+        if (ui_still_render_start(s, &p->project, eye, target, fov, preset,
+                                  ui_quality_names[preset], fw, fh, p->bake != NULL,
+                                  glfwPostEmptyEvent, err, sizeof err)) {
+            background_failed(p, err);
+            return 0;
+        }
+        p->live.background_step = index;
+        return 0;
+    }
+    l->background_fraction = ui_still_render_fraction(s);
+    int r = ui_still_render_poll(s, p->live.strip, err, sizeof err);
+    if (r < 0) {
+        background_failed(p, err);
+    } else if (r > 0) {
+        fprintf(stderr, "tessera: still view at %s: rendered beside the window\n",
+                ui_quality_names[l->steps[p->live.background_step].preset]);
+        ui_accum_start_from(&p->live.accum, p->live.strip, fw, fh);
+        ui_live_background_done(l, p->live.background_step);
+    }
+    return 0;
 }
 
 /* A step's new shadow settings remake every light's maps (final's soft shadows: five lights,
@@ -264,25 +361,21 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
     p->render_scale = 1.0f;
     float budget = 0.0f, spent_ms = 0.0f;
     int busy_frame = 0;
-    if (!ui_live_done(l) && !waits_for_shaders(p)) {
+    if (background_frame(p, fw, fh))
+        return 1;
+    int strips = !ui_live_done(l) && !ui_live_on_background(l) && !waits_for_shaders(p);
+    if (strips) {
         budget = strip_budget(p);
         busy_frame = prepare_step(p, fw, fh, budget, &spent_ms);
         if (busy_frame < 0)
             return render_failed();
         *render_ms = spent_ms;
     }
-    if (!ui_live_done(l) && !waits_for_shaders(p) && !busy_frame) {
+    if (strips && !busy_frame) {
         int rows = ui_live_strip_rows(l, budget - spent_ms, fh);
         size_t size = (size_t)fw * (size_t)rows * 4;
-        if (size > p->live.strip_size) {
-            free(p->live.strip);
-            p->live.strip = malloc(size);
-            p->live.strip_size = p->live.strip ? size : 0;
-            if (!p->live.strip) {
-                fprintf(stderr, "tessera: out of memory for the still view\n");
-                return 1;
-            }
-        }
+        if (strip_buffer(p, size))
+            return 1;
         rd_view v;
         planner_view(p, fw, rows, &v);
         v.supersample = 1;
@@ -309,7 +402,8 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
         learn_face_cost(p, strip_ms - l->ms_per_row * (float)rows, st.faces_captured);
         /* A row's cost is learnt from strips that captured nothing: a thin strip's captures
          * spread over its few rows would make the next strips thin as well. */
-        if (ui_live_strip_done(l, rows, st.faces_captured ? 0.0f : strip_ms, fh, busy)) {
+        if (ui_live_strip_done(l, rows, st.faces_captured ? 0.0f : strip_ms, fh, busy) &&
+            !ui_live_on_background(l)) {
             apply_preset(p, l->steps[l->step].preset);
             ui_accum_restart(&p->live.accum);
             p->live.still_ev_ok = 0; /* the new preset's light: measured again */
@@ -351,7 +445,11 @@ void planner_live_overlay(planner *p, ui_rect pane)
     const ui_live *l = &p->live.ladder;
     const char *preset = ui_quality_names[l->steps[l->step].preset];
     if (ui_gui_begin_overlay("##refining", pane.x + 12.0f, pane.y + pane.h - 40.0f, 0.5f)) {
-        if (waits_for_shaders(p))
+        if (ui_live_on_background(l))
+            ui_gui_text("refining to %s: %.0f %% (%s, rendered beside the window: %.1f s)",
+                        ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset,
+                        ui_still_render_elapsed(&p->live.still_render));
+        else if (waits_for_shaders(p))
             ui_gui_text("refining to %s: %.0f %% (preparing the %s shaders)",
                         ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset);
         else if (p->live.shadows_pending)
@@ -370,8 +468,11 @@ int planner_live_idle(const planner *p)
 {
     /* A bake under way is no reason to draw: the status bar's share is redrawn when the wait
      * times out, and the worker wakes the window when the light is there. A crossfade is. */
+    /* Nor is a background render: the wait's timeout polls it (and redraws its progress). */
     return p->layout.pane_3d.w > 0 && p->live.still &&
-           (ui_live_done(&p->live.ladder) || waits_for_shaders(p)) && !planner_bake_fading(p);
+           (ui_live_done(&p->live.ladder) || waits_for_shaders(p) ||
+            ui_live_on_background(&p->live.ladder)) &&
+           !planner_bake_fading(p);
 }
 
 void planner_live_restart(planner *p)
@@ -382,7 +483,7 @@ void planner_live_restart(planner *p)
     float px_scale = p->live.last_w > 0 && p->live.accum.width > 0
                          ? (float)p->live.accum.width / (float)p->live.last_w
                          : 1.0f;
-    ui_live_begin(&p->live.ladder, p->quality, p->live.last_ms / rows * px_scale);
+    begin_ladder(p, p->live.last_ms / rows * px_scale);
     ui_accum_restart(&p->live.accum); /* shows the old picture until strips replace it */
     apply_preset(p, p->live.ladder.steps[0].preset);
     p->live.shadows_pending = 1;
@@ -390,6 +491,7 @@ void planner_live_restart(planner *p)
 
 void planner_live_free(planner *p)
 {
+    ui_still_render_stop(&p->live.still_render);
     ui_accum_free(&p->live.accum);
     free(p->live.strip);
     free(p->live.last);

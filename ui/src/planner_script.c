@@ -282,6 +282,8 @@ static int apply(planner *p, const ui_action *a)
         return planner_bake_settled(p) ? 0 : 2;
     case UI_ACT_WAIT_WARMUP:
         return planner_warmup_done(p) ? 0 : 2;
+    case UI_ACT_WAIT_STILL:
+        return p->live.still && ui_live_done(&p->live.ladder) ? 0 : 2;
     case UI_ACT_BAKE_HOLD:
         if (strcmp(a->text, "on") && strcmp(a->text, "off"))
             return fail(a, "bake-hold takes on or off");
@@ -301,6 +303,11 @@ static int pointer_drag_held(const planner *p)
     const ui_plan_overlay *o = &p->plan_o;
     return o->drag_object >= 0 || o->drag_corner >= 0 || o->wall_dragging ||
            p->handle_drag.active || (p->fixture_drag.active && p->fixture_drag.by_pointer);
+}
+
+int planner_script_idles(const planner *p)
+{
+    return p->action < p->script.count && p->script.actions[p->action].kind == UI_ACT_WAIT_STILL;
 }
 
 int planner_script_step(planner *p)

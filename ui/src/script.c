@@ -87,6 +87,7 @@ static const struct {
     {"dialog", UI_ACT_FILES, 0, 3},
     {"wait-bake", UI_ACT_WAIT_BAKE, 0, 0},
     {"wait-warmup", UI_ACT_WAIT_WARMUP, 0, 0},
+    {"wait-still", UI_ACT_WAIT_STILL, 0, 0},
     {"bake-hold", UI_ACT_BAKE_HOLD, 0, 1},
     {"quit", UI_ACT_QUIT, 0, 0},
 };

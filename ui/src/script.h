@@ -168,6 +168,7 @@ typedef enum ui_action_kind {
     UI_ACT_FILES,       /* planner_actions.h: text is "VERB ARGUMENT" */
     UI_ACT_WAIT_BAKE,   /* planner_bake.c */
     UI_ACT_WAIT_WARMUP, /* shader_warmup.c */
+    UI_ACT_WAIT_STILL,  /* planner_live.c: the still view at its preset */
     UI_ACT_BAKE_HOLD,
     UI_ACT_QUIT
 } ui_action_kind;

@@ -154,8 +154,10 @@ void planner_warmup_frame(planner *p)
         }
     }
     /* Its render reads the window's bake from the cache: start once the light has settled and
-     * the view stands still, and leave the cores to a long job while one runs. */
-    if (moving || !p->scene_ready || !planner_bake_settled(p) || planner_job_running(p))
+     * the view stands still, and leave the cores to a long job or the still view's own render
+     * while one runs. */
+    if (moving || !p->scene_ready || !planner_bake_settled(p) || planner_job_running(p) ||
+        ui_still_render_busy(&p->live.still_render))
         return;
     if (!w->folder[0] && write_project(p, w)) {
         w->finished = 1;

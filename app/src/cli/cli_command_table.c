@@ -111,10 +111,14 @@ const cli_command cli_commands[] = {
      .synopsis = "PROJECT -o OUT.(png|jpg|tif|exr)",
      .min_args = 1,
      .max_args = 1,
-     .options = "output camera all-views size supersample dpi tile stats " RENDER_SETTINGS,
+     .options = "output camera all-views serve size supersample dpi tile stats " RENDER_SETTINGS,
      .summary = "renders a project to PNG, JPEG, TIFF (8-bit sRGB) or EXR (linear)",
-     .help = "  Any size: beyond the GL limits the image is rendered in tiles. With --all-views,\n"
-             "  -o names a folder that gets every stored camera as NAME.png.\n"},
+     .help =
+         "  Any size: beyond the GL limits the image is rendered in tiles. With --all-views,\n"
+         "  -o names a folder that gets every stored camera as NAME.png. With --serve, no -o:\n"
+         "  each line on standard input, EYE(x y z) TARGET(x y z) FOV PRESET W H OUT.png (mm),\n"
+         "  is rendered into OUT.png and answered \"done OUT.png\" on standard output, the\n"
+         "  scene and its probes kept between views (the planner window's still view).\n"},
     {.name = "panorama",
      .run = IN_FULL(cli_cmd_panorama),
      .synopsis = "PROJECT -o OUT.jpg",

@@ -316,6 +316,7 @@ static const cli_option_spec options[] = {
     FLAG("landscape", landscape, "landscape pages"),
     FLAG("no-clearances", no_clearances, "leave the clearance areas out of the plan"),
     FLAG("all-views", all_views, "every stored camera into OUT/NAME.png"),
+    FLAG("serve", serve, "render the views asked on standard input, one a line (the window's)"),
     FLAG("fullscreen", fullscreen, "open the window full-screen"),
     FLAG("list", list, "the command names, one a line"),
 };

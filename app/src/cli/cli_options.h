@@ -76,7 +76,7 @@ typedef struct cli_options {
 
     /* Flags. */
     int all_views, dry_run, barrier_free, wheelchair, quiet, csv_table, offcuts, bench_mosaic,
-        landscape, no_clearances, fullscreen, list, json_table;
+        landscape, no_clearances, fullscreen, list, json_table, serve;
 } cli_options;
 
 /* Prints `tessera CMD`'s usage to stderr and returns CLI_USAGE: for a command that finds its

@@ -30,4 +30,8 @@ int cli_check_image_job(const char *command, int width, int height, const char *
 /* Renders `view` and writes it to path (8-bit sRGB with dpi if > 0, or EXR linear). */
 int cli_render_large(cli_session *s, const rd_view *view, const char *path, int dpi, int tile_max);
 
+/* render --serve: the views asked on standard input, one a line, in one session
+ * (cli_render_serve.c). */
+int cli_render_serve(cli_session *s, const cli_options *o);
+
 #endif

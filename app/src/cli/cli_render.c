@@ -44,6 +44,17 @@ static int render_all_views(cli_session *s, const cli_options *o, rd_view *view)
 
 int cli_cmd_render(const cli_options *o)
 {
+    if (o->serve) {
+        if (o->output || o->all_views)
+            return cli_usage_error(o);
+        cli_session s;
+        int rc = cli_session_open(o, &s);
+        if (rc != CLI_OK)
+            return rc;
+        rc = cli_render_serve(&s, o);
+        cli_session_close(&s);
+        return rc;
+    }
     if (!o->output || (o->all_views && o->camera))
         return cli_usage_error(o);
     int rc = CLI_OK;

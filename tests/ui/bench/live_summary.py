@@ -12,8 +12,12 @@ import sys
 def summary(path):
     rows = list(csv.DictReader(open(path)))
     drag = [r for r in rows[40:] if r["state"] == "drag"]
-    # frame_ms of row i is the time since the previous frame began: the previous frame's length.
-    lengths = [float(rows[i + 1]["frame_ms"]) for i in range(len(rows) - 1)]
+    # frame_ms of row i is the time since the previous frame began: the previous frame's length
+    # and the wait for input before row i (wait_ms: the idle window's), which is no frame's.
+    def length(i):
+        return float(rows[i]["frame_ms"]) - float(rows[i].get("wait_ms") or 0)
+
+    lengths = [length(i + 1) for i in range(len(rows) - 1)]
     out = {"frames": len(rows), "longest_ms": max(lengths) if lengths else 0}
     if drag:
         ms = statistics.median(float(r["frame_ms"]) for r in drag)
@@ -25,8 +29,8 @@ def summary(path):
         start = moving[-1] + 1
         done = next((i for i in range(start, len(rows)) if rows[i]["live"] == "still"), None)
         if done is not None:
-            refining = [float(rows[i]["frame_ms"]) for i in range(start + 1, done + 1)]
-            out["to_still_s"] = sum(refining) / 1e3
+            refining = [length(i) for i in range(start + 1, done + 1)]
+            out["to_still_s"] = sum(float(rows[i]["frame_ms"]) for i in range(start + 1, done + 1)) / 1e3
             out["still_median_ms"] = statistics.median(refining)
             out["still_longest_ms"] = max(refining)
             out["still_over_100"] = f"{sum(1 for f in refining if f > 100)} of {len(refining)}"
