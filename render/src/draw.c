@@ -426,7 +426,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
             continue;
         if (pass->exclude_traced && rd_self_bvh_holds(pass->exclude_traced, index))
             continue;
-        if (scene->object_spheres && outside_frustum(planes, scene->object_spheres[index]))
+        if (!pass->all_objects && scene->object_spheres &&
+            outside_frustum(planes, scene->object_spheres[index]))
             continue;
         /* A probe skips what would cover less than about a texel of its faces. */
         if (pass->min_solid_radius > 0.0f && scene->object_spheres) {
@@ -681,7 +682,8 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
 }
 
 rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
-                       const float *view_rot, const float *eye, int sample_grid, int live)
+                       const float *view_rot, const float *eye, int sample_grid, int live,
+                       int all_objects)
 {
     return rd_draw_objects(ctx, scene,
                            &(rd_pass){.view_proj = view_proj,
@@ -692,5 +694,6 @@ rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
                                       .depth_prepass = 1,
                                       .isotropic_textures = live,
                                       .rect_lights_as_points = live,
+                                      .all_objects = all_objects,
                                       .sample_grid = sample_grid});
 }

@@ -25,15 +25,17 @@ typedef struct rd_pass {
     int sample_grid; /* the view's samples a pixel side (the lookups' lobe strata); 0 = 1 */
     int rect_lights_as_points; /* 1: unshadowed programs light with rectangle lights as point
                                   lights of their power (rd_view.live) */
-    int panes_over; /* 1: thin panes with their probes are blended over what was drawn behind
-                       them, last (a planar mirror's capture: draw.c, pane_over) */
+    int panes_over;  /* 1: thin panes with their probes are blended over what was drawn behind
+                        them, last (a planar mirror's capture: draw.c, pane_over) */
+    int all_objects; /* 1: no frustum culling (rd_view.all_objects: a shader warm-up) */
 } rd_pass;
 
 rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass);
 /* The view's own pass: reflections, shadows, the depth prepass (renderer.c, and the adaptive
  * refinement of renderer_adaptive.c). */
 rd_result rd_draw_view(rd_context *ctx, rd_scene *scene, const float *view_proj,
-                       const float *view_rot, const float *eye, int sample_grid, int live);
+                       const float *view_rot, const float *eye, int sample_grid, int live,
+                       int all_objects);
 
 /* Per-frame (view, lights) and per-object (model, material) uniforms of a lit program. */
 void rd_set_frame_uniforms(const rd_program *p, const rd_scene *s, const float vp[16],

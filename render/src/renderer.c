@@ -175,7 +175,7 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     stats.adaptive = adaptive(v, samples);
     ctx->stats = stats;
     begin_hdr_pass(ctx);
-    r = rd_draw_view(ctx, scene, vp, view_rot, v->eye, shaded, v->live);
+    r = rd_draw_view(ctx, scene, vp, view_rot, v->eye, shaded, v->live, v->all_objects);
     /* The exposure before the adaptive edge mask, which judges pixels in display values. */
     if (r == RD_OK)
         r = rd_exposure_resolve(ctx, v, &ctx->frame_exposure_ev);

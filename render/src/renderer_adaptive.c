@@ -160,7 +160,7 @@ rd_result rd_adaptive_refine(rd_context *ctx, rd_scene *scene, const rd_view *v,
         glDepthFunc(GL_LESS);
         glDepthMask(GL_TRUE);
         rd_shadow_frame(scene, v, samples);
-        r = rd_draw_view(ctx, scene, vp, view_rot, v->eye, samples, v->live);
+        r = rd_draw_view(ctx, scene, vp, view_rot, v->eye, samples, v->live, v->all_objects);
     }
     glDisable(GL_STENCIL_TEST);
     glStencilMask(0xff);

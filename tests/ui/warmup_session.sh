@@ -1,8 +1,8 @@
 #!/bin/sh
 # The shader warm-up under Xvfb (docs/ui.md, "Shader warm-up"), from a cold Mesa shader cache:
-# the window draws the document's moving frame at interactive, then renders it at final and at
-# print, in background processes once its scene is up, and the still view's climb to final
-# waits for them. Checked: the three stages report compiled; the renders filled the session's Mesa cache (the folder the window reads); their
+# the window draws the document's moving frame at interactive, then renders it at interactive,
+# final and print, every object drawn in view or not, in background processes once its scene
+# is up. Checked: the four stages report compiled; the renders filled the session's Mesa cache (the folder the window reads); their
 # copy of the document is gone afterwards; after an orbit the still view reaches final (the
 # climb goes on once the warm-up is done), with no refining frame compiling for seconds.
 #   usage: warmup_session.sh TESSERA OUTDIR SCREENSHOT_CHECK PROJECT
@@ -27,7 +27,7 @@ fail() {
     echo "FAIL: $*"
     status=1
 }
-for stage in moving final print; do
+for stage in moving interactive final print; do
     grep -q "shader warm-up: $stage compiled" "$out/window.log" ||
         fail "no '$stage compiled' line from the warm-up"
 done

@@ -30,9 +30,11 @@ extern char **environ;
 #define WARMUP_NICENESS 19
 
 /* First the moving view's programs at interactive (render/src/programs.c's fixed-light ones,
- * which no still frame draws), by a one-frame live bench; then final's and print's. */
-static const char *const stages[] = {"moving", "final", "print"};
-enum { STAGE_COUNT = 3, LIVE_STAGE = 0 };
+ * which no still frame draws), by a one-frame live bench; then the still view's at
+ * interactive, final's and print's. Each draws every object, in view or not (--prime), so
+ * that no later view of the scene compiles a variant. */
+static const char *const stages[] = {"moving", "interactive", "final", "print"};
+enum { STAGE_COUNT = 4, LIVE_STAGE = 0, FIRST_STILL_WAIT = 2 };
 
 static int warmup_wanted(void)
 {
@@ -51,6 +53,8 @@ static pid_t spawn_render(const char *project, int stage, const char *image, int
                      (char *)stages[stage],
                      "--size",
                      "96x54",
+                     "--prime",
+                     "on",
                      "-o",
                      (char *)image,
                      bake ? NULL : "--bake",
@@ -69,6 +73,8 @@ static pid_t spawn_render(const char *project, int stage, const char *image, int
                     "1",
                     "--warmup",
                     "0",
+                    "--prime",
+                    "on",
                     bake ? NULL : "--bake",
                     "off",
                     NULL};
@@ -182,10 +188,10 @@ int planner_warmup_done(const planner *p)
 
 int planner_warmup_ready(const planner *p, int preset)
 {
-    for (int i = 0; i < STAGE_COUNT; i++)
+    for (int i = FIRST_STILL_WAIT; i < STAGE_COUNT; i++)
         if (!strcmp(ui_quality_names[preset], stages[i]))
             return p->warmup.finished || p->warmup.stage > i;
-    return 1; /* draft and interactive: compiled by the window's first frames */
+    return 1; /* draft and interactive: compiled by the window's first frames if need be */
 }
 
 void planner_warmup_stop(planner *p)

@@ -9,7 +9,7 @@
     "quality adaptive planar-mirrors mirror-bounce mirror-panes room-probe glaze exact-lamps "     \
     "self-reflections probe-resolution "                                                           \
     "shadows probes blur ambient backend bake bake-bounces tone exposure white-balance sky time "  \
-    "room "
+    "room prime "
 
 static const cli_command catalog_commands[] = {
     {.name = "search",
@@ -228,7 +228,7 @@ const cli_command cli_commands[] = {
      .min_args = 1,
      .max_args = 1,
      .options = "bake camera size frames warmup animate csv stats quality exact-lamps glaze "
-                "self-reflections probe-resolution probes blur ambient shadows backend live",
+                "self-reflections probe-resolution probes blur ambient shadows backend live prime",
      .summary = "milliseconds per frame (median and spread) against a full-screen floor",
      .help = "  --animate drags an object 10 mm a frame; the cpu row: CPU ms, all threads.\n",
      .defaults = IN_FULL(cli_defaults_bench)},

@@ -229,6 +229,7 @@ static const cli_option_spec options[] = {
     SWITCH("room-probe", room_probe, "\"depth\" lookups also search the room probe"),
     SWITCH("glaze", glaze, "glazed tiles reflect the room probe by Fresnel"),
     SWITCH("live", live, "frames drawn as the window's while the view moves (cheaper lights)"),
+    SWITCH("prime", prime, "draw every object, in view or not: compiles every shader variant"),
     SWITCH("exact-lamps", exact_lamps, "lamps in sharp reflections intersected exactly"),
     SWITCH("bake", bake, "baked indirect light, cached (default on; TESSERA_BAKE=off)"),
     INT("bake-bounces", bake_bounces, 1, 64, "N",

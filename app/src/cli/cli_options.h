@@ -43,6 +43,7 @@ typedef struct cli_options {
     rd_switch adaptive, planar_mirrors, mirror_bounce, mirror_panes, room_probe, exact_lamps,
         self_reflections, glaze;
     rd_switch live;       /* --live: frames drawn as a moving live view's (rd_view.live) */
+    rd_switch prime;      /* --prime: every object drawn, in view or not (rd_view.all_objects) */
     rd_switch bake;       /* --bake: baked indirect light (default on unless TESSERA_BAKE=off) */
     int self_rays;        /* --self-reflections N: its lobe directions a sample; 0 = default */
     int probe_resolution; /* texels a face side; 0 = the preset's */

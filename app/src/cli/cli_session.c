@@ -194,6 +194,7 @@ int cli_session_view(const cli_session *s, const cli_options *o, const char *cam
         out->supersample = o->supersample;
     if (o->adaptive)
         out->adaptive = o->adaptive == RD_SWITCH_ON;
+    out->all_objects = o->prime == RD_SWITCH_ON;
     cli_apply_tone_options(o, out);
     return CLI_OK;
 }

@@ -493,6 +493,11 @@ typedef struct rd_view {
      * kept at the sizes they have (no new capture for a new size while the eye and the render
      * scale change; the still view sizes them again). A still view renders with 0, exactly. */
     int live;
+    /* 1: the main pass draws every object, in view or not. llvmpipe compiles a program's
+     * variant at its first draw with a given state, and an object out of view still draws
+     * (nothing) through its variant: a small frame with this compiles what any later view of
+     * the scene needs (the planner's shader warm-up). The picture is the same. */
+    int all_objects;
 } rd_view;
 
 rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *view);
