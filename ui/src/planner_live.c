@@ -32,6 +32,8 @@
 /* A face's cost before one was measured: a 256-texel face on llvmpipe, alone. */
 #define FIRST_FACE_MS 3.0f
 #define SCALE_FLOOR 0.35f
+/* Probe faces a moving frame may capture (a blur counts two, probe.c). */
+#define MOVING_FACES_PER_FRAME 2
 
 /* The scene takes preset `index`'s settings. Probes are captured on change, never every
  * frame (final and print's policy for single renders): a still view's eye does not move, and
@@ -55,7 +57,6 @@ static void apply_preset(planner *p, int index)
     d.split_captures = 1;
     rd_scene_set_reflection_defaults(p->scene.scene, &d);
     p->live.applied = index;
-    p->live.preset_faces = d.max_faces_per_frame;
 }
 
 /* Everything that changes the picture: a difference from the last frame means moving. */
@@ -103,7 +104,10 @@ static int moving_frame(planner *p, int fw, int fh, int live, float *render_ms, 
 {
     ui_still_render_cancel(&p->live.still_render); /* its picture is of the view that was */
     apply_preset(p, ui_live_moving_preset(p->quality));
-    rd_scene_set_capture_budget(p->scene.scene, p->live.preset_faces, 1); /* a still's undone */
+    /* A probe coming into view while the view moves is captured a few faces a frame, its blur
+     * in a frame of its own (split 2): whole, with its blur, it took a moving frame over
+     * 100 ms. Meanwhile it is drawn unfinished, which motion hides. */
+    rd_scene_set_capture_budget(p->scene.scene, MOVING_FACES_PER_FRAME, 2);
     /* Back from a still: start at the scale the last moving frames held. */
     if (p->live.still && p->live.last_w > 0)
         p->render_scale = (float)p->live.last_w / (float)fw;
