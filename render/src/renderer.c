@@ -163,7 +163,7 @@ rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *v)
     }
     if (r == RD_OK)
         r = rd_probes_update(ctx, scene, vp, capture_vp, v->eye, pixels_per_tan, samples, &planar,
-                             v->live, &stats);
+                             v->live || scene->hold_probe_sizes, &stats);
     if (r == RD_OK)
         r = rd_sphere_maps_update(ctx, scene, view_rot);
     if (r == RD_OK)

@@ -105,6 +105,7 @@ struct rd_scene {
     rd_shadow_settings shadows;         /* rd_scene_set_shadows */
     struct rd_shadow_maps *shadow_maps; /* shadow.c; NULL until shadows are first drawn */
     int hold_probes;                    /* rd_scene_hold_probes (renderer_tiled.c) */
+    int hold_probe_sizes; /* 1: captured probes keep their sizes (exposure_whole_view.c) */
 };
 
 #endif

@@ -163,13 +163,18 @@ static void begin_ladder(planner *p, float ms_per_row)
         ui_live_begin_background(&p->live.ladder, p->quality, ms_per_row);
 }
 
-/* The view has just stopped: the still image starts as the last moving frame, scaled up. */
+/* The view has just stopped: the still image starts as the last moving frame, scaled up. Its
+ * first strip's rows are guessed from the moving frames' cost, which a still row exceeds
+ * (moving frames light with rectangle lights as points, textures without anisotropy: about
+ * 1.45 times cheaper a pixel, docs/benchmarks.md "What an interactive frame's pixels cost"), and
+ * the first strip pays for what the moving frames left (probes sized for the still view). */
+#define STILL_ROW_COST 2.0f
 static int begin_still(planner *p, int fw, int fh)
 {
     p->live.still = 1;
     float rows = p->live.last_h > 0 ? (float)p->live.last_h : (float)fh;
     float px_scale = p->live.last_w > 0 ? (float)fw / (float)p->live.last_w : 1.0f;
-    begin_ladder(p, p->live.last_ms / rows * px_scale);
+    begin_ladder(p, p->live.last_ms / rows * px_scale * STILL_ROW_COST);
     if (ui_accum_resize(&p->live.accum, fw, fh)) {
         fprintf(stderr, "tessera: out of memory for the still view\n");
         return 1;
@@ -348,6 +353,7 @@ static int prepare_step(planner *p, int fw, int fh, float budget_ms, float *spen
      * ceiling's rows darker than the floor's, and the still would show bands. */
     rd_view v;
     planner_view(p, fw, fh, &v);
+    v.keep_probes = 1; /* else the probes are made anew for the strips, each time */
     double t0 = glfwGetTime();
     if (rd_measure_view_exposure(p->ctx, p->scene.scene, &v, &p->live.still_ev) != RD_OK)
         return -1;

@@ -498,6 +498,11 @@ typedef struct rd_view {
      * (nothing) through its variant: a small frame with this compiles what any later view of
      * the scene needs (the planner's shader warm-up). The picture is the same. */
     int all_objects;
+    /* rd_measure_view_exposure only: 1 keeps the probes captured already at their sizes in its
+     * small render, and after it (the planner's still view, measured again after each move:
+     * the probes its strips use stay); 0 makes them anew at the next render's sizes, as a
+     * single render of the view has them. */
+    int keep_probes;
 } rd_view;
 
 rd_result rd_render(rd_context *ctx, rd_scene *scene, const rd_view *view);
