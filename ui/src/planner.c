@@ -44,7 +44,7 @@ void planner_set_quality(planner *p, int index)
     p->quality = index;
     /* The moving view renders at the live preset and fewer pixels to keep the frame budget;
      * the chosen preset is what the still view is refined to (planner_live.c). */
-    p->budget_ms = index == 0 ? 25.0f : 33.0f;
+    p->budget_ms = index == 0 ? 25.0f : 1000.0f / 30.0f;
     p->adaptive_scale = 1;
     p->live.applied = -1; /* a rebuilt scene holds the renderer's defaults */
     p->live.serial++;

@@ -71,13 +71,29 @@ static void view_key(const planner *p, int fw, int fh, double key[12])
     key[11] = p->project.render.exposure_ev;
 }
 
-/* Moves the render scale towards the frame budget: the 3D view is the frame's cost, and its
- * cost is close to proportional to its pixels on llvmpipe. */
+/* The frame without its 3D view (the panels, the present, the swap), smoothed: frame_ms[n - 1]
+ * holds the length of frame n - 2 (the time between its start and the next), render_ms[n - 2]
+ * its 3D view. */
+static void learn_rest(planner *p)
+{
+    long n = p->frame_count;
+    if (n < 2)
+        return;
+    float rest = p->frame_ms[(n - 1) % UI_FRAME_HISTORY] - p->render_ms[(n - 2) % UI_FRAME_HISTORY];
+    if (rest > 0 && rest < 1000)
+        p->live.rest_ms =
+            p->live.rest_ms > 0 ? p->live.rest_ms + 0.2f * (rest - p->live.rest_ms) : rest;
+}
+
+/* Moves the render scale towards the frame budget: the 3D view gets what the rest of the frame
+ * leaves of it (at least half), and its cost is close to proportional to its pixels on
+ * llvmpipe. */
 static void adapt_scale(planner *p, float render_ms)
 {
     if (render_ms <= 0)
         return;
-    float want = p->budget_ms * 0.8f; /* leave room for the panels and the swap */
+    float want = p->live.rest_ms > 0 ? p->budget_ms * 0.98f - p->live.rest_ms : p->budget_ms * 0.8f;
+    want = want < p->budget_ms * 0.5f ? p->budget_ms * 0.5f : want;
     float s = p->render_scale * sqrtf(want / render_ms);
     s = p->render_scale + 0.3f * (s - p->render_scale); /* damped: no flicker */
     p->render_scale = s < SCALE_FLOOR ? SCALE_FLOOR : s > 1.0f ? 1.0f : s;
@@ -103,6 +119,7 @@ static rd_result present_view(planner *p)
 static int moving_frame(planner *p, int fw, int fh, int live, float *render_ms, int *rw, int *rh)
 {
     ui_still_render_cancel(&p->live.still_render); /* its picture is of the view that was */
+    learn_rest(p);
     apply_preset(p, ui_live_moving_preset(p->quality));
     /* A probe coming into view while the view moves is captured a few faces a frame, its blur
      * in a frame of its own (split 2): whole, with its blur, it took a moving frame over
@@ -189,18 +206,10 @@ static int begin_still(planner *p, int fw, int fh)
     return 0;
 }
 
-/* The strip budget from the rest of the last measured frame: frame_ms[n - 1] holds the length
- * of frame n - 2 (the time between its start and the next), render_ms[n - 2] its 3D view. */
+/* The strip budget from the rest of the last measured frames. */
 static float strip_budget(planner *p)
 {
-    long n = p->frame_count;
-    if (n >= 2) {
-        float rest =
-            p->frame_ms[(n - 1) % UI_FRAME_HISTORY] - p->render_ms[(n - 2) % UI_FRAME_HISTORY];
-        if (rest > 0 && rest < 1000)
-            p->live.rest_ms =
-                p->live.rest_ms > 0 ? p->live.rest_ms + 0.2f * (rest - p->live.rest_ms) : rest;
-    }
+    learn_rest(p);
     float b = (FRAME_CEILING_MS - p->live.rest_ms) * 0.75f;
     return b > STRIP_BUDGET_MS ? STRIP_BUDGET_MS : b < STRIP_MIN_MS ? STRIP_MIN_MS : b;
 }
