@@ -100,8 +100,7 @@ typedef struct planner {
         float probe_face_ms;   /* what a probe face's capture costs a strip, smoothed */
 
         ui_still_render still_render; /* the ladder's background step under way */
-        int background_step;          /* the ladder's step it renders, -1 for none */
-        int background_failed;        /* 1: a background render failed for this still view */
+        int background_step;          /* the ladder's step it renders */
     } live;
 
     ui_catalog_browser browser;

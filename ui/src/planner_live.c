@@ -173,7 +173,6 @@ static int in_window_climb(void)
 static void begin_ladder(planner *p, float ms_per_row)
 {
     ui_still_render_cancel(&p->live.still_render);
-    p->live.background_failed = 0;
     if (in_window_climb())
         ui_live_begin(&p->live.ladder, p->quality, ms_per_row);
     else
@@ -245,10 +244,10 @@ static void background_failed(planner *p, const char *err)
     ui_live *l = &p->live.ladder;
     fprintf(stderr, "tessera: %s; the window renders it itself\n", err);
     planner_status(p, "%s; the window renders it itself", err);
-    p->live.background_failed = 1;
+    int waiting = ui_live_on_background(l); /* else an interactive pass goes on as it was */
     for (int i = l->step; i < l->step_count; i++)
         l->steps[i].background = 0;
-    if (!ui_live_done(l)) {
+    if (waiting) {
         apply_preset(p, l->steps[l->step].preset);
         ui_accum_restart(&p->live.accum);
         p->live.still_ev_ok = 0;
@@ -464,7 +463,10 @@ void planner_live_overlay(planner *p, ui_rect pane)
     const ui_live *l = &p->live.ladder;
     const char *preset = ui_quality_names[l->steps[l->step].preset];
     if (ui_gui_begin_overlay("##refining", pane.x + 12.0f, pane.y + pane.h - 40.0f, 0.5f)) {
-        if (ui_live_on_background(l))
+        if (ui_live_on_background(l) && !ui_still_render_busy(&p->live.still_render))
+            ui_gui_text("refining to %s: %.0f %% (%s, waiting for the baked light)",
+                        ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset);
+        else if (ui_live_on_background(l))
             ui_gui_text("refining to %s: %.0f %% (%s, rendered beside the window: %.1f s)",
                         ui_quality_names[p->quality], 100.0f * ui_live_progress(l), preset,
                         ui_still_render_elapsed(&p->live.still_render));
