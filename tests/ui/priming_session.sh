@@ -4,9 +4,9 @@
 # variant's fixed-light program too and draws one scissored-out triangle with it), under Xvfb
 # on the demo bathroom with every GL error counted (TESSERA_GL_CHECK=1): moving frames, then the
 # baked light arrives (its variants are compiled anew by the still view's strips, and primed),
-# moving frames again, a still view again. Checked: no GL error (a priming draw whose program had samplers of two types on one unit failed with
-# GL_INVALID_OPERATION: with the units left at 0 this session fails so, on the demo
-# bathroom's baked light), and the shots show the room.
+# moving frames again, a still view again. Checked: no GL error (a priming draw whose program
+# had samplers of two types on one unit failed with GL_INVALID_OPERATION: with the units left
+# at 0 this session fails so, on the demo bathroom's baked light), and the shots show the room.
 #   usage: priming_session.sh TESSERA OUTDIR SCREENSHOT_CHECK PROJECT
 set -e
 . "$(dirname "$0")/session_lib.sh"
