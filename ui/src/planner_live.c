@@ -307,6 +307,11 @@ static float prepare_shadows(planner *p, float budget_ms)
 {
     if (!p->live.shadows_pending)
         return 0.0f;
+    if (rd_scene_shadows(p->scene.scene).mode == RD_SHADOWS_OFF) {
+        p->live.shadows_pending = 0; /* no maps: the step's exposure may take this frame */
+        p->live.shadow_faces_left = 0;
+        return 0.0f;
+    }
     double t0 = glfwGetTime(), face_ms = 0.0;
     int left = 0;
     do {
