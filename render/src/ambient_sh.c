@@ -42,6 +42,19 @@ static rd_result project_sh9(rd_scene *s, rd_probe *p)
                                                : rd_fail(RD_ERR_GL, "reading the ambient probe");
 }
 
+rd_result rd_scene_prepare_ambient(rd_context *ctx, rd_scene *scene)
+{
+    if (!ctx || !scene)
+        return rd_fail(RD_ERR_INVALID_ARGUMENT, "rd_scene_prepare_ambient: missing argument");
+    if (ctx->ops)
+        ctx->ops->make_current(ctx->backend_state);
+    rd_frame_stats stats = {0};
+    rd_result r = rd_ambient_update(ctx, scene, &stats);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glFinish();
+    return r;
+}
+
 rd_result rd_ambient_update(rd_context *ctx, rd_scene *s, rd_frame_stats *stats)
 {
     if (s->reflection.ambient != RD_AMBIENT_SH9)

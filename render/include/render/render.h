@@ -388,6 +388,10 @@ int rd_shadow_taps_per_sample(const rd_shadow_settings *s, int supersample);
  * the maps are ready). The next rd_render completes what is left; the maps come out the same
  * however the work was split. Waits for the GPU, so the work falls within the call. */
 rd_result rd_scene_prepare_shadows(rd_context *ctx, rd_scene *scene, int max_faces, int *left);
+/* Makes the SH9 ambient light (RENDERING.md section 7) if the scene's settings ask for it and
+ * it is due, as the next rd_render would first: a window can give it a frame of its own. Waits
+ * for the GPU, so the work falls within the call. */
+rd_result rd_scene_prepare_ambient(rd_context *ctx, rd_scene *scene);
 
 /* Probes the scene holds now (one per reflective object or group); for tests and stats. */
 int rd_scene_probe_count(const rd_scene *scene);
