@@ -189,6 +189,7 @@ static int frame(planner *p)
         planner_live_frame(p, fw, fh, pane, &render_ms, &rw, &rh))
         return 1;
 
+    p->view_ms_now = render_ms; /* the panels' thumbnails wait for a cheaper frame */
     window_target(p, "the 3D view", fw, fh);
     ui_gui_new_frame();
     if (p->presenting) {
@@ -286,6 +287,10 @@ int ui_run(const ui_options *o)
         w = mode->width;
         h = mode->height;
     }
+    /* Shown after its first frame: that frame builds the GL state every later one reuses (the
+     * panels' font atlas and program, the present's blit), about 160 ms on llvmpipe, part of
+     * opening the window rather than a frame the user waits on. */
+    glfwWindowHint(GLFW_VISIBLE, mon ? GLFW_TRUE : GLFW_FALSE);
     p.window = glfwCreateWindow(w, h, "Tessera", mon, NULL);
     int rc = 1;
     if (!p.window) {
@@ -336,6 +341,8 @@ int ui_run(const ui_options *o)
             rc = 1;
             break;
         }
+        if (!glfwGetWindowAttrib(p.window, GLFW_VISIBLE))
+            glfwShowWindow(p.window);
         if (p.script.count && p.action >= p.script.count)
             break;
     }

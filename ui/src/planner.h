@@ -71,7 +71,8 @@ typedef struct planner {
     long stray_target_frames; /* frames whose panels found an off-screen target bound */
     double heap_logged_at;    /* heap_log.c: the last TESSERA_HEAP_LOG line */
     FILE *frame_log;
-    double waited_s; /* how long the loop waited for input before this frame (idle) */
+    double waited_s;   /* how long the loop waited for input before this frame (idle) */
+    float view_ms_now; /* this frame's 3D view so far, ms */
 
     /* The live 3D view (planner_live.c): moving frames at a reduced scale, then the still view
      * refined in strips (live_view.h) into the accumulated full-resolution image. */
@@ -101,6 +102,7 @@ typedef struct planner {
 
         ui_still_render still_render; /* the ladder's background step under way */
         int background_step;          /* the ladder's step it renders */
+        int opening;                  /* the 3D view's frames so far, up to 2 (opening_frame) */
     } live;
 
     ui_catalog_browser browser;

@@ -471,8 +471,10 @@ void planner_draw_panels(planner *p, int width, int height)
     planner_menu_bar(p); /* menu_bar.c */
     prompts(p, width, height);
     planner_drag_drop_frame(p);
-    /* One thumbnail a frame (each costs a frame's worth of llvmpipe time), rendered off screen;
-     * then the window is the target again. */
-    if (ui_thumbnails_update(&p->thumbs, p->browser.db, 1) > 0)
+    /* One thumbnail a frame (each costs a frame's worth of llvmpipe time), rendered off screen,
+     * in a frame whose 3D view left room for it (at most the budget: a still's strip, the
+     * view's first render); then the window is the target again. */
+    int room = p->view_ms_now <= p->budget_ms;
+    if (room && ui_thumbnails_update(&p->thumbs, p->browser.db, 1) > 0)
         rd_bind_window(p->ctx, width, height);
 }
