@@ -419,7 +419,7 @@ vec3 light_contribution(int i, float k, vec3 L, vec3 N, vec3 V, vec3 c_d)
     return c;
 }
 
-#if defined(HAS_REFLECTION) && !defined(BOX_OPAQUE_REFLECTION) && !defined(PER_VERTEX_REFLECTION)
+#if defined(HAS_REFLECTION) && !defined(BOX_REFLECTION) && !defined(PER_VERTEX_REFLECTION)
 // The "depth" lookup with two probes: the object's own and the room's. Each is searched along
 // the reflected ray; a hit of the own probe is a point it saw, but possibly the silhouette of
 // a nearer object the ray passes behind as seen from its centre, and the own probe leaves its
@@ -549,9 +549,10 @@ void main()
     int room = 0; // 1: the lookup reads the room probe (pick_depth_hit)
 #ifdef PER_VERTEX_REFLECTION
     vec3 d = v_reflect;
-#elif defined(BOX_OPAQUE_REFLECTION)
-    // The common case in a variant of its own: llvmpipe runs every side of a
-    // uniform branch, so the "depth" search and the refraction below would cost every pixel.
+#elif defined(BOX_REFLECTION)
+    // The common case in a variant of its own: llvmpipe runs every side of a uniform branch,
+    // so the other corrections, the "depth" search and (opaque) the refraction below would
+    // cost every pixel.
     vec3 d = correct_box(v_world, reflect(-V, N), u_proxy_min, u_proxy_max, u_probe_centre);
 #else
     vec3 r = reflect(-V, N);
@@ -573,7 +574,7 @@ void main()
     vec3 refl = room == 1 ? textureLod(u_room_probe, world_to_cmcs(d), u_room_lod).rgb
                           : textureLod(u_probe, world_to_cmcs(d), u_lod).rgb;
 #endif
-#ifndef BOX_OPAQUE_REFLECTION
+#ifndef BOX_REFLECTION
     if (u_surface_highlights == 1)
         refl += room == 1
                     ? reflected_highlight(u_room_surface, u_room_distance, u_room_centre, d, v_world)
@@ -586,7 +587,7 @@ void main()
     // (self_trace.c), then a lamp (emitters.c), each hiding what lies behind it.
     vec3 r_seen = reflect(-V, N);
     float t_max = 1e30;
-#if !defined(BOX_OPAQUE_REFLECTION) && !defined(PER_VERTEX_REFLECTION)
+#if !defined(BOX_REFLECTION) && !defined(PER_VERTEX_REFLECTION)
     vec3 centre = room == 1 ? u_room_centre : u_probe_centre;
     if (u_correction == 4) // a small margin: the search places its hits to about 2 %
         t_max = 1.02 * dot(centre + d - v_world, r) + 0.01;
@@ -620,7 +621,7 @@ void main()
     }
 #endif
 #endif
-#ifndef BOX_OPAQUE_REFLECTION
+#if !defined(BOX_REFLECTION) || defined(BOX_GLASS)
     if (u_transparency > 0.0) {
         // Seed 003: refraction with an IOR, total internal reflection, optional dispersion
         // (one IOR per channel). A thin sheet displaces the ray but does not turn it.
@@ -628,12 +629,17 @@ void main()
         for (int ch = 0; ch < 3; ch++) {
             float ior = u_ior + (float(ch) - 1.0) * 0.5 * u_dispersion;
             vec3 t = u_thin == 1 ? -V : refract(-V, N, 1.0 / ior);
+#ifdef BOX_GLASS
+            vec3 dt = dot(t, t) == 0.0 ? d // total internal reflection
+                                       : correct_box(v_world, t, u_proxy_min, u_proxy_max, u_probe_centre);
+#else
             vec3 dt = dot(t, t) == 0.0 ? d // total internal reflection
                       : u_correction == 2 ? correct_box(v_world, t, u_proxy_min, u_proxy_max, u_probe_centre)
                       : u_correction == 3 ? correct_sphere(v_world, t, u_probe_centre, u_proxy_radius)
                       : u_correction == 4 ? correct_depth(u_probe_distance, v_world, t, u_proxy_min,
                                                           u_proxy_max, u_probe_centre)
                                           : t;
+#endif
             vec3 seen = textureLod(u_probe, world_to_cmcs(dt), u_lod).rgb, lamp;
             vec3 ray = dot(t, t) == 0.0 ? reflect(-V, N) : t;
             float t_seen = 1e30;

@@ -132,7 +132,8 @@ void rd_context_destroy(rd_context *ctx)
 {
     if (!ctx)
         return;
-    if (ctx->lit[0].id || ctx->backend_state || ctx->backend == RD_BACKEND_ADOPT) {
+    if ((ctx->lit[0] && ctx->lit[0]->id) || ctx->backend_state ||
+        ctx->backend == RD_BACKEND_ADOPT) {
         if (ctx->ops)
             ctx->ops->make_current(ctx->backend_state);
         if (rd_glDeleteProgram) {
@@ -152,6 +153,8 @@ void rd_context_destroy(rd_context *ctx)
     }
     if (ctx->ops)
         ctx->ops->destroy(ctx->backend_state);
+    for (int v = 0; v < RD_LIT_VARIANTS; v++)
+        free(ctx->lit[v]); /* what rd_programs_destroy left: a context whose GL is gone */
     free(ctx->meshes);
     free(ctx->textures);
     free(ctx->cubemaps);

@@ -337,15 +337,18 @@ static void set_reflection_uniforms(const rd_program *p, const rd_scene *s, cons
     glActiveTexture(GL_TEXTURE0);
 }
 
-/* Whether an object's reflection takes the box correction, shows no refraction and no
- * re-lit highlights (set_reflection_uniforms), so the lean program variant draws it. */
-static int box_opaque(const rd_scene *s, const rd_probe *probe, const rd_object_desc *o)
+/* The lean program variant of an object whose reflection takes the box correction and shows
+ * no re-lit highlights (set_reflection_uniforms): RD_LIT_BOX_OPAQUE, or RD_LIT_BOX_GLASS with
+ * its refraction through the same box; 0 for the full path. */
+static int box_variant(const rd_scene *s, const rd_probe *probe, const rd_object_desc *o)
 {
     rd_correction c = rd_effective_correction(s, &o->material);
     if (c == RD_CORRECTION_DEPTH &&
         (!probe->capture || s->objects[probe->owner].probe.update == RD_PROBE_STATIC))
         c = RD_CORRECTION_BOX;
-    return c == RD_CORRECTION_BOX && !(o->material.transparency > 0.0f) && !probe->surface;
+    if (c != RD_CORRECTION_BOX || probe->surface)
+        return 0;
+    return o->material.transparency > 0.0f ? RD_LIT_BOX_GLASS : RD_LIT_BOX_OPAQUE;
 }
 
 /* The room probe's texture as its readers of glossiness below 1 see it (blurred), or 0 while
@@ -489,8 +492,8 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
                           rd_self_traced(scene, probe);
         if (self_traced)
             variant |= RD_LIT_SELF_TRACE; /* the full path's lookup, with its own parts */
-        else if (probe && fast_paths && box_opaque(scene, probe, o))
-            variant |= RD_LIT_BOX_OPAQUE;
+        else if (probe && fast_paths)
+            variant |= box_variant(scene, probe, o);
         if (probe && probe->planar)
             variant |= RD_LIT_PLANAR; /* its own lookup (probe_planar.c) */
         if (pass->specular_off)
@@ -511,7 +514,7 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
          * built instead of stopping on it. That joins the compile this frame does anyway.
          * Renders that never move compile nothing more. */
         if (ctx->drew_live && !fixed && !depth_only && pass->view_rot && !rect_as_points &&
-            !(variant & RD_LIT_SHADOWS) && !ctx->lit[variant].id) {
+            !(variant & RD_LIT_SHADOWS) && !(ctx->lit[variant] && ctx->lit[variant]->id)) {
             const rd_program *f =
                 rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others, lamps);
             if (!f)
@@ -624,8 +627,14 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
     vec4 planes[6];
     memcpy(vp, pass->view_proj, sizeof vp);
     glm_frustum_planes(vp, planes);
-    unsigned frame_uniforms_set[RD_LIT_VARIANTS] = {0}; /* the program set up, by variant */
-    unsigned light_masks[RD_LIT_VARIANTS] = {0};        /* the lights each program holds now */
+    /* By variant: the program set up this pass, and the lights it holds now (zero pages until
+     * written: a pass uses a few variants). */
+    unsigned *frame_uniforms_set = calloc(2 * (size_t)RD_LIT_VARIANTS, sizeof *frame_uniforms_set);
+    if (!frame_uniforms_set) {
+        free(items);
+        return rd_fail(RD_ERR_OUT_OF_MEMORY, "rd_render: out of memory");
+    }
+    unsigned *light_masks = frame_uniforms_set + RD_LIT_VARIANTS;
     rd_result r = RD_OK;
     /* TESSERA_NO_FAST_PATHS=1 draws without the depth prepass and the lean variant: the
      * general path the fast ones must match (tests/render/test_frame_work.c). */
@@ -675,6 +684,7 @@ rd_result rd_draw_objects(rd_context *ctx, rd_scene *scene, const rd_pass *pass)
     if (pass->isotropic_textures)
         glBindSampler(0, 0);
     free(items);
+    free(frame_uniforms_set);
     glDisable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
     glBindVertexArray(0);

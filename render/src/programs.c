@@ -221,12 +221,13 @@ static const rd_program *make_lit(rd_program *p, int variant, const char *extra)
     int per_vertex = reflecting && (variant & RD_LIT_PER_VERTEX);
     int sphere = reflecting && (variant & RD_LIT_SPHERE_MAP);
     int planar = reflecting && !per_vertex && !sphere && (variant & RD_LIT_PLANAR);
-    /* A planar mirror needs none of the full path's refraction, search or highlights. */
-    int box_opaque =
-        reflecting && !per_vertex && !sphere && (planar || (variant & RD_LIT_BOX_OPAQUE));
+    /* A planar mirror needs none of the full path's refraction, search or highlights; glass
+     * through the box keeps the refraction alone. */
+    int box = reflecting && !per_vertex && !sphere &&
+              (planar || (variant & (RD_LIT_BOX_OPAQUE | RD_LIT_BOX_GLASS)));
+    int box_glass = box && !planar && (variant & RD_LIT_BOX_GLASS);
     /* Self-traced lookups are the full path's (not the lean box or planar variants). */
-    int self_trace =
-        reflecting && !per_vertex && !sphere && !box_opaque && (variant & RD_LIT_SELF_TRACE);
+    int self_trace = reflecting && !per_vertex && !sphere && !box && (variant & RD_LIT_SELF_TRACE);
     /* A glaze reads the room probe; an object with a probe of its own reflects through it. */
     int glaze = !reflecting && (variant & RD_LIT_GLAZE);
     char wood[400] = "";
@@ -244,7 +245,7 @@ static const rd_program *make_lit(rd_program *p, int variant, const char *extra)
     char defines[1100];
     snprintf(defines, sizeof defines,
              "#define MAX_LIGHTS %d\n#define MAX_EMITTERS %d\n#define MAX_SELF_PARTS %d\n"
-             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s%s%s%s",
+             "#define MAX_SELF_TEXTURES %d\n%s%s%s%s%s%s%s%s%s%s%s%s%s%s%s%s",
              RD_MAX_LIGHTS, RD_MAX_EMITTERS, RD_MAX_SELF_PARTS, RD_MAX_SELF_TEXTURES,
              textured ? "#define HAS_DIFFUSE_TEXTURE 1\n" : "",
              reflecting ? "#define HAS_REFLECTION 1\n" : "",
@@ -252,7 +253,7 @@ static const rd_program *make_lit(rd_program *p, int variant, const char *extra)
              sphere ? "#define SPHERE_MAP 1\n" : "",
              (variant & RD_LIT_SH9) ? "#define SH9_AMBIENT 1\n" : "",
              (variant & RD_LIT_SHADOWS) ? "#define HAS_SHADOWS 1\n" : "",
-             box_opaque ? "#define BOX_OPAQUE_REFLECTION 1\n" : "",
+             box ? "#define BOX_REFLECTION 1\n" : "", box_glass ? "#define BOX_GLASS 1\n" : "",
              (variant & RD_LIT_NO_SPECULAR) ? "#define NO_SPECULAR 1\n" : "",
              planar ? "#define PLANAR_REFLECTION 1\n" : "",
              self_trace ? "#define SELF_TRACE 1\n" : "",
@@ -278,8 +279,18 @@ static const rd_program *make_lit(rd_program *p, int variant, const char *extra)
 
 const rd_program *rd_lit_program(rd_context *ctx, int variant)
 {
-    rd_program *p = &ctx->lit[variant];
-    return p->id ? p : make_lit(p, variant, "");
+    rd_program *p = ctx->lit[variant];
+    if (p && p->id)
+        return p;
+    if (!p) {
+        p = calloc(1, sizeof *p);
+        if (!p) {
+            rd_fail(RD_ERR_OUT_OF_MEMORY, "out of memory for a shader program");
+            return NULL;
+        }
+        ctx->lit[variant] = p;
+    }
+    return make_lit(p, variant, "");
 }
 
 const rd_program *rd_lit_program_fixed(rd_context *ctx, int variant, int local_lights,
@@ -424,9 +435,11 @@ void rd_programs_destroy(rd_context *ctx)
         ctx->prefilter_program = 0;
     }
     for (int v = 0; v < RD_LIT_VARIANTS; v++)
-        if (ctx->lit[v].id) {
-            glDeleteProgram(ctx->lit[v].id);
-            ctx->lit[v].id = 0;
+        if (ctx->lit[v]) {
+            if (ctx->lit[v]->id)
+                glDeleteProgram(ctx->lit[v]->id);
+            free(ctx->lit[v]);
+            ctx->lit[v] = NULL;
         }
     for (int i = 0; i < RD_LIT_FIXED_SLOTS; i++)
         if (ctx->lit_fixed[i].program.id) {

@@ -92,7 +92,8 @@ enum {
     RD_LIT_BAKED = 4096,       /* the ambient intensity from the bake (ref/ref_bake.h) */
     RD_LIT_GLAZE = 8192,       /* no probe of its own: the room probe by Fresnel (glaze.c) */
     RD_LIT_WOOD = 16384,       /* wood.glsl: the procedural grain (rd_material.pattern) */
-    RD_LIT_VARIANTS = 32768
+    RD_LIT_BOX_GLASS = 32768,  /* as RD_LIT_BOX_OPAQUE, with the refraction of glass */
+    RD_LIT_VARIANTS = 65536
 };
 /* Fixed-light lit programs kept at once (rd_lit_program_fixed). */
 #define RD_LIT_FIXED_SLOTS 32
@@ -126,7 +127,7 @@ struct rd_context {
         pf_u_samples;
     rd_frame_stats stats;
 
-    rd_program lit[RD_LIT_VARIANTS]; /* by RD_LIT_* bits */
+    rd_program *lit[RD_LIT_VARIANTS]; /* by RD_LIT_* bits, each allocated when first made */
     /* Lit programs whose light loops run a fixed number of lights (rd_lit_program_fixed). */
     struct rd_fixed_lit {
         int variant, local_lights, other_lights, lamp_lookups;
