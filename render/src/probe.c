@@ -9,6 +9,7 @@
 #include "self_trace.h"
 #include "gl_funcs.h"
 #include "phase_timer.h"
+#include "capture_clock.h"
 #include "prefilter.h"
 
 #include "render/cube_data.h"
@@ -628,7 +629,7 @@ static int probe_seen_in_mirror(const rd_scene *s, const rd_probe *p, vec4 plane
  * *faces_left is charged what was spent. */
 static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmin[3],
                                    const float bmax[3], float g_min, float g_max, int *faces_left,
-                                   int frame_idle, rd_frame_stats *stats)
+                                   rd_capture_clock *clock, rd_frame_stats *stats)
 {
     rd_probe *p = &s->room_probe;
     for (int i = 0; i < s->object_count; i++) {
@@ -664,13 +665,17 @@ static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmi
         if ((p->faces_valid & (1 << f)) && p->face_stamp[f] == s->change_counter)
             fresh |= 1 << f;
     p->faces_valid = fresh;
+    int frame_idle = clock->steps == 0;
     rd_phase_mark("probe set-up");
     for (int f = 0; f < 6; f++) {
-        if ((fresh & (1 << f)) || (split && *faces_left <= 0))
+        if ((fresh & (1 << f)) ||
+            (split && (*faces_left <= 0 || !rd_capture_clock_allows(clock, s, p->size, 1.0))))
             continue;
+        double t0 = rd_capture_clock_now();
         rd_result r = rd_probe_capture_face(ctx, s, p, f, far_m);
         if (r != RD_OK)
             return r;
+        rd_capture_clock_done(clock, s, p->size, t0);
         p->faces_valid |= 1 << f;
         p->face_stamp[f] = s->change_counter;
         stats->faces_captured++;
@@ -681,7 +686,10 @@ static rd_result room_probe_update(rd_context *ctx, rd_scene *s, const float bmi
     rd_phase_mark("probe captures");
     /* The blur where the budget leaves room for it, or in a frame that captured nothing else. */
     if (p->faces_valid != 0x3f ||
-        (split && *faces_left < SPLIT_BLUR_FACES && (made || !frame_idle))) {
+        (split &&
+         (*faces_left < SPLIT_BLUR_FACES ||
+          !rd_capture_clock_allows(clock, s, p->size, SPLIT_BLUR_FACES)) &&
+         (made || !frame_idle))) {
         stats->probes_held++; /* the rest, or the blur, in a later frame */
         return RD_OK;
     }
@@ -758,6 +766,8 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
      * start that moves every frame. A probe's first, complete capture is held back only when
      * the caller asked to split them (split_captures). */
     int budget = s->reflection.max_faces_per_frame, spent = 0, depth_fresh = 0;
+    rd_capture_clock clock; /* the frame's capture time (rd_scene_set_capture_time) */
+    rd_capture_clock_start(&clock);
     int start = s->probe_count ? (int)(s->frame % s->probe_count) : 0;
     /* Every probe placed and every planar mirror planned first: what a mirror in view shows
      * counts as in view (probe_seen_in_mirror). */
@@ -839,7 +849,8 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
              * leaves room for it, else in a frame of its own; the faces stay as they were. */
             p->blur_waits = 0;
             if (p->faces_valid == 0x3f && p->captured_stamp == s->change_counter) {
-                if (budget > 0 && spent + SPLIT_BLUR_FACES > budget && spent > 0) {
+                if ((budget > 0 && spent + SPLIT_BLUR_FACES > budget && spent > 0) ||
+                    !rd_capture_clock_allows(&clock, s, p->size, SPLIT_BLUR_FACES)) {
                     p->blur_waits = 1;
                     stats->probes_held++;
                     continue;
@@ -849,6 +860,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                 r = blur_probe(ctx, s, p, p->capture, p->size, stats);
                 if (r != RD_OK)
                     return r;
+                rd_capture_clock_done(&clock, s, 0, 0.0);
                 depth_fresh |= depth;
                 continue;
             }
@@ -890,25 +902,44 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             spent += n;
         }
         float far_m = capture_far(p->centre, bmin, bmax);
+        rd_phase_mark("probe set-up"); /* TESSERA_PHASES (phase_timer.h) */
+        /* Split captures and refreshes of a few faces keep to the frame's time as well: the
+         * faces it leaves wait for a later frame, as the face budget's do. */
+        int timed = split || faces != 0x3f, made = 0;
+        for (int f = 0; f < 6; f++) {
+            if (!(faces & (1 << f)))
+                continue;
+            if (timed && !rd_capture_clock_allows(&clock, s, p->size, 1.0))
+                break;
+            double t0 = rd_capture_clock_now();
+            r = rd_probe_capture_face(ctx, s, p, f, far_m);
+            if (r != RD_OK)
+                return r;
+            rd_capture_clock_done(&clock, s, p->size, t0);
+            p->faces_valid |= 1 << f;
+            p->face_stamp[f] = s->change_counter;
+            stats->faces_captured++;
+            made |= 1 << f;
+        }
+        rd_phase_mark("probe captures");
+        if (made != faces) {
+            if (complete || !split)
+                stats->probes_held++; /* else held already: the budget left faces too */
+            complete = 0;
+            faces = made;
+            if (!made)
+                continue;
+        }
         if (complete) {
             p->captured_stamp = s->change_counter;
             /* Time-sliced probes end their first round after 1 to 6 faces, by index, so that
              * their blurs (one per round) fall on different frames. */
             p->faces_since_blur = u == RD_PROBE_TIME_SLICED ? 5 - i % 6 : 0;
         }
-        rd_phase_mark("probe set-up"); /* TESSERA_PHASES (phase_timer.h) */
-        for (int f = 0; f < 6; f++)
-            if (faces & (1 << f)) {
-                r = rd_probe_capture_face(ctx, s, p, f, far_m);
-                if (r != RD_OK)
-                    return r;
-                p->faces_valid |= 1 << f;
-                p->face_stamp[f] = s->change_counter;
-                stats->faces_captured++;
-            }
-        rd_phase_mark("probe captures");
         int round_done = 0;
-        if (complete && split && spent + SPLIT_BLUR_FACES > budget) {
+        if (complete && split &&
+            (spent + SPLIT_BLUR_FACES > budget ||
+             !rd_capture_clock_allows(&clock, s, p->size, SPLIT_BLUR_FACES))) {
             p->blur_waits = 1; /* no room left for the blur: the next frame's */
             stats->probes_held++;
             continue;
@@ -938,6 +969,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
             r = blur_probe(ctx, s, p, p->capture, p->size, stats);
             if (r != RD_OK)
                 return r;
+            rd_capture_clock_done(&clock, s, 0, 0.0);
             depth_fresh |= depth;
         }
     }
@@ -963,7 +995,7 @@ rd_result rd_probes_update(rd_context *ctx, rd_scene *s, const float view_proj[1
                          ? (budget > spent ? budget - spent : 0)
                          : -1;
     if ((room_for_depth || room_for_glazes) &&
-        (r = room_probe_update(ctx, s, bmin, bmax, glaze_min, glaze_max, &room_faces, spent == 0,
+        (r = room_probe_update(ctx, s, bmin, bmax, glaze_min, glaze_max, &room_faces, &clock,
                                stats)) != RD_OK)
         return r;
     if ((r = planar_captures(ctx, s, planar, planes, bmin, bmax, stats)) != RD_OK)

@@ -196,6 +196,12 @@ void rd_scene_set_capture_budget(rd_scene *s, int max_faces_per_frame, int split
     }
 }
 
+void rd_scene_set_capture_time(rd_scene *s, float ms)
+{
+    if (s)
+        s->capture_ms = ms > 0.0f ? ms : 0.0f;
+}
+
 rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *s)
 {
     rd_reflection_defaults none = {0};

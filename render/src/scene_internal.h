@@ -106,6 +106,10 @@ struct rd_scene {
     struct rd_shadow_maps *shadow_maps; /* shadow.c; NULL until shadows are first drawn */
     int hold_probes;                    /* rd_scene_hold_probes (renderer_tiled.c) */
     int hold_probe_sizes; /* 1: captured probes keep their sizes (exposure_whole_view.c) */
+    /* rd_scene_set_capture_time: a frame's captures within capture_ms (0: no limit), and the
+     * learnt cost of a face in ms per million of its texels (capture_clock.c). */
+    float capture_ms;
+    float capture_ms_per_unit;
 };
 
 #endif

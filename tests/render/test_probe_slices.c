@@ -4,8 +4,11 @@
  * counting as two) no render captures more than four faces, the probes count as held until their
  * blur, and the image afterwards equals, byte for byte, the image of the same scene whose probes
  * were captured whole (six faces, one probe a frame). A new budget set with
- * rd_scene_set_capture_budget captures nothing again. A strip that shows no sphere captures for
- * the whole picture under split captures. The backend comes from TESSERA_GL. */
+ * rd_scene_set_capture_budget captures nothing again. Under a capture time too short for
+ * anything but the first step (rd_scene_set_capture_time), each render captures one face or
+ * makes one blur, and the image ends the same; a long one leaves the face budget in charge.
+ * A strip that shows no sphere captures for the whole picture under split captures. The
+ * backend comes from TESSERA_GL. */
 #include "../common/check.h"
 #include "../common/gl_scene.h"
 #include "render/render.h"
@@ -64,12 +67,12 @@ static rd_scene *make_scene(rd_context *ctx, rd_mesh box, rd_mesh sphere, int fa
 static const rd_view view = {
     .eye = {0.2f, -1.8f, 0.4f}, .target = {0, 0, 0}, .fov_y_deg = 50, .width = W, .height = H};
 
-/* Renders until no probe is held (at most twelve renders); returns the renders it took and
+/* Renders until no probe is held (at most `most` renders); returns the renders it took and
  * checks every render's faces against the budget. */
-static int settle(rd_context *ctx, rd_scene *s, int budget, int *total_faces)
+static int settle(rd_context *ctx, rd_scene *s, int budget, int most, int *total_faces)
 {
     *total_faces = 0;
-    for (int n = 1; n <= 12; n++) {
+    for (int n = 1; n <= most; n++) {
         CHECK_MSG(rd_render(ctx, s, &view) == RD_OK, "%s", rd_last_error());
         rd_frame_stats st = rd_last_frame_stats(ctx);
         CHECK_MSG(st.faces_captured <= budget, "render %d captured %d faces, over the budget of %d",
@@ -94,13 +97,13 @@ int main(void)
 
     /* Whole: a probe's six faces a frame, the room probe's six beside them. */
     rd_scene *a = make_scene(ctx, box, sphere, 6, 1);
-    int faces = 0, renders = settle(ctx, a, 12, &faces);
+    int faces = 0, renders = settle(ctx, a, 12, 12, &faces);
     CHECK_MSG(renders == 2 && faces == 18, "whole captures: %d renders, %d faces", renders, faces);
     CHECK(rd_render(ctx, a, &view) == RD_OK && rd_last_frame_stats(ctx).faces_captured == 0);
     CHECK(rd_read_rgba8(ctx, whole, W * H * 4) == RD_OK);
 
     rd_scene *b = make_scene(ctx, box, sphere, 4, 2);
-    renders = settle(ctx, b, 4, &faces);
+    renders = settle(ctx, b, 4, 12, &faces);
     /* Eighteen faces (two spheres' and the room probe's) and three blurs (two faces' worth
      * each) in four-face frames: six renders at least; greedy packing wastes a few. */
     CHECK_MSG(renders >= 6 && renders <= 8 && faces == 18,
@@ -114,6 +117,29 @@ int main(void)
     for (int i = 0; i < W * H * 4; i++)
         differ += whole[i] != sliced[i];
     CHECK_MSG(differ == 0, "%d bytes differ between whole and split captures", differ);
+
+    /* A capture time of a microsecond: the first face or blur of each render goes, nothing
+     * after it. Eighteen faces and three blurs: 21 renders, the same picture. An hour: the
+     * budget of four faces decides, as above. */
+    for (int hour = 0; hour < 2; hour++) {
+        rd_scene *t = make_scene(ctx, box, sphere, 4, 2);
+        rd_scene_set_capture_time(t, hour ? 3.6e6f : 1e-3f);
+        renders = settle(ctx, t, hour ? 4 : 1, 30, &faces);
+        if (hour)
+            CHECK_MSG(renders >= 6 && renders <= 8 && faces == 18,
+                      "an hour's capture time: %d renders, %d faces", renders, faces);
+        else
+            CHECK_MSG(renders == 21 && faces == 18,
+                      "a microsecond's capture time: %d renders, %d faces", renders, faces);
+        CHECK(rd_render(ctx, t, &view) == RD_OK && rd_last_frame_stats(ctx).faces_captured == 0);
+        CHECK(rd_read_rgba8(ctx, sliced, W * H * 4) == RD_OK);
+        differ = 0;
+        for (int i = 0; i < W * H * 4; i++)
+            differ += whole[i] != sliced[i];
+        CHECK_MSG(differ == 0, "%d bytes differ between whole captures and a capture time's",
+                  differ);
+        rd_scene_destroy(t);
+    }
 
     /* A strip of the picture's top rows shows no sphere, yet under split captures it captures
      * (and holds) the probes the whole picture needs; the whole-capture mode leaves them. */

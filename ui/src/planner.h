@@ -98,7 +98,6 @@ typedef struct planner {
 
         int shadows_pending;   /* 1: the step's shadow maps may lack faces (made before strips) */
         int shadow_faces_left; /* what the last frame's faces left to make */
-        float probe_face_ms;   /* what a probe face's capture costs a strip, smoothed */
 
         ui_still_render still_render; /* the ladder's background step under way */
         int background_step;          /* the ladder's step it renders */

@@ -29,11 +29,11 @@
 /* The most a strip's split captures may take, in faces: a probe's six and its blur (which
  * counts as two, probe.c), as one whole capture did, where faces are cheap. */
 #define SPLIT_MAX_FACES 8
-/* A face's cost before one was measured: a 256-texel face on llvmpipe, alone. */
-#define FIRST_FACE_MS 3.0f
 #define SCALE_FLOOR 0.35f
-/* Probe faces a moving frame may capture (a blur counts two, probe.c). */
+/* Probe faces a moving frame may capture (a blur counts two, probe.c), and the time they may
+ * take beyond the first (a 256-texel face alone takes 16-24 ms on llvmpipe). */
 #define MOVING_FACES_PER_FRAME 2
+#define MOVING_CAPTURE_MS 8.0f
 
 /* The scene takes preset `index`'s settings. Probes are captured on change, never every
  * frame (final and print's policy for single renders): a still view's eye does not move, and
@@ -125,6 +125,7 @@ static int moving_frame(planner *p, int fw, int fh, int live, float *render_ms, 
      * in a frame of its own (split 2): whole, with its blur, it took a moving frame over
      * 100 ms. Meanwhile it is drawn unfinished, which motion hides. */
     rd_scene_set_capture_budget(p->scene.scene, MOVING_FACES_PER_FRAME, 2);
+    rd_scene_set_capture_time(p->scene.scene, MOVING_CAPTURE_MS);
     /* Back from a still: start at the scale the last moving frames held. */
     if (p->live.still && p->live.last_w > 0)
         p->render_scale = (float)p->live.last_w / (float)fw;
@@ -325,27 +326,16 @@ static float prepare_shadows(planner *p, float budget_ms)
     return (float)((glfwGetTime() - t0) * 1e3);
 }
 
-/* The probe faces this strip may capture: as many as the budget left after its rows holds at
- * the learnt cost of a face, at least one, at most SPLIT_MAX_FACES. A probe's first capture
- * is split by faces and its blur waits for a frame with room for it (split_captures 2), so no
- * frame captures a whole probe of six faces and prefilters it when faces are dear. */
+/* The probe captures a strip (or a step's exposure render) may make: what the time left after
+ * its rows holds, at the renderer's prediction of each face's cost by its texels, at least one
+ * face, at most SPLIT_MAX_FACES. A probe's first capture is split by faces and its blur waits
+ * for a frame with room for it (split_captures 2), so no frame captures a whole probe of six
+ * faces and prefilters it when faces are dear (256 texels: 16-24 ms a face on llvmpipe, 64
+ * texels: about 2). */
 static void set_face_budget(planner *p, float budget_ms)
 {
-    float face_ms = p->live.probe_face_ms > 0.0f ? p->live.probe_face_ms : FIRST_FACE_MS;
-    int faces = budget_ms > 0.0f ? (int)(budget_ms / face_ms) : 1;
-    faces = faces < 1 ? 1 : faces > SPLIT_MAX_FACES ? SPLIT_MAX_FACES : faces;
-    rd_scene_set_capture_budget(p->scene.scene, faces, 2);
-}
-
-/* Learns a face's cost from a strip that captured `faces`: the strip's time beyond its rows'
- * (the blur of a probe's last face included). Quick to learn a dearer cost, as the rows are. */
-static void learn_face_cost(planner *p, float extra_ms, int faces)
-{
-    if (faces <= 0 || extra_ms <= 0.0f)
-        return; /* the rows' estimate was off, not the faces' */
-    float m = extra_ms / (float)faces;
-    float *f = &p->live.probe_face_ms;
-    *f = m > *f ? m : *f + 0.3f * (m - *f);
+    rd_scene_set_capture_budget(p->scene.scene, SPLIT_MAX_FACES, 2);
+    rd_scene_set_capture_time(p->scene.scene, budget_ms > 1.0f ? budget_ms : 1.0f);
 }
 
 /* What a step needs before its first strip, each in frames of its own: its shadow maps (a
@@ -367,6 +357,7 @@ static int prepare_step(planner *p, int fw, int fh, float budget_ms, float *spen
     rd_view v;
     planner_view(p, fw, fh, &v);
     v.keep_probes = 1; /* else the probes are made anew for the strips, each time */
+    set_face_budget(p, (budget_ms - *spent_ms) * 0.5f); /* the other half for its own render */
     double t0 = glfwGetTime();
     if (rd_measure_view_exposure(p->ctx, p->scene.scene, &v, &p->live.still_ev) != RD_OK)
         return -1;
@@ -422,7 +413,6 @@ static int still_frame(planner *p, int fw, int fh, float *render_ms, int *rw, in
             ui_accum_add(&p->live.accum, 0, l->row, fw, rows, p->live.strip);
         float strip_ms = (float)((glfwGetTime() - t0) * 1e3);
         *render_ms = spent_ms + strip_ms;
-        learn_face_cost(p, strip_ms - l->ms_per_row * (float)rows, st.faces_captured);
         /* A row's cost is learnt from strips that captured nothing: a thin strip's captures
          * spread over its few rows would make the next strips thin as well. */
         if (ui_live_strip_done(l, rows, st.faces_captured ? 0.0f : strip_ms, fh, busy) &&

@@ -347,6 +347,12 @@ rd_reflection_defaults rd_scene_reflection_defaults(const rd_scene *scene);
 /* Changes only the capture budget (max_faces_per_frame and split_captures above) without the
  * new captures a change of defaults asks for: a live view sets it frame by frame. */
 void rd_scene_set_capture_budget(rd_scene *scene, int max_faces_per_frame, int split_captures);
+/* Also keeps a frame's probe captures within about `ms` milliseconds when split (split_captures
+ * 2, or refreshes of a few faces): a face or a blur is made only when the time the frame's
+ * captures took so far and its predicted cost fit, the first of a frame always, so captures
+ * progress. The prediction scales the faces measured so far by texels (each face is waited
+ * for, glFinish, to be measured). 0: no limit, nothing waited for. */
+void rd_scene_set_capture_time(rd_scene *scene, float ms);
 
 /* Shadows from every light (docs/rendering.md, "Shadows"): shadow maps in one depth atlas, a
  * cube (six faces) per point light, one face per spot and directional light. Objects with
