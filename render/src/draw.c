@@ -408,6 +408,26 @@ static int pane_over(const rd_pass *pass, const rd_object_desc *o)
            o->double_sided;
 }
 
+/* Builds program p's code for this draw state without drawing: one triangle of mesh m under an
+ * empty scissor box, since llvmpipe builds a program's code at its first draw. */
+static rd_result prebuild(const rd_program *p, const rd_mesh_slot *m)
+{
+    if (!p)
+        return RD_ERR_SHADER;
+    GLint box[4], scissor = 0;
+    glGetIntegerv(GL_SCISSOR_TEST, &scissor);
+    glGetIntegerv(GL_SCISSOR_BOX, box);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 0, 0);
+    glUseProgram(p->id);
+    glBindVertexArray(m->vao);
+    glDrawElements(GL_TRIANGLES, m->index_count < 3 ? m->index_count : 3, GL_UNSIGNED_INT, 0);
+    glScissor(box[0], box[1], box[2], box[3]);
+    if (!scissor)
+        glDisable(GL_SCISSOR_TEST);
+    return RD_OK;
+}
+
 /* One walk over the sorted objects. depth_only: the depth prepass, the same programs and
  * the same culling with colour writes off, so the shaded walk's depths match exactly.
  * panes: the walk over the panes of pane_over alone, back to front; the other walks leave
@@ -515,23 +535,24 @@ static rd_result draw_list(rd_context *ctx, rd_scene *scene, const rd_pass *pass
          * Renders that never move compile nothing more. */
         if (ctx->drew_live && !fixed && !depth_only && pass->view_rot && !rect_as_points &&
             !(variant & RD_LIT_SHADOWS) && !(ctx->lit[variant] && ctx->lit[variant]->id)) {
-            const rd_program *f =
-                rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others, lamps);
-            if (!f)
+            if (prebuild(rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others, lamps),
+                         m) != RD_OK)
                 return RD_ERR_SHADER;
-            GLint box[4], scissor = 0;
-            glGetIntegerv(GL_SCISSOR_TEST, &scissor);
-            glGetIntegerv(GL_SCISSOR_BOX, box);
-            glEnable(GL_SCISSOR_TEST);
-            glScissor(0, 0, 0, 0);
-            glUseProgram(f->id);
-            glBindVertexArray(m->vao);
-            glDrawElements(GL_TRIANGLES, m->index_count < 3 ? m->index_count : 3, GL_UNSIGNED_INT,
-                           0);
-            glScissor(box[0], box[1], box[2], box[3]);
-            if (!scissor)
-                glDisable(GL_SCISSOR_TEST);
             frame_uniforms_set[variant] = 0; /* the variant's program is bound again below */
+        }
+        /* A primed pass (the shader warm-up's, rd_view.all_objects) builds too the variant an
+         * object with a probe takes while its probe is not captured: drawn plain, as every
+         * reflecting object is in the frames after a change of preset remakes the probes. */
+        int plain =
+            variant & ~(RD_LIT_REFLECTING | RD_LIT_PER_VERTEX | RD_LIT_SPHERE_MAP |
+                        RD_LIT_BOX_OPAQUE | RD_LIT_BOX_GLASS | RD_LIT_PLANAR | RD_LIT_SELF_TRACE);
+        if (pass->all_objects && probe && !depth_only && pass->view_rot) {
+            const rd_program *q =
+                fixed ? rd_lit_program_fixed(ctx, plain, fixed_locals, fixed_others, 0)
+                      : rd_lit_program(ctx, plain);
+            if (prebuild(q, m) != RD_OK)
+                return RD_ERR_SHADER;
+            frame_uniforms_set[variant] = 0;
         }
         const rd_program *p =
             fixed ? rd_lit_program_fixed(ctx, variant, fixed_locals, fixed_others, lamps)

@@ -6,5 +6,6 @@
 
 int main(int argc, char **argv)
 {
+    app_cli_set_window_context(ui_hidden_window_context);
     return app_cli_run(argc, argv, ui_open_window);
 }

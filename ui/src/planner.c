@@ -16,12 +16,6 @@
 
 const char *const ui_quality_names[4] = {"draft", "interactive", "final", "print"};
 
-static void *gl_proc(const char *name)
-{
-    __extension__ void *p = (void *)glfwGetProcAddress(name);
-    return p;
-}
-
 /* Closing with unsaved changes asks first (the panel in planner_panels.c). */
 static void on_close(GLFWwindow *w)
 {
@@ -275,11 +269,7 @@ int ui_run(const ui_options *o)
         ui_script_free(&p.script);
         return 1;
     }
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    planner_gl_check_hint();
+    ui_context_hints();
     int w = o->width > 0 ? o->width : 1280, h = o->height > 0 ? o->height : 720;
     GLFWmonitor *mon = o->fullscreen ? glfwGetPrimaryMonitor() : NULL;
     if (mon) {
@@ -303,8 +293,8 @@ int ui_run(const ui_options *o)
     glfwSetWindowUserPointer(p.window, &p);
     glfwSetWindowCloseCallback(p.window, on_close);
     if (rd_context_create(
-            &(rd_context_desc){.backend = RD_BACKEND_ADOPT, .get_proc_address = gl_proc}, &p.ctx) !=
-        RD_OK) {
+            &(rd_context_desc){.backend = RD_BACKEND_ADOPT, .get_proc_address = ui_gl_proc},
+            &p.ctx) != RD_OK) {
         fprintf(stderr, "tessera: the renderer cannot use the window's OpenGL: %s\n",
                 rd_last_error());
         goto done;

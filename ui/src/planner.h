@@ -422,6 +422,9 @@ int planner_walk_move(planner *p, double forward_mm, double right_mm);
  * counting from the context's start, the frame's poll, and at exit the summary; 1 when any GL
  * error was seen. */
 void planner_gl_check_hint(void);
+/* The window's context hints (window_context.c), shared with `--backend window`. */
+void ui_context_hints(void);
+void *ui_gl_proc(const char *name); /* GLFW's loader, for the renderer */
 void planner_gl_check_start(void);
 void planner_gl_check_frame(void);
 int planner_gl_check_finish(long frames);

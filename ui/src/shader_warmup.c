@@ -3,12 +3,14 @@
  * llvmpipe compiles a program's shader variant at the program's first draw with a given state,
  * not at the link, and the still view's first climb to final (more lights, soft shadows,
  * probes) draws a dozen new variants in one strip: several seconds in one frame. Mesa keeps
- * what it compiles in its on-disk cache (XDG_CACHE_HOME/mesa_shader_cache), which a process
- * rendering the same scene fills for the window as well. So once the window's scene and its
- * baked light are ready, background processes, niced below the window, draw the document's
- * moving frame at interactive (the live programs of its light counts), then render it at final
- * and at print quality, at a thumbnail's size, and the window's later moves and climb read the
- * compiled variants from the cache. While the view moves the render is stopped (SIGSTOP), so
+ * what it compiles in its on-disk cache (XDG_CACHE_HOME/mesa_shader_cache), per kind of context:
+ * EGL's, OSMesa's and a window's entries do not serve each other. So once the window's scene
+ * and its baked light are ready, background processes, niced below the window, draw the
+ * document's moving frame at interactive (the live programs of its light counts) and its still
+ * at interactive in a hidden window's context (`--backend window`), then render it at final and
+ * at print quality as the background render does (its default backend), at a thumbnail's size,
+ * and the window's later moves and the background render read the compiled variants from the
+ * cache. While the view moves the render is stopped (SIGSTOP), so
  * that the moving frames keep both cores. TESSERA_SHADER_WARMUP=off leaves it out. */
 #include "planner.h"
 
@@ -46,39 +48,36 @@ static int warmup_wanted(void)
  * exec only async-signal-safe calls (POSIX.1-2017, "fork"). */
 static pid_t spawn_render(const char *project, int stage, const char *image, int bake)
 {
-    char *still[] = {"tessera",
-                     "render",
-                     (char *)project,
-                     "--quality",
-                     (char *)stages[stage],
-                     "--size",
-                     "96x54",
-                     "--prime",
-                     "on",
-                     "-o",
-                     (char *)image,
-                     bake ? NULL : "--bake",
-                     "off",
-                     NULL};
-    char *live[] = {"tessera",
-                    "bench",
-                    (char *)project,
-                    "--quality",
-                    "interactive",
-                    "--live",
-                    "on",
-                    "--size",
-                    "96x54",
-                    "--frames",
-                    "1",
-                    "--warmup",
-                    "0",
-                    "--prime",
-                    "on",
-                    bake ? NULL : "--bake",
-                    "off",
-                    NULL};
-    char **argv = stage == LIVE_STAGE ? live : still;
+    /* The window's own draws (its moving frames, its still at interactive) in a context of the
+     * window's kind; final's and print's in the background render's (the default backend). */
+    int own = stage < FIRST_STILL_WAIT;
+    char *argv[24];
+    int n = 0;
+    if (stage == LIVE_STAGE) {
+        /* a frame to capture the probes, then the moving frame that draws their readers */
+        char *live[] = {
+            "tessera", "bench", (char *)project, "--quality", "interactive", "--live", "on",
+            "--size",  "96x54", "--frames",      "1",         "--warmup",    "1"};
+        for (size_t i = 0; i < sizeof live / sizeof live[0]; i++)
+            argv[n++] = live[i];
+    } else {
+        char *still[] = {
+            "tessera", "render", (char *)project, "--quality", (char *)stages[stage], "--size",
+            "96x54",   "-o",     (char *)image};
+        for (size_t i = 0; i < sizeof still / sizeof still[0]; i++)
+            argv[n++] = still[i];
+    }
+    argv[n++] = "--prime";
+    argv[n++] = "on";
+    if (own) {
+        argv[n++] = "--backend";
+        argv[n++] = "window";
+    }
+    if (!bake) {
+        argv[n++] = "--bake";
+        argv[n++] = "off";
+    }
+    argv[n] = NULL;
     int null_fd = open("/dev/null", O_WRONLY | O_CLOEXEC);
     if (null_fd < 0)
         return -1;

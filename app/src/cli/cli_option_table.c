@@ -21,8 +21,13 @@ static int parse_quality(const char *v, cli_options *o)
     return (o->quality = app_quality_find(v)) != NULL;
 }
 
+/* "window": a hidden window's context (app_cli_set_window_context), adopted. */
 static int parse_backend(const char *v, cli_options *o)
 {
+    if (!strcmp(v, "window")) {
+        o->backend = RD_BACKEND_ADOPT;
+        return 1;
+    }
     return rd_backend_parse(v, &o->backend) == RD_OK && o->backend != RD_BACKEND_ADOPT;
 }
 
@@ -237,8 +242,9 @@ static const cli_option_spec options[] = {
     CUSTOM("self-reflections", IN_FULL(parse_self_reflections), "on|off|N", "on, off or 1 to 16",
            "fixtures trace their own reflections (N lobe directions a sample)"),
     INT("probe-resolution", probe_resolution, 16, 2048, "N", "probe texels a face side"),
-    CUSTOM("backend", IN_FULL(parse_backend), "egl|osmesa", "egl or osmesa",
-           "the OpenGL backend (default: $TESSERA_GL, else EGL)"),
+    CUSTOM("backend", IN_FULL(parse_backend), "egl|osmesa|window", "egl, osmesa or window",
+           "the OpenGL backend (default: $TESSERA_GL, else EGL; window: a hidden window's, "
+           "whose compiled shaders the planner window shares)"),
     ENUM("probes", probes, probe_names, "when probes are captured"),
     ENUM("blur", blur, blur_names, "how probes are blurred for rough surfaces"),
     ENUM("ambient", ambient, ambient_names, "the ambient light's model"),

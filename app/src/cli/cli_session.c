@@ -1,5 +1,7 @@
 #include "cli_options.h"
 
+#include "app/cli/cli.h"
+
 #include "app/project/commands.h"
 #include "app/project/flat.h"
 #include "app/scene/quality.h"
@@ -108,13 +110,38 @@ int cli_session_open_room(const cli_options *o, const app_project *room, cli_ses
     return cli_session_start(o, s);
 }
 
+static app_window_context_fn window_context;
+
+void app_cli_set_window_context(app_window_context_fn fn)
+{
+    window_context = fn;
+}
+
+/* The session's context: a backend's own, or a hidden window's (--backend window). */
+static rd_result open_context(const cli_options *o, rd_context **ctx, char *err, size_t err_size)
+{
+    rd_context_desc d = {.backend = o->backend};
+    if (o->backend == RD_BACKEND_ADOPT) {
+        if (!window_context) {
+            snprintf(err, err_size, "--backend window needs the full program (tessera-full)");
+            return RD_ERR_BACKEND_UNAVAILABLE;
+        }
+        if (window_context(&d.get_proc_address, err, err_size) != 0)
+            return RD_ERR_BACKEND_UNAVAILABLE;
+    }
+    rd_result r = rd_context_create(&d, ctx);
+    if (r != RD_OK)
+        snprintf(err, err_size, "%s", rd_last_error());
+    return r;
+}
+
 int cli_session_start(const cli_options *o, cli_session *s)
 {
     char err[2048];
     app_result r;
     app_daylight_override(&s->project.daylight, o->sky, o->time); /* checked when parsed */
-    if (rd_context_create(&(rd_context_desc){.backend = o->backend}, &s->ctx) != RD_OK) {
-        fprintf(stderr, "tessera: cannot open an OpenGL context: %s\n", rd_last_error());
+    if (open_context(o, &s->ctx, err, sizeof err) != RD_OK) {
+        fprintf(stderr, "tessera: cannot open an OpenGL context: %s\n", err);
         app_project_free(&s->project);
         return CLI_FAILED;
     }

@@ -31,6 +31,11 @@ int ui_run(const ui_options *o);
  * with no display, a pointer to the command line and exit code 2. */
 int ui_open_window(const app_open_request *r);
 
+/* `--backend window` (app_cli_set_window_context): makes a hidden window's context current, of
+ * the kind the planner window has, and gives its loader; 0 on success. */
+int ui_hidden_window_context(void *(**get_proc_address)(const char *name), char *err,
+                             size_t err_size);
+
 #ifdef __cplusplus
 }
 #endif

@@ -4,6 +4,8 @@
 #ifndef APP_CLI_H
 #define APP_CLI_H
 
+#include <stddef.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -24,6 +26,15 @@ typedef int (*app_open_fn)(const app_open_request *r);
 int app_cli_run(int argc, char **argv, app_open_fn open_window);
 /* app_cli_run without a window: for programs and tests that only use the command line. */
 int app_cli_main(int argc, char **argv);
+
+/* Makes an OpenGL context current for `--backend window`, the context the planner window's
+ * process would have (a hidden window of the same kind), and gives its loader; 0 on success,
+ * else a reason in err. Mesa keeps compiled shaders per kind of context (EGL, OSMesa and a
+ * window's do not share them), so the planner's shader warm-up renders in one of these. The
+ * full program registers one before app_cli_run; without it the backend is refused. */
+typedef int (*app_window_context_fn)(void *(**get_proc_address)(const char *name), char *err,
+                                     size_t err_size);
+void app_cli_set_window_context(app_window_context_fn fn);
 
 /* tessera demo's print set: OUT_DIR/plan.pdf with the demo-CAMERA.png renders found there. */
 struct app_project;
