@@ -363,6 +363,10 @@ static int prepare_step(planner *p, int fw, int fh, float budget_ms, float *spen
         return -1;
     p->live.still_ev_ok = 1;
     p->live.view_ev = p->live.still_ev; /* this frame's render: the frame log's exposure */
+    /* Probes it left waiting would make the first strip's rows a waste (a strip is drawn again
+     * while a probe in the picture waits): that strip takes the fewest rows, as after a busy
+     * strip, and leaves its frame to the captures. */
+    p->live.ladder.settling = rd_last_frame_stats(p->ctx).probes_held > 0;
     *spent_ms += (float)((glfwGetTime() - t0) * 1e3);
     return 1;
 }
