@@ -6,6 +6,18 @@
 
 #include <GLFW/glfw3.h>
 #include <stdio.h>
+#include <stdlib.h>
+
+static GLFWwindow *hidden;
+
+/* At exit the hidden window and its context are closed, as the planner closes its own. */
+static void close_hidden(void)
+{
+    if (hidden)
+        glfwDestroyWindow(hidden);
+    hidden = NULL;
+    glfwTerminate();
+}
 
 void ui_context_hints(void)
 {
@@ -36,13 +48,15 @@ int ui_hidden_window_context(void *(**get_proc_address)(const char *name), char 
     }
     ui_context_hints();
     glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);
-    /* Kept until the process ends: the session's context lives as long. */
-    GLFWwindow *w = glfwCreateWindow(64, 64, "Tessera", NULL, NULL);
-    if (!w) {
+    /* Kept until the process ends (the session's context lives as long), then closed. */
+    hidden = glfwCreateWindow(64, 64, "Tessera", NULL, NULL);
+    if (!hidden) {
         snprintf(err, err_size, "--backend window: no OpenGL 3.3 window");
+        glfwTerminate();
         return 1;
     }
-    glfwMakeContextCurrent(w);
+    atexit(close_hidden);
+    glfwMakeContextCurrent(hidden);
     *get_proc_address = ui_gl_proc;
     return 0;
 }
